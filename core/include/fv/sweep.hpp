@@ -1,0 +1,31 @@
+// Families of r_x(zeta) curves (the data behind Figs. 5 and 10-13), spread over all cores.
+#pragma once
+
+#include "fv/steady_state.hpp"
+
+#include <vector>
+
+namespace fv {
+
+struct SweepPoint {
+    Model model = Model::dahl;
+    Params params;
+    SteadyResult result; // period samples are not kept
+};
+
+// zeta values: count points evenly from `from` to `to` inclusive (count == 1 -> from).
+std::vector<double> linspace(double from, double to, int count);
+
+// Every combination model x i x theta x rdisp x zeta, in that nesting order (zeta fastest).
+// For the rigid model, rdisp and i do not matter and each (theta, zeta) is computed once.
+std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas, const std::vector<double>& thetas,
+                              const std::vector<double>& rdisps, const std::vector<double>& is,
+                              const SteadyOptions& opt = {}, int threads = 0);
+
+// Runs f(k) for k in [0, count) on `threads` threads (0: hardware concurrency). Work is handed out one
+// index at a time, so uneven costs (slow steady states) balance out.
+template <class F> void parallel_for(int count, F&& f, int threads = 0);
+
+} // namespace fv
+
+#include "fv/detail/parallel_for.hpp"
