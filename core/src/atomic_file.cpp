@@ -31,6 +31,13 @@ std::string check_writable(const std::string& path) {
     if (::stat(dir.c_str(), &st) != 0) return "directory '" + dir + "' does not exist";
     if (!S_ISDIR(st.st_mode)) return "'" + dir + "' is not a directory";
     if (::access(dir.c_str(), W_OK | X_OK) != 0) return "directory '" + dir + "' is not writable";
+    // access() says yes to root everywhere; only creating a file there tells for sure (e.g. /proc, read-only
+    // mounts).
+    std::string probe = dir + "/.fv-probe-XXXXXX";
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) return "cannot create files in directory '" + dir + "': " + errno_text();
+    ::close(fd);
+    ::unlink(probe.c_str());
     return {};
 }
 

@@ -52,18 +52,20 @@ class PaperStepper {
     Vec2 force() const { return lag_ * p_.rdisp; }
     Sample sample() const;
 
-    // Replace the lag (for warm starts); keeps time.
+    // Replace the lag (for warm starts); keeps time. |lag| must not exceed z_ss.
     void set_lag(Vec2 lag) { lag_ = lag; }
 
   private:
-    Vec2 P_local(int k) const; // P at step k of the current period, minus the drift of earlier periods
-
     Params p_;
     int n_;
     double dtau_;
-    std::vector<double> sin_; // sin(k dtau), k = 0..n
+    // sin((k+1) dtau) - sin(k dtau) for k = 0..n-1, formed as 2 cos((k+1/2) dtau) sin(dtau/2) so that the
+    // step of P keeps full relative precision however small dtau is.
+    std::vector<double> dsin_;
     std::int64_t period_ = 0;
     int k_ = 0;
+    // The state is the lag P - T alone: P is known in closed form, so T = P - lag. Keeping the lag instead
+    // of T avoids subtracting two large, drifting coordinates.
     Vec2 lag_;
 };
 

@@ -17,7 +17,8 @@ enum class SteadyStatus {
 const char* to_string(SteadyStatus s);
 
 struct SteadyOptions {
-    // 0: choose automatically (and extrapolate dtau -> 0) so the result meets the accuracy contract
+    // 0: choose automatically: runs at n0/2, n0, 2 n0, 4 n0 steps (n0 = default_steps_per_period) extrapolated
+    // to dtau -> 0, so the result meets the accuracy contract
     // |r - r(dtau -> 0)| <= 1e-5 on zeta in [0.02, 3], theta in [0, 90 deg], rdisp in [0.2, 100], i in {0, 1}.
     // > 0: run exactly the paper's scheme with this many steps per period, no extrapolation.
     int steps_per_period = 0;
@@ -37,7 +38,8 @@ struct SteadyResult {
     double steady_error = 0;      // the steady-state part of it
     int steps_per_period = 0;     // finest resolution used
     int levels = 1;               // resolutions combined by Richardson extrapolation
-    std::vector<Sample> period;   // last steady period at the finest resolution, samples k = 1..n (Eq. (30))
+    std::vector<Sample> period;   // last steady period at n0 = default_steps_per_period (or the N asked for),
+                                  // samples k = 1..n of Eq. (30)
 };
 
 // Dahl model in steady state.

@@ -1,0 +1,40 @@
+// frictionviz ratio: r_x and r_y of one parameter set (Eq. (33) / Eq. (9)).
+#include "commands.hpp"
+#include "errors.hpp"
+#include "model_options.hpp"
+#include "output.hpp"
+
+#include <memory>
+
+namespace fv::cli {
+
+Command add_ratio_command(CLI::App& root) {
+    struct Args {
+        ModelArgs model;
+        std::string format = "text";
+        std::string out;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* cmd = root.add_subcommand("ratio", "friction ratios r_x, r_y of one parameter set in steady state");
+    add_model_options(*cmd, a->model, true);
+    cmd->add_option("--format", a->format, "output format")
+        ->check(CLI::IsMember({"text", "csv", "json"}))
+        ->capture_default_str();
+    cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
+    return {cmd, [a] {
+                check_out(a->out);
+                SweepPoint row;
+                row.model = model_of(a->model);
+                row.params = to_params(a->model);
+                row.result = steady_ratio(row.model, row.params, steady_options(a->model));
+                if (row.model == Model::rigid) {
+                    row.params.rdisp = std::numeric_limits<double>::quiet_NaN();
+                    row.params.i = std::numeric_limits<double>::quiet_NaN();
+                }
+                const Format f = parse_format(a->format);
+                deliver(f == Format::text ? ratio_text(row) : ratio_table({row}, f), a->out);
+                warn_if_unsteady(row);
+            }};
+}
+
+} // namespace fv::cli

@@ -1,0 +1,37 @@
+// frictionviz trace: P, T, z and F over one steady-state period of the paper's scheme.
+#include "commands.hpp"
+#include "errors.hpp"
+#include "model_options.hpp"
+#include "output.hpp"
+
+#include <memory>
+
+namespace fv::cli {
+
+Command add_trace_command(CLI::App& root) {
+    struct Args {
+        ModelArgs model;
+        std::string format = "csv";
+        std::string out;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* cmd = root.add_subcommand(
+        "trace", "one steady-state period of the Dahl model: tau,Px,Py,Tx,Ty,z,Fx,Fy (dimensionless)");
+    add_model_options(*cmd, a->model, false);
+    cmd->add_option("--format", a->format, "output format")
+        ->check(CLI::IsMember({"csv", "json"}))
+        ->capture_default_str();
+    cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
+    return {cmd, [a] {
+                check_out(a->out);
+                SweepPoint row;
+                row.params = to_params(a->model);
+                SteadyOptions o = steady_options(a->model);
+                o.record_period = true;
+                row.result = dahl_steady(row.params, o);
+                deliver(trace_table(row, parse_format(a->format)), a->out);
+                warn_if_unsteady(row);
+            }};
+}
+
+} // namespace fv::cli

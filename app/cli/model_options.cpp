@@ -1,0 +1,52 @@
+#include "model_options.hpp"
+
+#include "errors.hpp"
+
+namespace fv::cli {
+
+void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
+    a.zeta_opt = cmd.add_option("--zeta", a.zeta, "velocity ratio zeta = v_b/v_v, Eq. (6)")
+                     ->required()
+                     ->check(number_in(kZetaRange));
+    cmd.add_option("--theta", a.theta_deg, "vibration angle to v_b in degrees, Eq. (1)")
+        ->required()
+        ->check(number_in(kThetaRange));
+    a.rdisp_opt =
+        cmd.add_option("--rdisp", a.rdisp, "displacement ratio r_disp = x_v/z_ss, Eq. (34) (Dahl model only)")
+            ->check(number_in(kRdispRange));
+    a.i_opt = cmd.add_option("--i", a.i, "Dahl shape exponent i, Eq. (12); 0 = stiction, Eq. (27) (Dahl only)")
+                  ->check(number_in(kIRange));
+    if (with_model_choice)
+        cmd.add_option("--model", a.model, "friction model")
+            ->check(CLI::IsMember({"dahl", "rigid"}))
+            ->capture_default_str();
+    cmd.add_option("--steps-per-period", a.steps_per_period,
+                   "run the paper's scheme with exactly N steps per period (default: automatic, "
+                   "extrapolated to dtau -> 0, accurate to 1e-5)")
+        ->check(integer_in(kMinSteps, kMaxSteps));
+}
+
+Model model_of(const ModelArgs& a) { return a.model == "rigid" ? Model::rigid : Model::dahl; }
+
+Params to_params(const ModelArgs& a) {
+    if (model_of(a) == Model::dahl) {
+        if (a.rdisp_opt && a.rdisp_opt->count() == 0)
+            throw UsageError("--rdisp is required for the Dahl model; allowed: a number in " + describe(kRdispRange));
+        if (a.i_opt && a.i_opt->count() == 0)
+            throw UsageError("--i is required for the Dahl model; allowed: a number in " + describe(kIRange));
+    }
+    Params p;
+    p.zeta = a.zeta;
+    p.theta = a.theta_deg * kPi / 180;
+    p.rdisp = a.rdisp;
+    p.i = a.i;
+    return p;
+}
+
+SteadyOptions steady_options(const ModelArgs& a) {
+    SteadyOptions o;
+    o.steps_per_period = a.steps_per_period;
+    return o;
+}
+
+} // namespace fv::cli

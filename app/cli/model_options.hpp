@@ -1,0 +1,40 @@
+// The model flags shared by every command that computes something (ratio, sweep, trace, render scene).
+#pragma once
+
+#include "validators.hpp"
+
+#include "fv/params.hpp"
+#include "fv/steady_state.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+
+namespace fv::cli {
+
+// Allowed ranges, stated once so that help texts and error messages agree.
+inline constexpr Range kZetaRange{0, 100};
+inline constexpr Range kThetaRange{0, 180};              // degrees; other angles are mirror images
+inline constexpr Range kRdispRange{0, 1e4, true};
+inline constexpr Range kIRange{0, 10};
+inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
+
+struct ModelArgs {
+    std::string model = "dahl";
+    double zeta = 0, theta_deg = 0, rdisp = 0, i = 0;
+    int steps_per_period = 0; // 0: automatic (accuracy contract), else the paper's scheme as is
+    CLI::Option* zeta_opt = nullptr;
+    CLI::Option* rdisp_opt = nullptr;
+    CLI::Option* i_opt = nullptr;
+};
+
+// Adds --zeta --theta --rdisp --i (all required for the Dahl model), optionally --model, and
+// --steps-per-period.
+void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice);
+
+// Checks the combination (e.g. --rdisp is required for the Dahl model); throws UsageError.
+Params to_params(const ModelArgs& a);
+Model model_of(const ModelArgs& a);
+SteadyOptions steady_options(const ModelArgs& a);
+
+} // namespace fv::cli

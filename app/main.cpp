@@ -1,0 +1,48 @@
+// frictionviz: one executable for the command line, the headless renderer and (later) the window.
+#include "cli/commands.hpp"
+#include "cli/errors.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <vector>
+
+#ifndef FV_VERSION
+#define FV_VERSION "dev"
+#endif
+
+int main(int argc, char** argv) {
+    using namespace fv::cli;
+    CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)", "frictionviz"};
+    app.set_version_flag("--version", "frictionviz " FV_VERSION);
+    app.require_subcommand(1);
+    const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app), add_trace_command(app)};
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // One line that names the flag and what is allowed; CLI11's own exit codes are not ours.
+        std::string what = e.what();
+        for (char& c : what)
+            if (c == '\n') c = ' ';
+        std::fprintf(stderr, "frictionviz: %s (see --help)\n", what.c_str());
+        return kExitUsage;
+    }
+    try {
+        for (const auto& c : commands)
+            if (c.app->parsed()) c.run();
+    } catch (const UsageError& e) {
+        std::fprintf(stderr, "frictionviz: %s\n", e.what());
+        return kExitUsage;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "frictionviz: error: %s\n", e.what());
+        return kExitFailure;
+    }
+    return 0;
+}
