@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <vector>
 
 #ifndef FV_VERSION
@@ -18,6 +19,20 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
     app.require_subcommand(1);
     const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app), add_trace_command(app)};
+    // CLI11 would report an unknown subcommand as a missing one; name it instead.
+    if (argc > 1 && argv[1][0] != '-') {
+        bool known = false;
+        std::string names;
+        for (const auto& c : commands) {
+            known = known || c.app->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + c.app->get_name();
+        }
+        if (!known) {
+            std::fprintf(stderr, "frictionviz: unknown command '%s'; allowed: %s (see --help)\n", argv[1],
+                         names.c_str());
+            return kExitUsage;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -25,8 +25,11 @@ std::string check_writable(const std::string& path) {
     if (path.empty()) return "empty path";
     if (path.back() == '/') return "'" + path + "' names a directory, not a file";
     struct stat st {};
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-        return "'" + path + "' is a directory, not a file";
+    if (::stat(path.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return "'" + path + "' is a directory, not a file";
+        // Renaming over a device or a pipe (say /dev/null as root) would replace it: refuse.
+        if (!S_ISREG(st.st_mode)) return "'" + path + "' exists and is not a regular file";
+    }
     const std::string dir = directory_of(path);
     if (::stat(dir.c_str(), &st) != 0) return "directory '" + dir + "' does not exist";
     if (!S_ISDIR(st.st_mode)) return "'" + dir + "' is not a directory";

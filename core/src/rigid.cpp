@@ -39,11 +39,19 @@ double rigid_rx_parallel(double zeta) {
 }
 
 double rigid_rx_perpendicular(double zeta) {
-    // Eq. (11). K is written with the parameter m = 1/(1+zeta^2); std::comp_ellint_1 takes the modulus
-    // k = sqrt(m). As zeta -> 0, K diverges only logarithmically, so zeta K -> 0.
+    // Eq. (11): r_x = (2/pi) zeta/sqrt(1+zeta^2) K(m), m = k^2 = 1/(1+zeta^2). K is evaluated through the
+    // arithmetic-geometric mean, K(k) = pi / (2 AGM(1, k')), with the complementary modulus
+    // k' = sqrt(1 - k^2) = zeta/sqrt(1+zeta^2) formed directly: std::comp_ellint_1(k) would need k itself,
+    // which rounds to 1 (K = inf) for zeta below ~1e-8. With both, Eq. (11) collapses to k'/AGM(1, k').
     if (zeta == 0) return 0.0;
-    const double m = 1 / (1 + zeta * zeta);
-    return 2 / kPi * zeta / std::sqrt(1 + zeta * zeta) * std::comp_ellint_1(std::sqrt(m));
+    const double kc = zeta / std::sqrt(1 + zeta * zeta);
+    double a = 1, b = kc;
+    for (int it = 0; it < 64 && std::abs(a - b) > 1e-16 * a; ++it) {
+        const double an = 0.5 * (a + b);
+        b = std::sqrt(a * b);
+        a = an;
+    }
+    return kc / (0.5 * (a + b));
 }
 
 } // namespace fv

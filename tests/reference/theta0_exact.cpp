@@ -13,7 +13,8 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 
 void check_args(double zeta, double rdisp) {
-    if (!std::isfinite(zeta) || zeta < 0.0) throw std::invalid_argument("fv::ref: zeta must be finite and >= 0");
+    if (!std::isfinite(zeta) || zeta < 0.0)
+        throw std::invalid_argument("fv::ref: zeta must be finite and >= 0");
     if (!std::isfinite(rdisp) || rdisp <= 0.0)
         throw std::invalid_argument("fv::ref: rdisp must be finite and > 0");
 }
@@ -82,7 +83,8 @@ Geometry make_geometry(double zeta) {
     g.s = std::sqrt((1.0 - zeta) * (1.0 + zeta));
     g.alpha = std::atan2(g.s, zeta);
     g.tau1 = kPi - g.alpha;
-    // B/2 = sin(alpha) - alpha cos(alpha) = alpha (1 - cos alpha) - (alpha - sin alpha): accurate as alpha -> 0.
+    // B/2 = sin(alpha) - alpha cos(alpha) = alpha (1 - cos alpha) - (alpha - sin alpha): fine for small
+    // alpha.
     g.B = 2.0 * (g.alpha * one_minus_cos(g.alpha) - h_minus_sin(g.alpha));
     g.len_b = 2.0 * g.alpha;
     g.len_f = kTwoPi - g.len_b;

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages frictionviz needs, only those that are missing (Debian 12 "bookworm").
+# Every package the build, the tests or the main job use is named here: nothing is installed by hand.
+set -euo pipefail
+
+PACKAGES=(
+  cmake g++ make pkg-config                 # build
+  libeigen3-dev libcli11-dev nlohmann-json3-dev  # core + command line
+  catch2                                    # tests (Catch2 v2)
+  libimgui-dev libglfw3-dev libgl-dev libosmesa6-dev libstb-dev fonts-dejavu-core  # drawing
+  xvfb xauth                                # window tests without a display (xvfb-run needs xauth)
+)
+
+missing=()
+for p in "${PACKAGES[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${missing[*]}"
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,166 @@
+// The real executable: exit codes, one-line errors naming the flag and range, nothing written on failure.
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+struct Run {
+    int code;
+    std::string out, err;
+};
+
+std::string slurp(const std::string& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+std::string scratch_dir() {
+    static std::string dir = [] {
+        char tmpl[] = "/tmp/fv-cli-XXXXXX";
+        return std::string(::mkdtemp(tmpl));
+    }();
+    return dir;
+}
+
+Run run(const std::string& args) {
+    const std::string o = scratch_dir() + "/stdout", e = scratch_dir() + "/stderr";
+    const std::string cmd = std::string(FV_EXE) + " " + args + " >" + o + " 2>" + e + " </dev/null";
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(o), slurp(e)};
+}
+
+long lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
+
+const char* kGood = "--zeta 0.3 --theta 45 --rdisp 2 --i 1";
+
+} // namespace
+
+TEST_CASE("CLI: bad numbers are usage errors naming the flag and the allowed range", "[cli]") {
+    struct Case {
+        const char* args;
+        const char* flag;
+    };
+    for (const Case& c : {
+             Case{"ratio --zeta abc --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"ratio --zeta nan --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"ratio --zeta inf --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"ratio --zeta -0.1 --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"ratio --zeta 0.3 --theta 1e999 --rdisp 2 --i 1", "--theta"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 0 --i 1", "--rdisp"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp -2 --i 1", "--rdisp"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i -1", "--i"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2", "--i"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --steps-per-period 0", "--steps-per-period"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --steps-per-period 12.5", "--steps-per-period"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --model soft", "--model"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --format xml", "--format"},
+             Case{"sweep --zeta 1:0.5:10 --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"sweep --zeta 0.5:0.5:10 --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"sweep --zeta 0:1:0 --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"sweep --zeta 0:1 --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"sweep --zeta 0:1:x --theta 90 --rdisp 2 --i 1", "--zeta"},
+             Case{"sweep --zeta 0:1:5 --theta 0,abc --rdisp 2 --i 1", "--theta"},
+             Case{"sweep --zeta 0:1:5 --theta 0 --rdisp 2,0 --i 1", "--rdisp"},
+             Case{"trace --zeta 0.3 --theta 90 --rdisp nan --i 1", "--rdisp"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --bogus", "--bogus"},
+             Case{"frobnicate --zeta 1", "frobnicate"},
+         }) {
+        CAPTURE(c.args);
+        const Run r = run(c.args);
+        CHECK(r.code == 2);
+        CHECK(r.out.empty());
+        CHECK(lines(r.err) == 1);
+        CHECK(r.err.find(c.flag) != std::string::npos);
+    }
+}
+
+TEST_CASE("CLI: help and version exit 0", "[cli]") {
+    for (const char* a : {"--help", "ratio --help", "sweep --help", "trace --help"}) {
+        const Run r = run(a);
+        CAPTURE(a);
+        CHECK(r.code == 0);
+        CHECK(r.out.find("--") != std::string::npos);
+    }
+    const Run v = run("--version");
+    CHECK(v.code == 0);
+    CHECK(v.out.find("frictionviz") != std::string::npos);
+}
+
+TEST_CASE("CLI: a failed run writes nothing and clobbers nothing", "[cli]") {
+    const std::string dir = scratch_dir(), keep = dir + "/keep.csv";
+    std::ofstream(keep) << "precious\n";
+    // Bad input with an existing target: file untouched.
+    CHECK(run(std::string("sweep --zeta 1:0:3 --theta 0 --rdisp 2 --i 1 --out ") + keep).code == 2);
+    CHECK(slurp(keep) == "precious\n");
+    // Target in a missing directory / a directory / a device: refused up front with exit 2.
+    for (const std::string& out : {dir + "/nope/x.csv", dir, std::string("/dev/null")}) {
+        const Run r = run(std::string("ratio ") + kGood + " --format csv --out " + out);
+        CAPTURE(out, r.err);
+        CHECK(r.code == 2);
+        CHECK(r.err.find("--out") != std::string::npos);
+    }
+    CHECK(::access((dir + "/nope").c_str(), F_OK) != 0);
+}
+
+TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
+    const Run csv = run(std::string("ratio ") + kGood + " --format csv");
+    REQUIRE(csv.code == 0);
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\ndahl,1,45,2,0.3,", 0) == 0);
+    CHECK(lines(csv.out) == 2);
+    const Run js = run(std::string("ratio ") + kGood + " --format json");
+    REQUIRE(js.code == 0);
+    const auto j = nlohmann::json::parse(js.out);
+    CHECK(j["model"] == "dahl");
+    CHECK(j["status"] == "converged");
+    CHECK(j["theta_deg"].get<double>() == 45);
+    const Run txt = run(std::string("ratio ") + kGood);
+    CHECK(txt.out.find("r_x") != std::string::npos);
+    // The rigid model through the CLI: r_x(1/2, 0) = (2/pi) asin(1/2) = 1/3 (Eq. (10)).
+    const Run rig = run("ratio --model rigid --zeta 0.5 --theta 0 --format json");
+    REQUIRE(rig.code == 0);
+    CHECK(nlohmann::json::parse(rig.out)["r_x"].get<double>() == Approx(1.0 / 3).margin(1e-12));
+}
+
+TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
+    const std::string out = scratch_dir() + "/sweep.csv";
+    const Run r = run("sweep --zeta 0.1:1.5:4 --theta 0,90 --rdisp 1,10 --i 0,1 --steps-per-period 256 --out " + out);
+    REQUIRE(r.code == 0);
+    CHECK(r.out.empty());
+    const std::string csv = slurp(out);
+    CHECK(csv.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n", 0) == 0);
+    CHECK(lines(csv) == 1 + 4 * 2 * 2 * 2);
+    const Run j = run("sweep --model rigid --zeta 0:2:5 --theta 0,30 --format json");
+    REQUIRE(j.code == 0);
+    const auto arr = nlohmann::json::parse(j.out);
+    REQUIRE(arr.size() == 10);
+    CHECK(arr[4]["r_x"].get<double>() == Approx(1).margin(1e-12)); // theta = 0, zeta = 2 > 1
+    CHECK(arr[0]["rdisp"].is_null());                             // not a parameter of the rigid model
+}
+
+TEST_CASE("CLI: trace gives one steady period with the documented columns", "[cli]") {
+    const Run r = run("trace --zeta 0.5 --theta 90 --rdisp 2 --i 0 --steps-per-period 500");
+    REQUIRE(r.code == 0);
+    std::istringstream in(r.out);
+    std::string header, line;
+    std::getline(in, header);
+    CHECK(header == "tau,Px,Py,Tx,Ty,z,Fx,Fy");
+    int rows = 0;
+    double first_tau = 0, last_tau = 0;
+    while (std::getline(in, line)) {
+        const double tau = std::stod(line.substr(0, line.find(',')));
+        if (rows++ == 0) first_tau = tau;
+        last_tau = tau;
+    }
+    CHECK(rows == 500);
+    CHECK(last_tau - first_tau == Approx(2 * 3.14159265358979 * 499 / 500).epsilon(1e-9));
+}
