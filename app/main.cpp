@@ -15,10 +15,12 @@
 
 int main(int argc, char** argv) {
     using namespace fv::cli;
-    CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)", "frictionviz"};
+    CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)",
+                 "frictionviz"};
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
     app.require_subcommand(1);
-    const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app), add_trace_command(app)};
+    const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app),
+                                        add_trace_command(app)};
     // CLI11 would report an unknown subcommand as a missing one; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;

@@ -39,7 +39,9 @@ Run run(const std::string& args) {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(o), slurp(e)};
 }
 
-long lines(const std::string& s) { return std::count(s.begin(), s.end(), '\n'); }
+long lines(const std::string& s) {
+    return std::count(s.begin(), s.end(), '\n');
+}
 
 const char* kGood = "--zeta 0.3 --theta 45 --rdisp 2 --i 1";
 
@@ -61,7 +63,8 @@ TEST_CASE("CLI: bad numbers are usage errors naming the flag and the allowed ran
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i -1", "--i"},
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2", "--i"},
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --steps-per-period 0", "--steps-per-period"},
-             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --steps-per-period 12.5", "--steps-per-period"},
+             Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --steps-per-period 12.5",
+                  "--steps-per-period"},
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --model soft", "--model"},
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --format xml", "--format"},
              Case{"sweep --zeta 1:0.5:10 --theta 90 --rdisp 2 --i 1", "--zeta"},
@@ -115,7 +118,8 @@ TEST_CASE("CLI: a failed run writes nothing and clobbers nothing", "[cli]") {
 TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\ndahl,1,45,2,0.3,", 0) == 0);
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\ndahl,1,45,2,0.3,", 0) ==
+          0);
     CHECK(lines(csv.out) == 2);
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
@@ -133,7 +137,8 @@ TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
 
 TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
     const std::string out = scratch_dir() + "/sweep.csv";
-    const Run r = run("sweep --zeta 0.1:1.5:4 --theta 0,90 --rdisp 1,10 --i 0,1 --steps-per-period 256 --out " + out);
+    const Run r =
+        run("sweep --zeta 0.1:1.5:4 --theta 0,90 --rdisp 1,10 --i 0,1 --steps-per-period 256 --out " + out);
     REQUIRE(r.code == 0);
     CHECK(r.out.empty());
     const std::string csv = slurp(out);
@@ -144,7 +149,7 @@ TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
     const auto arr = nlohmann::json::parse(j.out);
     REQUIRE(arr.size() == 10);
     CHECK(arr[4]["r_x"].get<double>() == Approx(1).margin(1e-12)); // theta = 0, zeta = 2 > 1
-    CHECK(arr[0]["rdisp"].is_null());                             // not a parameter of the rigid model
+    CHECK(arr[0]["rdisp"].is_null());                              // not a parameter of the rigid model
 }
 
 TEST_CASE("CLI: trace gives one steady period with the documented columns", "[cli]") {

@@ -9,7 +9,8 @@
 
 using fv::kPi;
 
-TEST_CASE("Eq. (10): quadrature of Eq. (9) at theta = 0 matches (2/pi) asin(zeta), 1 above zeta = 1", "[rigid]") {
+TEST_CASE("Eq. (10): quadrature of Eq. (9) at theta = 0 matches (2/pi) asin(zeta), 1 above zeta = 1",
+          "[rigid]") {
     for (double z : {0.0, 0.01, 0.1, 0.3, 0.5, 0.7, 0.9, 0.99, 0.999999, 1.0, 1.000001, 1.2, 2.0, 10.0}) {
         CAPTURE(z);
         const auto r = fv::rigid_ratio(z, 0);
@@ -48,7 +49,8 @@ TEST_CASE("Closed forms at values known by hand", "[rigid]") {
 
 TEST_CASE("Oblique angles: quadrature agrees with a dense midpoint rule", "[rigid]") {
     // The integrand is smooth (analytic, periodic) for 0 < theta < pi and zeta > 0 away from the
-    // near-singular theta -> 0 corner, so the plain midpoint rule converges geometrically: an independent check.
+    // near-singular theta -> 0 corner, so the plain midpoint rule converges geometrically: an independent
+    // check.
     for (double th_deg : {15.0, 30.0, 45.0, 60.0, 75.0, 120.0})
         for (double z : {0.1, 0.5, 0.9, 1.3}) {
             const double th = th_deg * kPi / 180, c = std::cos(th), s = std::sin(th);

@@ -71,7 +71,8 @@ TEST_CASE("Mirror symmetries: theta = pi/2 has r_y = 0; theta -> pi - theta flip
     for (double i : {0.0, 1.0, 2.0}) {
         const auto q = fv::dahl_steady({0.4, kPi / 2, 1.5, i});
         CHECK(std::abs(q.ry) < 1e-7);
-        const auto a = fv::dahl_steady({0.4, kPi / 6, 1.5, i}), b = fv::dahl_steady({0.4, 5 * kPi / 6, 1.5, i});
+        const auto a = fv::dahl_steady({0.4, kPi / 6, 1.5, i}),
+                   b = fv::dahl_steady({0.4, 5 * kPi / 6, 1.5, i});
         CAPTURE(i);
         CHECK(a.rx == Approx(b.rx).margin(2e-6));
         CHECK(a.ry == Approx(-b.ry).margin(2e-6));
@@ -79,7 +80,8 @@ TEST_CASE("Mirror symmetries: theta = pi/2 has r_y = 0; theta -> pi - theta flip
     }
 }
 
-TEST_CASE("zeta >= 1 at theta = 0: the body never moves backwards, the tip slips forward, r_x = 1", "[steady]") {
+TEST_CASE("zeta >= 1 at theta = 0: the body never moves backwards, the tip slips forward, r_x = 1",
+          "[steady]") {
     for (double i : {0.0, 1.0, 0.5})
         for (double zeta : {1.0, 1.7}) CHECK(fv::dahl_steady({zeta, 0, 3, i}).rx == Approx(1).margin(1e-6));
 }
@@ -104,8 +106,10 @@ TEST_CASE("Every parameter set ends with a clear status within its budget", "[st
         CAPTURE(p.zeta, p.theta, p.rdisp, p.i, r.periods, r.error_estimate, fv::to_string(r.status));
         CHECK(r.periods <= 400);
         CHECK(std::isfinite(r.rx));
-        if (r.status == SteadyStatus::converged) CHECK(r.error_estimate < 1e-3);
-        else CHECK(r.error_estimate > o.tolerance); // never converged with a tiny error estimate
+        if (r.status == SteadyStatus::converged)
+            CHECK(r.error_estimate < 1e-3);
+        else
+            CHECK(r.error_estimate > o.tolerance); // never converged with a tiny error estimate
     }
     // A budget far too small for a slow case must say so.
     o.max_periods = 3;

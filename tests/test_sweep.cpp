@@ -28,7 +28,13 @@ TEST_CASE("sweep visits every combination once, in order, and matches single cal
 
 TEST_CASE("parallel_for runs every index exactly once and forwards exceptions", "[sweep]") {
     std::vector<std::atomic<int>> hits(1000);
-    fv::parallel_for(1000, [&](int k) { hits[static_cast<std::size_t>(k)]++; }, 4);
+    fv::parallel_for(
+        1000, [&](int k) { hits[static_cast<std::size_t>(k)]++; }, 4);
     for (auto& h : hits) CHECK(h == 1);
-    CHECK_THROWS(fv::parallel_for(10, [](int k) { if (k == 7) throw std::runtime_error("x"); }, 2));
+    CHECK_THROWS(fv::parallel_for(
+        10,
+        [](int k) {
+            if (k == 7) throw std::runtime_error("x");
+        },
+        2));
 }

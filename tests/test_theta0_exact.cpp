@@ -57,7 +57,8 @@ TEST_CASE("theta = 0, i = 0: stick and slip are exact in 1-D, only the switching
     fv::SteadyOptions o;
     o.tolerance = 1e-12;
     o.steps_per_period = 2000;
-    const double err = std::abs(fv::dahl_steady({zeta, 0.0, rdisp, 0}, o).rx - fv::ref::rx_theta0_i0(zeta, rdisp));
+    const double err =
+        std::abs(fv::dahl_steady({zeta, 0.0, rdisp, 0}, o).rx - fv::ref::rx_theta0_i0(zeta, rdisp));
     CHECK(err < 10 * std::pow(2 * 3.14159265358979 / 2000, 2));
 }
 

@@ -15,7 +15,8 @@ Command add_ratio_command(CLI::App& root) {
         std::string out;
     };
     auto a = std::make_shared<Args>();
-    CLI::App* cmd = root.add_subcommand("ratio", "friction ratios r_x, r_y of one parameter set in steady state");
+    CLI::App* cmd =
+        root.add_subcommand("ratio", "friction ratios r_x, r_y of one parameter set in steady state");
     add_model_options(*cmd, a->model, true);
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"text", "csv", "json"}))

@@ -21,7 +21,8 @@ Command add_sweep_command(CLI::App& root) {
         std::string out;
     };
     auto a = std::make_shared<Args>();
-    CLI::App* cmd = root.add_subcommand("sweep", "r_x, r_y over a grid of zeta for families of theta, rdisp, i");
+    CLI::App* cmd =
+        root.add_subcommand("sweep", "r_x, r_y over a grid of zeta for families of theta, rdisp, i");
     cmd->add_option("--zeta", a->zeta, "zeta values FROM:TO:COUNT (evenly spaced, both ends included)")
         ->required()
         ->check(range_spec(kZetaRange, 100000));
@@ -40,7 +41,8 @@ Command add_sweep_command(CLI::App& root) {
         ->capture_default_str();
     cmd->add_option("--steps-per-period", a->steps_per_period, "run the paper's scheme with exactly N steps")
         ->check(integer_in(kMinSteps, kMaxSteps));
-    cmd->add_option("--threads", a->threads, "worker threads (default: all cores)")->check(integer_in(1, 256));
+    cmd->add_option("--threads", a->threads, "worker threads (default: all cores)")
+        ->check(integer_in(1, 256));
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"csv", "json"}))
         ->capture_default_str();
@@ -51,14 +53,16 @@ Command add_sweep_command(CLI::App& root) {
                     throw UsageError("--rdisp is required for the Dahl model; allowed: numbers in " +
                                      describe(kRdispRange));
                 if (model == Model::dahl && ii->count() == 0)
-                    throw UsageError("--i is required for the Dahl model; allowed: numbers in " + describe(kIRange));
+                    throw UsageError("--i is required for the Dahl model; allowed: numbers in " +
+                                     describe(kIRange));
                 check_out(a->out);
                 const RangeSpec z = parse_range_spec(a->zeta);
                 std::vector<double> thetas;
                 for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
                 SteadyOptions o;
                 o.steps_per_period = a->steps_per_period;
-                const auto rows = sweep(model, linspace(z.from, z.to, z.count), thetas, a->rdisp, a->i, o, a->threads);
+                const auto rows =
+                    sweep(model, linspace(z.from, z.to, z.count), thetas, a->rdisp, a->i, o, a->threads);
                 deliver(ratio_table(rows, parse_format(a->format)), a->out);
                 for (const auto& r : rows) warn_if_unsteady(r);
             }};

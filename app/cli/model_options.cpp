@@ -14,8 +14,9 @@ void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
     a.rdisp_opt =
         cmd.add_option("--rdisp", a.rdisp, "displacement ratio r_disp = x_v/z_ss, Eq. (34) (Dahl model only)")
             ->check(number_in(kRdispRange));
-    a.i_opt = cmd.add_option("--i", a.i, "Dahl shape exponent i, Eq. (12); 0 = stiction, Eq. (27) (Dahl only)")
-                  ->check(number_in(kIRange));
+    a.i_opt =
+        cmd.add_option("--i", a.i, "Dahl shape exponent i, Eq. (12); 0 = stiction, Eq. (27) (Dahl only)")
+            ->check(number_in(kIRange));
     if (with_model_choice)
         cmd.add_option("--model", a.model, "friction model")
             ->check(CLI::IsMember({"dahl", "rigid"}))
@@ -26,12 +27,15 @@ void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
         ->check(integer_in(kMinSteps, kMaxSteps));
 }
 
-Model model_of(const ModelArgs& a) { return a.model == "rigid" ? Model::rigid : Model::dahl; }
+Model model_of(const ModelArgs& a) {
+    return a.model == "rigid" ? Model::rigid : Model::dahl;
+}
 
 Params to_params(const ModelArgs& a) {
     if (model_of(a) == Model::dahl) {
         if (a.rdisp_opt && a.rdisp_opt->count() == 0)
-            throw UsageError("--rdisp is required for the Dahl model; allowed: a number in " + describe(kRdispRange));
+            throw UsageError("--rdisp is required for the Dahl model; allowed: a number in " +
+                             describe(kRdispRange));
         if (a.i_opt && a.i_opt->count() == 0)
             throw UsageError("--i is required for the Dahl model; allowed: a number in " + describe(kIRange));
     }

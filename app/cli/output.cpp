@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 
 namespace fv::cli {
@@ -23,9 +24,16 @@ std::string num(double v) {
 }
 
 // NaN and infinities become null in JSON (nlohmann does this for NaN; be explicit for both).
-nlohmann::json jnum(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+nlohmann::json jnum(double v) {
+    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
+}
 
-double theta_deg(const Params& p) { return p.theta * 180 / kPi; }
+// Degrees back from radians, rounded to 12 significant digits so that 30 reads 30, not 29.999999999999996.
+double theta_deg(const Params& p) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.12g", p.theta * 180 / kPi);
+    return std::strtod(buf, nullptr);
+}
 
 nlohmann::json json_of(const SweepPoint& r) {
     return {{"model", to_string(r.model)},
@@ -59,8 +67,9 @@ std::string ratio_table(const std::vector<SweepPoint>& rows, Format f) {
     std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n";
     for (const auto& r : rows) {
         s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
-             num(r.params.rdisp) + "," + num(r.params.zeta) + "," + num(r.result.rx) + "," + num(r.result.ry) +
-             "," + std::to_string(r.result.periods) + "," + num(r.result.error_estimate) + "\n";
+             num(r.params.rdisp) + "," + num(r.params.zeta) + "," + num(r.result.rx) + "," +
+             num(r.result.ry) + "," + std::to_string(r.result.periods) + "," + num(r.result.error_estimate) +
+             "\n";
     }
     return s;
 }
@@ -87,11 +96,17 @@ std::string ratio_text(const SweepPoint& r) {
     std::snprintf(buf, sizeof buf, "r_x           %.9f\nr_y           %.9f\n", res.rx, res.ry);
     s += buf;
     if (r.model == Model::dahl) {
-        std::snprintf(buf, sizeof buf,
-                      "steady state  %s after %d periods (%d steps per period%s)\n",
-                      res.status == SteadyStatus::converged ? "reached" : "NOT reached", res.periods,
-                      res.steps_per_period,
-                      res.levels > 1 ? ", extrapolated to dtau -> 0 from 3 resolutions" : ", paper's scheme as is");
+        if (res.levels > 1)
+            std::snprintf(buf, sizeof buf,
+                          "steady state  %s after %d periods (up to %d steps per period, %d resolutions "
+                          "extrapolated to dtau -> 0)\n",
+                          res.status == SteadyStatus::converged ? "reached" : "NOT reached", res.periods,
+                          res.steps_per_period, res.levels);
+        else
+            std::snprintf(buf, sizeof buf,
+                          "steady state  %s after %d periods (%d steps per period, paper's scheme as is)\n",
+                          res.status == SteadyStatus::converged ? "reached" : "NOT reached", res.periods,
+                          res.steps_per_period);
         s += buf;
     }
     std::snprintf(buf, sizeof buf, "error est.    %.2e\n", res.error_estimate);
@@ -104,7 +119,8 @@ std::string trace_table(const SweepPoint& row, Format f) {
     if (f == Format::json) {
         nlohmann::json j = json_of(row);
         nlohmann::json cols;
-        for (const char* c : {"tau", "Px", "Py", "Tx", "Ty", "z", "Fx", "Fy"}) cols[c] = nlohmann::json::array();
+        for (const char* c : {"tau", "Px", "Py", "Tx", "Ty", "z", "Fx", "Fy"})
+            cols[c] = nlohmann::json::array();
         for (const auto& s : samples) {
             cols["tau"].push_back(s.tau);
             cols["Px"].push_back(s.P.x());
@@ -121,8 +137,8 @@ std::string trace_table(const SweepPoint& row, Format f) {
     std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy\n";
     s.reserve(samples.size() * 120);
     for (const auto& x : samples) {
-        s += num(x.tau) + "," + num(x.P.x()) + "," + num(x.P.y()) + "," + num(x.T.x()) + "," + num(x.T.y()) + "," +
-             num(x.z) + "," + num(x.F.x()) + "," + num(x.F.y()) + "\n";
+        s += num(x.tau) + "," + num(x.P.x()) + "," + num(x.P.y()) + "," + num(x.T.x()) + "," + num(x.T.y()) +
+             "," + num(x.z) + "," + num(x.F.x()) + "," + num(x.F.y()) + "\n";
     }
     return s;
 }
@@ -143,11 +159,12 @@ void deliver(const std::string& content, const std::string& out) {
 
 void warn_if_unsteady(const SweepPoint& row) {
     if (row.model != Model::dahl || row.result.status == SteadyStatus::converged) return;
-    std::fprintf(stderr,
-                 "frictionviz: warning: steady state not reached for zeta=%g theta=%g rdisp=%g i=%g after %d periods; "
-                 "error estimate %.2e\n",
-                 row.params.zeta, theta_deg(row.params), row.params.rdisp, row.params.i, row.result.periods,
-                 row.result.error_estimate);
+    std::fprintf(
+        stderr,
+        "frictionviz: warning: steady state not reached for zeta=%g theta=%g rdisp=%g i=%g after %d periods; "
+        "error estimate %.2e\n",
+        row.params.zeta, theta_deg(row.params), row.params.rdisp, row.params.i, row.result.periods,
+        row.result.error_estimate);
 }
 
 } // namespace fv::cli

@@ -25,7 +25,9 @@ std::string describe(Range r) {
 
 namespace {
 
-bool inside(double v, Range r) { return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi; }
+bool inside(double v, Range r) {
+    return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi;
+}
 
 std::string number_error(const std::string& s, Range r) {
     double v = 0;
@@ -95,9 +97,11 @@ CLI::Validator range_spec(Range r, int max_count) {
             if (c.empty() || end != c.c_str() + c.size() || errno == ERANGE)
                 return "'" + s + "' has a COUNT that is not an integer; " + allowed.str();
             if (count < 1 || count > max_count) return "'" + s + "' has COUNT out of range; " + allowed.str();
-            if (!inside(from, r) || !inside(to, r)) return "'" + s + "' leaves the allowed range; " + allowed.str();
+            if (!inside(from, r) || !inside(to, r))
+                return "'" + s + "' leaves the allowed range; " + allowed.str();
             if (from > to) return "'" + s + "' is reversed (FROM > TO); " + allowed.str();
-            if (from == to && count > 1) return "'" + s + "' is empty (FROM == TO with COUNT > 1); " + allowed.str();
+            if (from == to && count > 1)
+                return "'" + s + "' is empty (FROM == TO with COUNT > 1); " + allowed.str();
             return {};
         },
         "FROM:TO:COUNT");

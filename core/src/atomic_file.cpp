@@ -17,7 +17,9 @@ std::string directory_of(const std::string& path) {
     return path.substr(0, slash);
 }
 
-std::string errno_text() { return std::strerror(errno); }
+std::string errno_text() {
+    return std::strerror(errno);
+}
 
 } // namespace
 

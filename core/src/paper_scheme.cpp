@@ -26,9 +26,15 @@ PaperStepper::PaperStepper(const Params& p, int steps_per_period, Vec2 initial_l
     for (int k = 0; k < n_; ++k) dsin_[static_cast<std::size_t>(k)] = 2 * std::cos((k + 0.5) * dtau_) * half;
 }
 
-double PaperStepper::tau() const { return (static_cast<double>(period_) * n_ + k_) * dtau_; }
-Vec2 PaperStepper::P() const { return body_point(p_, tau()); }
-Vec2 PaperStepper::T() const { return P() - lag_; }
+double PaperStepper::tau() const {
+    return (static_cast<double>(period_) * n_ + k_) * dtau_;
+}
+Vec2 PaperStepper::P() const {
+    return body_point(p_, tau());
+}
+Vec2 PaperStepper::T() const {
+    return P() - lag_;
+}
 
 Sample PaperStepper::sample() const {
     Sample s;

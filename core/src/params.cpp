@@ -5,7 +5,9 @@
 
 namespace fv {
 
-const char* to_string(Model m) { return m == Model::rigid ? "rigid" : "dahl"; }
+const char* to_string(Model m) {
+    return m == Model::rigid ? "rigid" : "dahl";
+}
 
 std::optional<Model> parse_model(const std::string& s) {
     if (s == "rigid") return Model::rigid;

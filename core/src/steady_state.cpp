@@ -6,7 +6,9 @@
 
 namespace fv {
 
-const char* to_string(SteadyStatus s) { return s == SteadyStatus::converged ? "converged" : "not_converged"; }
+const char* to_string(SteadyStatus s) {
+    return s == SteadyStatus::converged ? "converged" : "not_converged";
+}
 
 int default_steps_per_period(const Params& p) {
     // The explicit update (17)-(22) is in its first-order regime once P moves only a small fraction of
@@ -38,8 +40,8 @@ struct LevelResult {
 LevelResult run_level(const Params& p, int n, Vec2 lag0, const SteadyOptions& opt, bool record) {
     PaperStepper st(p, n, lag0);
     LevelResult out;
-    const int budget =
-        std::max(2, static_cast<int>(std::min<double>(opt.max_periods, opt.max_steps / static_cast<double>(n))));
+    const int budget = std::max(
+        2, static_cast<int>(std::min<double>(opt.max_periods, opt.max_steps / static_cast<double>(n))));
     Ratio prev_r{std::numeric_limits<double>::quiet_NaN(), 0};
     double prev_delta = std::numeric_limits<double>::quiet_NaN();
     double prev_rho = std::numeric_limits<double>::quiet_NaN();
@@ -60,8 +62,9 @@ LevelResult run_level(const Params& p, int n, Vec2 lag0, const SteadyOptions& op
         }
         const Ratio r{sum.x() / n, sum.y() / n};
         const double delta = p.rdisp * (st.lag() - lag_start).norm(); // in force units
-        const double dr = std::isnan(prev_r.rx) ? std::numeric_limits<double>::infinity()
-                                                : std::max(std::abs(r.rx - prev_r.rx), std::abs(r.ry - prev_r.ry));
+        const double dr = std::isnan(prev_r.rx)
+                              ? std::numeric_limits<double>::infinity()
+                              : std::max(std::abs(r.rx - prev_r.rx), std::abs(r.ry - prev_r.ry));
         const double rho_now = delta / prev_delta;
         // The larger of the last two ratios: one lucky small ratio must not end the run early.
         const double rho = std::isnan(prev_rho) ? rho_now : std::max(rho_now, prev_rho);

@@ -14,9 +14,9 @@ std::vector<double> linspace(double from, double to, int count) {
     return v;
 }
 
-std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas, const std::vector<double>& thetas,
-                              const std::vector<double>& rdisps, const std::vector<double>& is,
-                              const SteadyOptions& opt, int threads) {
+std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
+                              const std::vector<double>& thetas, const std::vector<double>& rdisps,
+                              const std::vector<double>& is, const SteadyOptions& opt, int threads) {
     std::vector<SweepPoint> pts;
     // The rigid model has no rdisp or i: one curve per angle.
     const std::vector<double> one{0};

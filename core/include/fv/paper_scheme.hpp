@@ -34,18 +34,18 @@ class PaperStepper {
     // initial_lag = P(0) - T(0); the paper leaves it open, zero (unstretched asperity) is the default.
     PaperStepper(const Params& p, int steps_per_period, Vec2 initial_lag = Vec2::Zero());
 
-    void step();           // advance by one dtau
-    void run_period();     // advance to the start of the next period
+    void step();       // advance by one dtau
+    void run_period(); // advance to the start of the next period
 
     const Params& params() const { return p_; }
     int steps_per_period() const { return n_; }
     double dtau() const { return dtau_; }
     std::int64_t step_index() const { return period_ * n_ + k_; } // steps taken so far
-    std::int64_t period() const { return period_; }                 // completed periods
-    int phase_step() const { return k_; }                           // steps into the current period
+    std::int64_t period() const { return period_; }               // completed periods
+    int phase_step() const { return k_; }                         // steps into the current period
 
     double tau() const;
-    Vec2 P() const;             // absolute coordinates
+    Vec2 P() const; // absolute coordinates
     Vec2 T() const;
     Vec2 lag() const { return lag_; } // P - T
     double z() const { return lag_.norm(); }

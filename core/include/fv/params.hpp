@@ -31,7 +31,8 @@ struct Params {
     double zss() const { return 1.0 / rdisp; }
 };
 
-// Empty when the parameters are admissible, else a one-line reason naming the parameter and the allowed range.
+// Empty when the parameters are admissible, else a one-line reason naming the parameter and the allowed
+// range.
 std::string validate(const Params& p);
 
 } // namespace fv

@@ -8,7 +8,7 @@ namespace fv {
 
 struct QuadResult {
     double value = 0;
-    double error = 0;      // Kronrod-Gauss difference summed over the final intervals (an upper estimate)
+    double error = 0; // Kronrod-Gauss difference summed over the final intervals (an upper estimate)
     int evaluations = 0;
     bool converged = true; // error <= tolerance before the interval budget ran out
 };

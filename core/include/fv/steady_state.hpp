@@ -11,35 +11,35 @@
 namespace fv {
 
 enum class SteadyStatus {
-    converged,      // the estimated distance to the periodic state is below the tolerance
-    not_converged,  // the period or step budget ran out first; error_estimate says how far it may be
+    converged,     // the estimated distance to the periodic state is below the tolerance
+    not_converged, // the period or step budget ran out first; error_estimate says how far it may be
 };
 const char* to_string(SteadyStatus s);
 
 struct SteadyOptions {
-    // 0: choose automatically: runs at n0/2, n0, 2 n0, 4 n0 steps (n0 = default_steps_per_period) extrapolated
-    // to dtau -> 0, so the result meets the accuracy contract
-    // |r - r(dtau -> 0)| <= 1e-5 on zeta in [0.02, 3], theta in [0, 90 deg], rdisp in [0.2, 100], i in {0, 1}.
-    // > 0: run exactly the paper's scheme with this many steps per period, no extrapolation.
+    // 0: choose automatically: runs at n0/2, n0, 2 n0, 4 n0 steps (n0 = default_steps_per_period)
+    // extrapolated to dtau -> 0, so the result meets the accuracy contract |r - r(dtau -> 0)| <= 1e-5 on zeta
+    // in [0.02, 3], theta in [0, 90 deg], rdisp in [0.2, 100], i in {0, 1}. > 0: run exactly the paper's
+    // scheme with this many steps per period, no extrapolation.
     int steps_per_period = 0;
-    double tolerance = 1e-9;            // target for the steady-state part of the error (force units)
-    int max_periods = 20000;            // hard cap on periods per resolution
-    double max_steps = 4e8;             // cap on steps per resolution (keeps every call bounded in time)
-    Vec2 initial_lag = Vec2::Zero();    // P(0) - T(0)
-    bool record_period = false;         // keep the samples of the last steady period (trace)
+    double tolerance = 1e-9;         // target for the steady-state part of the error (force units)
+    int max_periods = 20000;         // hard cap on periods per resolution
+    double max_steps = 4e8;          // cap on steps per resolution (keeps every call bounded in time)
+    Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0)
+    bool record_period = false;      // keep the samples of the last steady period (trace)
 };
 
 struct SteadyResult {
-    double rx = 0, ry = 0;        // Eq. (33) and its y-twin (31)
+    double rx = 0, ry = 0; // Eq. (33) and its y-twin (31)
     SteadyStatus status = SteadyStatus::converged;
-    int periods = 0;              // periods run until the steady state was accepted (finest resolution)
-    int total_periods = 0;        // summed over all resolutions
-    double error_estimate = 0;    // estimate of |r - exact| (steady-state + discretisation), force units
-    double steady_error = 0;      // the steady-state part of it
-    int steps_per_period = 0;     // finest resolution used
-    int levels = 1;               // resolutions combined by Richardson extrapolation
-    std::vector<Sample> period;   // last steady period at n0 = default_steps_per_period (or the N asked for),
-                                  // samples k = 1..n of Eq. (30)
+    int periods = 0;            // periods run until the steady state was accepted (finest resolution)
+    int total_periods = 0;      // summed over all resolutions
+    double error_estimate = 0;  // estimate of |r - exact| (steady-state + discretisation), force units
+    double steady_error = 0;    // the steady-state part of it
+    int steps_per_period = 0;   // finest resolution used
+    int levels = 1;             // resolutions combined by Richardson extrapolation
+    std::vector<Sample> period; // last steady period at n0 = default_steps_per_period (or the N asked for),
+                                // samples k = 1..n of Eq. (30)
 };
 
 // Dahl model in steady state.

@@ -18,9 +18,9 @@ std::vector<double> linspace(double from, double to, int count);
 
 // Every combination model x i x theta x rdisp x zeta, in that nesting order (zeta fastest).
 // For the rigid model, rdisp and i do not matter and each (theta, zeta) is computed once.
-std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas, const std::vector<double>& thetas,
-                              const std::vector<double>& rdisps, const std::vector<double>& is,
-                              const SteadyOptions& opt = {}, int threads = 0);
+std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
+                              const std::vector<double>& thetas, const std::vector<double>& rdisps,
+                              const std::vector<double>& is, const SteadyOptions& opt = {}, int threads = 0);
 
 // Runs f(k) for k in [0, count) on `threads` threads (0: hardware concurrency). Work is handed out one
 // index at a time, so uneven costs (slow steady states) balance out.
