@@ -35,18 +35,23 @@ struct LevelResult {
 // Runs the scheme at n steps per period from `lag0` until the lag at the start of a period stops moving.
 // The period map of a dissipative system contracts: successive changes delta_m of the lag shrink by a
 // factor rho per period (exponentially for i <= 1, ever more slowly for i > 1). With rho estimated from the
-// last changes, the distance still to go is about delta_m / (1 - rho). A stuck asperity (i = 0 before its
-// first slip) gives rho = 1: no estimate, keep going. Both ratios r_m of successive periods are watched too.
-LevelResult run_level(const Params& p, int n, Vec2 lag0, const SteadyOptions& opt, bool record) {
+// last changes, the distance still to go is about delta_m / (1 - rho). For i > 1 the changes decay only
+// algebraically, delta_m ~ C m^-q, and that formula undershoots the tail sum delta_m m / (q - 1) by a factor
+// q/(q - 1): so q is also estimated (from delta at m/2 and m) and the larger estimate is used. A stuck
+// asperity (i = 0 before its first slip) gives rho = 1, q = 0: no estimate, keep going. The changes of the
+// period means r_m are watched alongside the lag.
+LevelResult run_level(const Params& p, int n, Vec2 lag0, const SteadyOptions& opt, double steps_left,
+                      bool record) {
     PaperStepper st(p, n, lag0);
     LevelResult out;
-    const int budget = std::max(
-        2, static_cast<int>(std::min<double>(opt.max_periods, opt.max_steps / static_cast<double>(n))));
+    const int budget =
+        std::max(2, static_cast<int>(std::min<double>(opt.max_periods, steps_left / static_cast<double>(n))));
     Ratio prev_r{std::numeric_limits<double>::quiet_NaN(), 0};
     double prev_delta = std::numeric_limits<double>::quiet_NaN();
     double prev_rho = std::numeric_limits<double>::quiet_NaN();
     // Below this the changes are rounding noise of a period's worth of steps: the lag has stopped moving.
     const double noise = 1e-13 * std::sqrt(static_cast<double>(n));
+    std::vector<double> changes; // max(delta_m, |r_m - r_m-1|) for m = 1, 2, ...
     out.status = SteadyStatus::not_converged;
     out.steady_error = std::numeric_limits<double>::infinity();
     for (int m = 1; m <= budget; ++m) {
@@ -71,11 +76,17 @@ LevelResult run_level(const Params& p, int n, Vec2 lag0, const SteadyOptions& op
         out.r = r;
         out.periods = m;
         out.final_lag = st.lag();
+        const double change = std::max(delta, dr);
+        changes.push_back(change);
         double estimate = std::numeric_limits<double>::infinity();
         if (delta <= noise && dr <= noise) {
-            estimate = std::max(delta, dr);
-        } else if (rho < 1) {
-            estimate = std::max(delta, dr) / (1 - rho);
+            estimate = change;
+        } else if (rho < 1 && m >= 4) {
+            const double geometric = change / (1 - rho);
+            const double q = std::log(changes[static_cast<std::size_t>(m / 2 - 1)] / change) /
+                             std::log(static_cast<double>(m) / (m / 2));
+            const double algebraic = q > 1 ? change * m / (q - 1) : std::numeric_limits<double>::infinity();
+            estimate = std::max(geometric, algebraic);
         }
         out.steady_error = estimate;
         if (estimate <= opt.tolerance) {
@@ -102,28 +113,40 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt) {
 
     std::vector<LevelResult> lv;
     Vec2 lag = opt.initial_lag;
+    double steps_left = opt.max_steps;
     for (int l = 0; l < levels; ++l) {
         const int n = first_n << l;
         // Finer resolutions start from the coarser steady state (the steady state does not depend on the
-        // start, so this only saves periods). The run at n0 is the one recorded: the paper's scheme as is.
-        lv.push_back(run_level(p, n, lag, opt, opt.record_period && n == n0));
-        lag = lv.back().final_lag;
-        res.total_periods += lv.back().periods;
-        if (n == n0) res.period = std::move(lv.back().period);
+        // start, so this only saves periods). The run at n0 is the one recorded: the paper's scheme as is
+        // (the one at n0/2 too, in case it is the only one that runs).
+        lv.push_back(run_level(p, n, lag, opt, steps_left, opt.record_period && n <= n0));
+        const LevelResult& last = lv.back();
+        lag = last.final_lag;
+        res.total_periods += last.periods;
+        steps_left -= static_cast<double>(last.periods) * n;
+        if (n <= n0) res.period = last.period;
+        // A resolution that did not settle makes finer ones pointless (they settle no faster): stop here.
+        if (last.status != SteadyStatus::converged) break;
     }
     res.periods = lv.front().periods;
-    res.steps_per_period = first_n << (levels - 1);
-    res.levels = levels;
-    res.status = SteadyStatus::converged;
-    for (const auto& l : lv)
-        if (l.status != SteadyStatus::converged) res.status = SteadyStatus::not_converged;
+    res.steps_per_period = first_n << (lv.size() - 1);
+    res.levels = static_cast<int>(lv.size());
+    res.status = lv.back().status;
 
-    if (levels == 1) {
-        res.rx = lv[0].r.rx;
-        res.ry = lv[0].r.ry;
-        res.steady_error = lv[0].steady_error;
-        // With one resolution there is nothing to compare against: only the steady-state part is known.
-        res.error_estimate = lv[0].steady_error;
+    if (lv.size() < 4) {
+        // One run (an explicit N, or the first resolution already failed to settle) or a run cut short:
+        // report the finest run as it is. Its discretisation error is unknown unless a coarser run exists.
+        const LevelResult& f = lv.back();
+        res.rx = f.r.rx;
+        res.ry = f.r.ry;
+        res.steady_error = f.steady_error;
+        double disc = 0;
+        if (lv.size() >= 2) {
+            const LevelResult& c = lv[lv.size() - 2];
+            disc = std::max(std::abs(f.r.rx - c.r.rx), std::abs(f.r.ry - c.r.ry));
+        }
+        res.error_estimate = std::max(f.steady_error + disc, opt.tolerance);
+        if (levels == 1) res.error_estimate = f.steady_error; // the scheme as asked for: steady part only
         return res;
     }
     // The scheme is first order: r(n) = r0 + c/n + e(n). Richardson extrapolation R = 2 r(2n) - r(n) of

@@ -24,7 +24,7 @@ struct SteadyOptions {
     int steps_per_period = 0;
     double tolerance = 1e-9;         // target for the steady-state part of the error (force units)
     int max_periods = 20000;         // hard cap on periods per resolution
-    double max_steps = 4e8;          // cap on steps per resolution (keeps every call bounded in time)
+    double max_steps = 1e8;          // cap on steps summed over all resolutions: every call ends in seconds
     Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0)
     bool record_period = false;      // keep the samples of the last steady period (trace)
 };
