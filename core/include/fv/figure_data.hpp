@@ -1,0 +1,79 @@
+// The numbers behind a figure, as drawable panels (series, segments, marks) and tables. No drawing here:
+// the render layer maps these onto plots, the CLI writes the tables as CSV next to the PNG.
+#pragma once
+
+#include "fv/figures.hpp"
+#include "fv/paper_scheme.hpp"
+#include "fv/sweep.hpp"
+#include "fv/vec2.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fv {
+
+// Colours by meaning; the renderer owns the actual palette.
+enum class Ink { automatic, body, tip, spring, pull, force, magnitude, rigid, black };
+enum class Dash { solid, dashed, dotted };
+enum class Mark { none, circle, square, triangle, diamond, cross };
+
+struct SeriesData {
+    std::string label; // empty: not in the legend
+    std::vector<double> x, y;
+    Ink ink = Ink::automatic;
+    Dash dash = Dash::solid;
+    Mark mark = Mark::none;
+    float width = 2;
+};
+
+struct SegmentData {
+    Vec2 a, b;
+    Ink ink = Ink::spring;
+    Dash dash = Dash::solid;
+    float width = 1.5f;
+    std::string label; // drawn at the middle
+};
+
+struct PointData {
+    Vec2 at;
+    Ink ink = Ink::black;
+    Mark mark = Mark::circle;
+    std::string label; // drawn beside the point
+    float size = 9;
+};
+
+struct CircleData {
+    Vec2 center;
+    double radius = 1;
+    Ink ink = Ink::spring;
+    Dash dash = Dash::dotted;
+};
+
+struct PanelData {
+    std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
+    bool equal_aspect = false;
+    std::optional<double> x_min, x_max, y_min, y_max;
+    std::vector<SeriesData> series;
+    std::vector<SegmentData> segments;
+    std::vector<PointData> points;
+    std::vector<CircleData> circles;
+};
+
+// A table written next to the PNG: "<id><suffix>.csv".
+struct TableData {
+    std::string suffix;             // "" for the main table
+    std::vector<SweepPoint> ratios; // ratio rows (model,i,theta_deg,...), or
+    std::vector<Sample> trace;      // trace rows (tau,Px,...)
+};
+
+struct FigureData {
+    std::string id, title;
+    std::vector<PanelData> panels; // laid out side by side
+    std::vector<TableData> tables;
+};
+
+// Computes everything a figure shows. Ratio curves are spread over all cores.
+FigureData compute_figure(const FigureSpec& spec, int threads = 0);
+
+} // namespace fv

@@ -1,0 +1,55 @@
+// The paper's figures, defined once as data: the CLI renders them, the app loads them as presets, the tests
+// check them. Nothing here draws; figure_data.hpp turns a spec into numbers.
+#pragma once
+
+#include "fv/params.hpp"
+
+#include <string>
+#include <vector>
+
+namespace fv {
+
+enum class FigureKind {
+    ratio_curves, // r_x(zeta) for a family of models/parameters (Figs. 5, 10-13)
+    step_view,    // one step of the tracking scheme, top view (Fig. 8)
+    period_view,  // P and T over one steady-state period, top view (Figs. 9, 14, 17)
+    period_force, // F_x, F_y, |F| over one steady-state period (Figs. 15, 16, 18)
+    scene,        // top view + force + ratio curve of one parameter set (any parameters)
+};
+
+// One r_x(zeta) curve.
+struct Curve {
+    Model model = Model::dahl;
+    double theta = 0; // radians
+    double rdisp = 0; // Dahl only
+    double i = 1;     // Dahl only
+};
+
+struct FigureSpec {
+    std::string id;      // "fig10"
+    std::string title;   // drawn above the figure
+    std::string caption; // what it shows, for README and --help
+    FigureKind kind = FigureKind::ratio_curves;
+    // ratio_curves
+    std::vector<Curve> curves;
+    double zeta_from = 0, zeta_to = 3;
+    int zeta_count = 61;
+    // step_view, period_view, period_force, scene
+    Params params;
+    int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
+    bool overlay_other_i = false; // Fig. 17: draw i = 0 over i = 1 to show that they coincide
+};
+
+// Every figure of the paper, in paper order: fig5, fig8, fig9, fig10..fig13, fig14a, fig14b, fig15..fig18.
+const std::vector<FigureSpec>& paper_figures();
+
+// nullptr if unknown.
+const FigureSpec* find_figure(const std::string& id);
+
+// Comma-separated list of the valid ids (for error messages).
+std::string figure_ids();
+
+// The dashboard of one parameter set: top view, force over a period, r_x(zeta) with the rigid curve.
+FigureSpec scene_figure(const Params& p);
+
+} // namespace fv

@@ -1,0 +1,267 @@
+#include "fv/figure_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace fv {
+namespace {
+
+std::string fmt(const char* f, double a) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, f, a);
+    return buf;
+}
+
+std::string curve_label(const Curve& c, bool vary_theta) {
+    if (c.model == Model::rigid) return vary_theta ? "θ = " + fmt("%g", c.theta * 180 / kPi) + "°" : "rigid";
+    return "r_{disp} = " + fmt("%g", c.rdisp);
+}
+
+const char* kZetaTitle = "velocity ratio ζ = v_{b}/v_{v}";
+const char* kRxTitle = "friction ratio r_{x}";
+
+// r_x(zeta) curves; one table row per point.
+PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int threads) {
+    PanelData panel;
+    panel.x_title = kZetaTitle;
+    panel.y_title = kRxTitle;
+    panel.x_min = std::min(0.0, spec.zeta_from);
+    panel.x_max = spec.zeta_to;
+    panel.y_min = 0;
+    panel.y_max = 1.05;
+    const auto zetas = linspace(spec.zeta_from, spec.zeta_to, spec.zeta_count);
+    bool all_rigid = true;
+    for (const auto& c : spec.curves) all_rigid = all_rigid && c.model == Model::rigid;
+    // One flat list of points over all curves keeps both cores busy even when one curve is slow.
+    std::vector<SweepPoint> pts;
+    for (const auto& c : spec.curves)
+        for (double z : zetas) {
+            SweepPoint sp;
+            sp.model = c.model;
+            const double nan = std::nan("");
+            sp.params = {z, c.theta, c.model == Model::rigid ? nan : c.rdisp,
+                         c.model == Model::rigid ? nan : c.i};
+            pts.push_back(sp);
+        }
+    parallel_for(
+        static_cast<int>(pts.size()),
+        [&](int k) {
+            auto& sp = pts[static_cast<std::size_t>(k)];
+            sp.result = steady_ratio(sp.model, sp.params);
+        },
+        threads);
+    std::size_t k = 0;
+    for (std::size_t ci = 0; ci < spec.curves.size(); ++ci) {
+        const Curve& c = spec.curves[ci];
+        SeriesData s;
+        s.label = curve_label(c, all_rigid);
+        if (c.model == Model::rigid && !all_rigid) {
+            s.ink = Ink::rigid;
+            s.dash = Dash::dashed;
+        }
+        for (std::size_t j = 0; j < zetas.size(); ++j, ++k) {
+            s.x.push_back(pts[k].params.zeta);
+            s.y.push_back(pts[k].result.rx);
+        }
+        panel.series.push_back(std::move(s));
+    }
+    rows = std::move(pts);
+    return panel;
+}
+
+SteadyResult steady_trace(const Params& p, int steps) {
+    SteadyOptions o;
+    o.record_period = true;
+    o.steps_per_period = steps;
+    return dahl_steady(p, o);
+}
+
+// P and T over one steady period with the spring drawn at 24 regular instants.
+PanelData top_view(const Params& p, const std::vector<Sample>& period, const std::vector<Sample>* other) {
+    PanelData panel;
+    panel.equal_aspect = true;
+    panel.x_title = "x / x_{v}";
+    panel.y_title = "y / x_{v}";
+    SeriesData P{"body point P", {}, {}, Ink::body, Dash::solid, Mark::none, 2.5f};
+    SeriesData T{"asperity tip T", {}, {}, Ink::tip, Dash::solid, Mark::none, 2.5f};
+    // Start the paths at the period's start (the sample before the first of Eq. (30)'s k = 1..n).
+    const Sample& last = period.back();
+    const Vec2 shift(-2 * kPi * p.zeta, 0);
+    P.x.push_back(last.P.x() + shift.x());
+    P.y.push_back(last.P.y());
+    T.x.push_back(last.T.x() + shift.x());
+    T.y.push_back(last.T.y());
+    for (const auto& s : period) {
+        P.x.push_back(s.P.x());
+        P.y.push_back(s.P.y());
+        T.x.push_back(s.T.x());
+        T.y.push_back(s.T.y());
+    }
+    const std::size_t n = period.size();
+    for (int j = 0; j < 24; ++j) {
+        const Sample& s = period[(n * static_cast<std::size_t>(j)) / 24 + n / 48];
+        panel.segments.push_back({s.P, s.T, Ink::spring, Dash::solid, 1.2f, ""});
+    }
+    panel.series.push_back(std::move(P));
+    panel.series.push_back(std::move(T));
+    if (other) {
+        SeriesData T0{"tip T, i = 0", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.5f};
+        for (const auto& s : *other) {
+            T0.x.push_back(s.T.x());
+            T0.y.push_back(s.T.y());
+        }
+        panel.series.push_back(std::move(T0));
+    }
+    panel.points.push_back({last.P + shift, Ink::body, Mark::circle, "P", 9});
+    panel.points.push_back({last.T + shift, Ink::tip, Mark::square, "T", 9});
+    return panel;
+}
+
+PanelData force_panel(const std::vector<Sample>& period) {
+    PanelData panel;
+    panel.x_title = "time τ = ωt over one period";
+    panel.y_title = "friction force F / F_{c}";
+    panel.y_min = -1.15;
+    panel.y_max = 1.15;
+    panel.x_min = 0;
+    panel.x_max = 2 * kPi;
+    SeriesData fx{"F_{x}", {}, {}, Ink::force, Dash::solid, Mark::none, 2};
+    SeriesData fy{"F_{y}", {}, {}, Ink::pull, Dash::dashed, Mark::none, 2};
+    SeriesData fm{"|F|", {}, {}, Ink::magnitude, Dash::solid, Mark::none, 2.5f};
+    const double t0 = period.front().tau - (period[1].tau - period[0].tau);
+    for (const auto& s : period) {
+        const double t = s.tau - t0;
+        fx.x.push_back(t);
+        fx.y.push_back(s.F.x());
+        fy.x.push_back(t);
+        fy.y.push_back(s.F.y());
+        fm.x.push_back(t);
+        fm.y.push_back(s.F.norm());
+    }
+    panel.series = {std::move(fm), std::move(fx), std::move(fy)};
+    return panel;
+}
+
+// Fig. 8: choose the step of a coarse steady period where the pull line turns the spring the most, so
+// that P(t), P(t+dt), T(t), T(t+dt) are all distinct on the page.
+PanelData step_panel(const Params& p, int n, std::vector<Sample>& rows) {
+    SteadyOptions o;
+    o.steps_per_period = n;
+    const SteadyResult res = dahl_steady(p, o);
+    PaperStepper st(p, n,
+                    res.period.empty() ? Vec2::Zero() : Vec2(res.period.back().P - res.period.back().T));
+    int best = 0;
+    double best_turn = -1;
+    {
+        PaperStepper probe = st;
+        for (int k = 0; k < n; ++k) {
+            const Vec2 lag = probe.lag();
+            probe.step();
+            const Vec2 nl = probe.lag();
+            const double turn =
+                std::abs(lag.x() * nl.y() - lag.y() * nl.x()) / (lag.norm() * nl.norm() + 1e-300);
+            if (turn > best_turn) {
+                best_turn = turn;
+                best = k;
+            }
+        }
+    }
+    for (int k = 0; k < best; ++k) st.step();
+    const Sample a = st.sample();
+    st.step();
+    const Sample b = st.sample();
+    rows = {a, b};
+
+    PanelData panel;
+    panel.equal_aspect = true;
+    panel.x_title = "x / x_{v}";
+    panel.y_title = "y / x_{v}";
+    // P's path around the step, finely resolved.
+    SeriesData path{"path of P", {}, {}, Ink::body, Dash::solid, Mark::none, 1.5f};
+    for (int j = -40; j <= 60; ++j) {
+        const Vec2 q = body_point(p, a.tau + j * (b.tau - a.tau) / 20);
+        path.x.push_back(q.x());
+        path.y.push_back(q.y());
+    }
+    panel.series.push_back(std::move(path));
+    panel.segments.push_back({a.P, a.T, Ink::spring, Dash::solid, 2.0f, "z(t)"});
+    panel.segments.push_back({b.P, a.T, Ink::pull, Dash::dashed, 2.0f, "pull line"});
+    panel.segments.push_back({b.P, b.T, Ink::tip, Dash::solid, 2.0f, "z(t+Δt)"});
+    panel.points.push_back({a.P, Ink::body, Mark::circle, "P(t)", 10});
+    panel.points.push_back({b.P, Ink::body, Mark::circle, "P(t+Δt)", 10});
+    panel.points.push_back({a.T, Ink::tip, Mark::square, "T(t)", 10});
+    panel.points.push_back({b.T, Ink::tip, Mark::square, "T(t+Δt)", 10});
+    panel.circles.push_back({b.P, p.zss(), Ink::spring, Dash::dotted});
+    // Frame the step: the four points with a margin of half their spread.
+    double x0 = a.P.x(), x1 = x0, y0 = a.P.y(), y1 = y0;
+    for (const Vec2& q : {a.P, b.P, a.T, b.T}) {
+        x0 = std::min(x0, q.x());
+        x1 = std::max(x1, q.x());
+        y0 = std::min(y0, q.y());
+        y1 = std::max(y1, q.y());
+    }
+    const double m = 0.35 * std::max(x1 - x0, y1 - y0);
+    panel.x_min = x0 - m;
+    panel.x_max = x1 + m;
+    panel.y_min = y0 - m;
+    panel.y_max = y1 + m;
+    return panel;
+}
+
+} // namespace
+
+FigureData compute_figure(const FigureSpec& spec, int threads) {
+    FigureData fig;
+    fig.id = spec.id;
+    fig.title = spec.title;
+    const Params& p = spec.params;
+    switch (spec.kind) {
+    case FigureKind::ratio_curves: {
+        TableData t;
+        fig.panels.push_back(ratio_panel(spec, t.ratios, threads));
+        fig.tables.push_back(std::move(t));
+        break;
+    }
+    case FigureKind::step_view: {
+        TableData t;
+        fig.panels.push_back(step_panel(p, spec.steps_per_period, t.trace));
+        fig.tables.push_back(std::move(t));
+        break;
+    }
+    case FigureKind::period_view:
+    case FigureKind::period_force: {
+        const SteadyResult r = steady_trace(p, spec.steps_per_period);
+        if (spec.kind == FigureKind::period_force) {
+            fig.panels.push_back(force_panel(r.period));
+        } else if (spec.overlay_other_i) {
+            Params q = p;
+            q.i = p.i == 0 ? 1 : 0;
+            const SteadyResult r2 = steady_trace(q, spec.steps_per_period);
+            fig.panels.push_back(top_view(p, r.period, &r2.period));
+        } else {
+            fig.panels.push_back(top_view(p, r.period, nullptr));
+        }
+        fig.tables.push_back({"", {}, r.period});
+        break;
+    }
+    case FigureKind::scene: {
+        const SteadyResult r = steady_trace(p, spec.steps_per_period);
+        PanelData view = top_view(p, r.period, nullptr);
+        view.title = "top view";
+        PanelData force = force_panel(r.period);
+        force.title = "force over one period";
+        TableData ratios{"-ratio", {}, {}};
+        PanelData curve = ratio_panel(spec, ratios.ratios, threads);
+        curve.title = "r_{x} = " + fmt("%.4f", r.rx) + ", r_{y} = " + fmt("%.4f", r.ry);
+        curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
+        fig.panels = {std::move(view), std::move(force), std::move(curve)};
+        fig.tables.push_back({"", {}, r.period});
+        fig.tables.push_back(std::move(ratios));
+        break;
+    }
+    }
+    return fig;
+}
+
+} // namespace fv

@@ -1,0 +1,86 @@
+// The figure definitions (data) and the numbers computed for them.
+#include "fv/figure_data.hpp"
+#include "fv/figures.hpp"
+#include "fv/rigid.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+
+TEST_CASE("Every paper figure is defined once, with a unique id", "[figures]") {
+    std::set<std::string> ids;
+    for (const auto& f : fv::paper_figures()) {
+        CHECK(ids.insert(f.id).second);
+        CHECK(fv::find_figure(f.id) == &f);
+        CHECK_FALSE(f.title.empty());
+        CHECK_FALSE(f.caption.empty());
+    }
+    for (const char* id : {"fig5", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13", "fig14a", "fig14b",
+                           "fig15", "fig16", "fig17", "fig18"})
+        CHECK(ids.count(id) == 1);
+    CHECK(fv::find_figure("fig99") == nullptr);
+}
+
+TEST_CASE("Figs. 10 and 12: the rigid reference curves are the closed forms (11) and (10)", "[figures]") {
+    for (const char* id : {"fig10", "fig12"}) {
+        const auto d = fv::compute_figure(*fv::find_figure(id));
+        const auto& rigid = d.panels.at(0).series.back();
+        REQUIRE(rigid.label == "rigid");
+        for (std::size_t k = 0; k < rigid.x.size(); ++k) {
+            const double z = rigid.x[k];
+            const double exact =
+                std::string(id) == "fig10" ? fv::rigid_rx_perpendicular(z) : fv::rigid_rx_parallel(z);
+            REQUIRE(std::abs(rigid.y[k] - exact) < 1e-9);
+        }
+        // Larger r_disp lies closer to the rigid curve (the paper's reading of Figs. 10-13), at zeta = 0.5.
+        const auto& series = d.panels[0].series;
+        const std::size_t k = static_cast<std::size_t>(std::lround((0.5 - 0.02) / (3 - 0.02) * 59));
+        double prev = 1e9;
+        for (std::size_t s = 0; s + 1 < series.size(); ++s) {
+            const double gap = std::abs(series[s].y[k] - rigid.y[k]);
+            CAPTURE(id, s, gap);
+            CHECK(gap < prev);
+            prev = gap;
+        }
+    }
+}
+
+TEST_CASE("Figs. 15 and 18: |F| dips below F_c at zeta = 0.15 and stays at F_c at zeta = 0.5", "[figures]") {
+    const auto f15 = fv::compute_figure(*fv::find_figure("fig15"));
+    const auto f18 = fv::compute_figure(*fv::find_figure("fig18"));
+    const auto& m15 = f15.panels[0].series[0];
+    const auto& m18 = f18.panels[0].series[0];
+    REQUIRE(m15.label == "|F|");
+    double min15 = 2, min18 = 2, max_all = 0;
+    for (double v : m15.y) min15 = std::min(min15, v), max_all = std::max(max_all, v);
+    for (double v : m18.y) min18 = std::min(min18, v), max_all = std::max(max_all, v);
+    CHECK(min15 < 0.9);
+    CHECK(min18 > 0.999);
+    CHECK(max_all <= 1 + 1e-12);
+}
+
+TEST_CASE("Fig. 8: the drawn step obeys Eqs. (21)-(22)", "[figures]") {
+    const auto d = fv::compute_figure(*fv::find_figure("fig8"));
+    const auto& rows = d.tables.at(0).trace;
+    REQUIRE(rows.size() == 2);
+    const fv::Vec2 Tt = rows[0].T, Pn = rows[1].P, Tn = rows[1].T;
+    // T(t+dt) lies on the segment from T(t) to P(t+dt), at distance z(t+dt) from P(t+dt).
+    const fv::Vec2 u = Pn - Tt, w = Tn - Tt;
+    CHECK(std::abs(u.x() * w.y() - u.y() * w.x()) < 1e-12);
+    CHECK(w.dot(u) >= 0);
+    CHECK((Pn - Tn).norm() == Approx(rows[1].z).epsilon(1e-12));
+    CHECK(rows[1].z <= 0.5 + 1e-12);
+    // The four points are distinct enough to be seen.
+    CHECK((rows[0].P - Pn).norm() > 0.05);
+    CHECK((Tt - Tn).norm() > 0.01);
+}
+
+TEST_CASE("A scene has a top view, a force plot and a ratio plot marking the current point", "[figures]") {
+    const auto d = fv::compute_figure(fv::scene_figure({0.4, 1.0, 3, 1}));
+    REQUIRE(d.panels.size() == 3);
+    CHECK(d.panels[0].equal_aspect);
+    REQUIRE(d.panels[2].points.size() == 1);
+    CHECK(d.panels[2].points[0].at.x() == 0.4);
+    CHECK(d.tables.size() == 2);
+}
