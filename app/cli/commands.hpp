@@ -15,5 +15,6 @@ struct Command {
 Command add_ratio_command(CLI::App& root);
 Command add_sweep_command(CLI::App& root);
 Command add_trace_command(CLI::App& root);
+Command add_render_command(CLI::App& root);
 
 } // namespace fv::cli

@@ -1,0 +1,142 @@
+// frictionviz render: every figure of the paper (or a scene of any parameters) as PNG + CSV, headless.
+#include "commands.hpp"
+#include "errors.hpp"
+#include "model_options.hpp"
+#include "output.hpp"
+
+#include "figures/render_session.hpp"
+
+#include "fv/atomic_file.hpp"
+#include "fv/figure_data.hpp"
+#include "fv/figures.hpp"
+#include "fv/gfx/png.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <sstream>
+
+namespace fv::cli {
+namespace {
+
+struct Size {
+    int w = 1280, h = 800;
+};
+
+constexpr int kMinW = 320, kMinH = 240, kMaxW = 7680, kMaxH = 4320;
+
+CLI::Validator size_spec() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            std::ostringstream allowed;
+            allowed << "allowed: WxH with W in [" << kMinW << ", " << kMaxW << "] and H in [" << kMinH << ", "
+                    << kMaxH << "]";
+            if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+                return "'" + s + "' is not a size; " + allowed.str();
+            if (w < kMinW || w > kMaxW || h < kMinH || h > kMaxH) return "'" + s + "' is out of range; " + allowed.str();
+            return {};
+        },
+        "WxH");
+}
+
+std::string csv_of(const TableData& t) {
+    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
+    SweepPoint row;
+    row.result.period = t.trace;
+    return trace_table(row, Format::csv);
+}
+
+} // namespace
+
+Command add_render_command(CLI::App& root) {
+    struct Args {
+        std::string figure;
+        std::string out;
+        std::string size = "1280x800";
+        ModelArgs model;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* cmd = root.add_subcommand(
+        "render", "render figures headless (OSMesa) as PNG, with the data behind each one as CSV beside it");
+    cmd->add_option("--figure", a->figure,
+                    "figure id: all, scene, or one of " + figure_ids() + " (comma-separate several)")
+        ->required();
+    cmd->add_option("--out", a->out, "output directory (must exist)")->required();
+    cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
+    // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
+    cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
+    cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")->check(number_in(kThetaRange));
+    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene: displacement ratio")->check(number_in(kRdispRange));
+    a->model.i_opt = cmd->add_option("--i", a->model.i, "scene: Dahl exponent")->check(number_in(kIRange));
+    return {cmd, [a, cmd] {
+                // Resolve the list of figures first: an unknown id lists the valid ones.
+                std::vector<FigureSpec> specs;
+                std::stringstream ids(a->figure);
+                std::string id;
+                while (std::getline(ids, id, ',')) {
+                    if (id == "all") {
+                        for (const auto& f : paper_figures()) specs.push_back(f);
+                    } else if (id == "scene") {
+                        for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i"})
+                            if (cmd->get_option(flag)->count() == 0)
+                                throw UsageError(std::string("--figure scene needs ") + flag +
+                                                 " (the same flags as `ratio`)");
+                        specs.push_back(scene_figure(to_params(a->model)));
+                    } else if (const FigureSpec* f = find_figure(id)) {
+                        specs.push_back(*f);
+                    } else {
+                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: all, scene, " + figure_ids());
+                    }
+                }
+                if (specs.empty()) throw UsageError("--figure: no figure named; allowed: all, scene, " + figure_ids());
+                std::string dir = a->out;
+                while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+                check_out(dir + "/" + specs.front().id + ".png");
+                Size sz;
+                std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
+
+                gfx::ContextOptions co;
+                co.backend = gfx::Backend::Headless;
+                co.width = sz.w;
+                co.height = sz.h;
+                std::unique_ptr<app::RenderSession> session;
+                try {
+                    session = std::make_unique<app::RenderSession>(co);
+                } catch (const std::exception& e) {
+                    throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
+                }
+                // Compute and draw one figure at a time (GL is single-threaded); PNG encoding, the slow
+                // part, runs on all cores at the end.
+                struct Output {
+                    std::string id;
+                    gfx::Image image;
+                    std::vector<std::pair<std::string, std::string>> csv; // file, content
+                };
+                std::vector<Output> outs;
+                for (const FigureSpec& spec : specs) {
+                    const FigureData data = compute_figure(spec);
+                    Output o{spec.id, session->render_figure(data), {}};
+                    for (const TableData& t : data.tables) o.csv.push_back({dir + "/" + spec.id + t.suffix + ".csv", csv_of(t)});
+                    outs.push_back(std::move(o));
+                }
+                std::vector<std::string> errors(outs.size());
+                parallel_for(static_cast<int>(outs.size()), [&](int k) {
+                    const Output& o = outs[static_cast<std::size_t>(k)];
+                    const auto png = gfx::encode_png(o.image);
+                    std::string err = write_file_atomic(
+                        dir + "/" + o.id + ".png",
+                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+                    for (const auto& [file, content] : o.csv)
+                        if (err.empty()) err = write_file_atomic(file, content);
+                    errors[static_cast<std::size_t>(k)] = err;
+                });
+                for (std::size_t k = 0; k < outs.size(); ++k) {
+                    if (!errors[k].empty()) throw RuntimeFailure(errors[k]);
+                    std::printf("wrote %s/%s.png (%dx%d) and its CSV\n", dir.c_str(), outs[k].id.c_str(),
+                                outs[k].image.width, outs[k].image.height);
+                }
+            }};
+}
+
+} // namespace fv::cli

@@ -1,0 +1,135 @@
+#include "figure_painter.hpp"
+
+#include "fv/gfx/plot.hpp"
+
+#include <cmath>
+
+namespace fv::app {
+namespace {
+
+gfx::LineStyle line_style(Dash d) {
+    switch (d) {
+    case Dash::dashed: return gfx::LineStyle::Dashed;
+    case Dash::dotted: return gfx::LineStyle::Dotted;
+    default: return gfx::LineStyle::Solid;
+    }
+}
+
+gfx::MarkerShape marker_shape(Mark m) {
+    switch (m) {
+    case Mark::circle: return gfx::MarkerShape::Circle;
+    case Mark::square: return gfx::MarkerShape::Square;
+    case Mark::triangle: return gfx::MarkerShape::Triangle;
+    case Mark::diamond: return gfx::MarkerShape::Diamond;
+    case Mark::cross: return gfx::MarkerShape::Cross;
+    default: return gfx::MarkerShape::None;
+    }
+}
+
+gfx::Vec2 to_px(const gfx::PlotTransform& tf, const fv::Vec2& p) { return tf.to_pixel(p.x(), p.y()); }
+
+// Labels go on the side of a point that faces away from the middle of all marked points, so that labels
+// of nearby points (P(t), P(t+dt), ...) do not overlap each other or the lines between them.
+void label_point(gfx::Canvas& c, gfx::Vec2 at, gfx::Vec2 centre, const std::string& text, float size) {
+    if (text.empty()) return;
+    gfx::TextStyle ts;
+    ts.size = size;
+    const float dx = at.x - centre.x, dy = at.y - centre.y;
+    ts.halign = dx >= 0 ? gfx::HAlign::Left : gfx::HAlign::Right;
+    ts.valign = dy >= 0 ? gfx::VAlign::Top : gfx::VAlign::Bottom;
+    c.text({at.x + (dx >= 0 ? 9.f : -9.f), at.y + (dy >= 0 ? 7.f : -7.f)}, text, ts);
+}
+
+} // namespace
+
+gfx::Color ink_color(Ink ink, std::size_t series_index) {
+    switch (ink) {
+    case Ink::body: return gfx::palette(0);                     // blue
+    case Ink::tip: return gfx::palette(1);                      // vermillion
+    case Ink::pull: return gfx::palette(2);                     // green
+    case Ink::force: return gfx::palette(0);
+    case Ink::magnitude: return gfx::colors::black;
+    case Ink::rigid: return gfx::colors::black;
+    case Ink::spring: return gfx::Color::hex(0x8A8A8A);
+    case Ink::black: return gfx::colors::black;
+    case Ink::automatic: break;
+    }
+    return gfx::palette(series_index);
+}
+
+void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds) {
+    gfx::Plot plot(bounds);
+    plot.title = panel.title;
+    plot.x_axis.title = panel.x_title;
+    plot.y_axis.title = panel.y_title;
+    plot.x_axis.min = panel.x_min;
+    plot.x_axis.max = panel.x_max;
+    plot.y_axis.min = panel.y_min;
+    plot.y_axis.max = panel.y_max;
+    plot.equal_aspect = panel.equal_aspect;
+    for (std::size_t k = 0; k < panel.series.size(); ++k) {
+        const SeriesData& s = panel.series[k];
+        gfx::SeriesStyle st;
+        st.color = ink_color(s.ink, k);
+        st.line_width = s.width;
+        st.line = line_style(s.dash);
+        st.marker = marker_shape(s.mark);
+        plot.add_series(s.label, s.x, s.y, st);
+    }
+    const PanelData* pd = &panel;
+    plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
+        for (const CircleData& ci : pd->circles)
+            c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
+                     {ink_color(ci.ink, 0), 1.2f, line_style(ci.dash)});
+        gfx::Vec2 centre{0, 0};
+        for (const PointData& p : pd->points) centre = centre + to_px(tf, p.at) * (1.0f / pd->points.size());
+        for (const SegmentData& s : pd->segments) {
+            const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
+            c.line(a, b, {ink_color(s.ink, 0), s.width, line_style(s.dash)});
+            if (!s.label.empty()) {
+                // Beside the middle of the segment, on its outer side.
+                const gfx::Vec2 m = (a + b) * 0.5f;
+                float nx = -(b.y - a.y), ny = b.x - a.x;
+                const float len = std::max(1e-3f, std::hypot(nx, ny));
+                nx /= len, ny /= len;
+                if (nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0) nx = -nx, ny = -ny;
+                gfx::TextStyle ts;
+                ts.size = 13;
+                ts.color = ink_color(s.ink, 0);
+                ts.halign = nx >= 0 ? gfx::HAlign::Left : gfx::HAlign::Right;
+                ts.valign = gfx::VAlign::Middle;
+                c.text({m.x + nx * 10, m.y + ny * 10}, s.label, ts);
+            }
+        }
+        for (const PointData& p : pd->points) {
+            const gfx::Vec2 at = to_px(tf, p.at);
+            const gfx::Color col = ink_color(p.ink, 0);
+            c.marker(at, {marker_shape(p.mark), p.size, col, gfx::colors::white, 1.5f});
+            label_point(c, at, centre, p.label, 15);
+        }
+    });
+    plot.draw(canvas);
+}
+
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
+    gfx::TextStyle ts;
+    ts.size = 22;
+    ts.halign = gfx::HAlign::Center;
+    ts.valign = gfx::VAlign::Top;
+    canvas.text({(bounds.x0 + bounds.x1) / 2, bounds.y0 + 12}, fig.title, ts);
+    const gfx::Rect body{bounds.x0 + 8, bounds.y0 + 48, bounds.x1 - 8, bounds.y1 - 8};
+    if (fig.panels.size() == 3) {
+        const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
+        paint_panel(canvas, fig.panels[0], {body.x0, body.y0, split - 6, body.y1});
+        paint_panel(canvas, fig.panels[1], {split + 6, body.y0, body.x1, mid - 6});
+        paint_panel(canvas, fig.panels[2], {split + 6, mid + 6, body.x1, body.y1});
+        return;
+    }
+    const float w = body.width() / static_cast<float>(fig.panels.size());
+    for (std::size_t k = 0; k < fig.panels.size(); ++k) {
+        const float x0 = body.x0 + w * static_cast<float>(k);
+        paint_panel(canvas, fig.panels[k], {x0, body.y0, x0 + w, body.y1});
+    }
+}
+
+} // namespace fv::app

@@ -1,0 +1,18 @@
+// Draws a computed figure (core/figure_data) onto a canvas: one code path for headless PNGs and the window.
+#pragma once
+
+#include "fv/figure_data.hpp"
+#include "fv/gfx/canvas.hpp"
+
+namespace fv::app {
+
+// Lays the panels out inside `bounds` under the figure title: one panel fills it; three panels (the scene)
+// put the top view on the left and the two plots stacked on the right.
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds);
+
+// One panel inside `bounds` (used by the app's own layouts too).
+void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds);
+
+gfx::Color ink_color(Ink ink, std::size_t series_index);
+
+} // namespace fv::app

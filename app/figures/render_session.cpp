@@ -1,0 +1,35 @@
+#include "render_session.hpp"
+
+#include "figure_painter.hpp"
+
+namespace fv::app {
+namespace {
+
+gfx::FontSetOptions font_options(float ratio) {
+    gfx::FontSetOptions o;
+    o.pixel_ratio = ratio;
+    return o;
+}
+
+} // namespace
+
+RenderSession::RenderSession(const gfx::ContextOptions& options)
+    : ctx_(gfx::create_context(options)), fonts_(font_options(ctx_->pixel_ratio())), imgui_(ctx_->gl()),
+      canvas_((imgui_.upload_font_atlas(fonts_.atlas()), ctx_->gl()), fonts_, imgui_) {}
+
+gfx::Image RenderSession::render_figure(const FigureData& fig) {
+    const float ratio = ctx_->pixel_ratio();
+    const gfx::Size fb = ctx_->framebuffer_size();
+    const gfx::Vec2 logical{static_cast<float>(fb.width) / ratio, static_cast<float>(fb.height) / ratio};
+    gfx::Image img;
+    for (int frame = 0; frame < 2; ++frame) {
+        canvas_.begin(logical, ratio, gfx::colors::white);
+        paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
+        canvas_.end();
+        if (frame == 1) img = ctx_->read_pixels();
+        ctx_->present();
+    }
+    return img;
+}
+
+} // namespace fv::app
