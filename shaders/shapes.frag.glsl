@@ -1,6 +1,13 @@
 #version 330 core
 // Signed-distance evaluation of the canvas primitives. Distances are in logical pixels; the
 // coverage ramp is one framebuffer pixel wide (u_ratio = framebuffer pixels per logical pixel).
+// KIND: 1 dashed segment, 2 marker, 3 triangle, 4 rectangle, 5 solid segment.
+// The program is compiled once per primitive kind with "#define KIND n" inserted after #version:
+// llvmpipe pays for every branch of a divergent if, so a single uber-shader made a full-screen
+// rectangle cost 20+ ms.
+#ifndef KIND
+#define KIND 1
+#endif
 flat in vec4 v_a;
 flat in vec4 v_b;
 flat in vec4 v_c;
@@ -10,7 +17,6 @@ uniform float u_fb_height; // framebuffer height, to turn gl_FragCoord into a to
 uniform float u_ratio;
 out vec4 o_color;
 
-const float KIND_SEGMENT = 1.0, KIND_MARKER = 2.0, KIND_TRIANGLE = 3.0, KIND_RECT = 4.0;
 const float BIG = 1e9;
 
 float coverage(float d) { return clamp(0.5 - d * u_ratio, 0.0, 1.0); }
@@ -84,12 +90,18 @@ float segment_alpha(vec2 p) {
     float reach = hw + 1.0 / u_ratio + 0.5; // beyond this nothing of a segment is visible
     float g_self = seg_dist(p, p0, p1);
     if (g_self > reach) discard;
-    if (has_next && joint_side(p, p0, p1, next) > 0.0 && seg_dist(p, p1, next) <= reach) discard;
-    if (has_prev && joint_side(p, prev, p0, p1) <= 0.0 && seg_dist(p, prev, p0) <= reach) discard;
-    // The owner shades the union of its own and its neighbours' dashes.
+    float g_next = has_next ? seg_dist(p, p1, next) : BIG;
+    float g_prev = has_prev ? seg_dist(p, prev, p0) : BIG;
+    if (g_next <= reach && joint_side(p, p0, p1, next) > 0.0) discard;
+    if (g_prev <= reach && joint_side(p, prev, p0, p1) <= 0.0) discard;
+    // The owner shades the union of its own and its neighbours' (dashed) cores.
+#if KIND == 5
+    float d = min(g_self, min(g_prev, g_next));
+#else
     float d = dash_dist(p, p0, p1, s0, on, period);
     if (has_prev) d = min(d, dash_dist(p, prev, p0, s0 - length(p0 - prev), on, period));
     if (has_next) d = min(d, dash_dist(p, p1, next, s0 + length(p1 - p0), on, period));
+#endif
     return coverage(d - hw);
 }
 
@@ -118,19 +130,17 @@ float marker_alpha(vec2 p) {
 
 void main() {
     vec2 p = vec2(gl_FragCoord.x, u_fb_height - gl_FragCoord.y) / u_ratio;
-    float kind = v_d.x;
-    float alpha;
-    if (kind < KIND_SEGMENT + 0.5) {
-        alpha = segment_alpha(p);
-    } else if (kind < KIND_MARKER + 0.5) {
-        alpha = marker_alpha(p);
-    } else if (kind < KIND_TRIANGLE + 0.5) {
-        alpha = coverage(sd_triangle(p, v_a.xy, v_a.zw, v_b.xy));
-    } else {
-        vec2 c = 0.5 * (v_a.xy + v_a.zw), h = 0.5 * (v_a.zw - v_a.xy);
-        float d = sd_box(p - c, h);
-        alpha = v_b.y > 0.5 ? coverage(d) : coverage(abs(d) - v_b.x);
-    }
+#if KIND == 1 || KIND == 5 // dashed / solid segment
+    float alpha = segment_alpha(p);
+#elif KIND == 2
+    float alpha = marker_alpha(p);
+#elif KIND == 3
+    float alpha = coverage(sd_triangle(p, v_a.xy, v_a.zw, v_b.xy));
+#else
+    vec2 c = 0.5 * (v_a.xy + v_a.zw), h = 0.5 * (v_a.zw - v_a.xy);
+    float d = sd_box(p - c, h);
+    float alpha = v_b.y > 0.5 ? coverage(d) : coverage(abs(d) - v_b.x);
+#endif
     if (alpha <= 0.0) discard;
     o_color = vec4(v_col.rgb, v_col.a * alpha);
 }

@@ -28,6 +28,9 @@ namespace {
 // which is what lets text sit on top of a legend box that sits on top of data lines.
 struct Batch {
     bool text = false;
+    bool clear = false; // Opaque pixel-aligned rectangle done as a scissored glClear (llvmpipe: ~free).
+    Color clear_color;
+    detail::ShapeKind kind = detail::kSegment; // Shapes: one program per kind.
     Rect clip;
     std::size_t first = 0, count = 0; // Shapes: index range.
     std::size_t list = 0;             // Text: index into the draw-list pool.
@@ -80,11 +83,13 @@ struct Canvas::Impl {
 
     Impl(const GlApi& g, ImGuiRenderer& r) : gl(g), imgui(r), shapes(g) {}
 
-    Batch& batch_for(bool text, ImTextureID tex) {
+    Batch& batch_for(bool text, detail::ShapeKind kind, ImTextureID tex) {
         const Rect& clip = clips.back();
-        if (batches.empty() || batches.back().text != text || !same_rect(batches.back().clip, clip)) {
+        if (batches.empty() || batches.back().clear || batches.back().text != text ||
+            (!text && batches.back().kind != kind) || !same_rect(batches.back().clip, clip)) {
             Batch b;
             b.text = text;
+            b.kind = kind;
             b.clip = clip;
             b.first = indices.size();
             if (text) {
@@ -105,7 +110,7 @@ struct Canvas::Impl {
     void quad(const Vec2 (&q)[4], int kind, const float (&a)[4], const float (&b)[4], const float (&c)[4],
               const float (&d3)[3], Color col) {
         if (!recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
-        Batch& batch = batch_for(false, nullptr);
+        Batch& batch = batch_for(false, static_cast<detail::ShapeKind>(kind), nullptr);
         const auto base = static_cast<std::uint32_t>(verts.size());
         const std::uint32_t packed = col.packed();
         for (const Vec2& p : q) {
@@ -140,8 +145,10 @@ struct Canvas::Impl {
         const Vec2 n{-dir.y, dir.x};
         const Vec2 q[4] = {p0 - dir * e - n * e, p1 + dir * e - n * e, p1 + dir * e + n * e,
                            p0 - dir * e + n * e};
-        quad(q, detail::kSegment, {prev.x, prev.y, p0.x, p0.y}, {p1.x, p1.y, next.x, next.y},
-             {hw, s0, dp.on, dp.period}, {has_prev ? 1.0f : 0.0f, has_next ? 1.0f : 0.0f, 0.0f}, s.color);
+        // Solid lines use a cheaper program without the dash evaluation.
+        quad(q, dp.period > 0 ? detail::kSegment : detail::kSolidSegment, {prev.x, prev.y, p0.x, p0.y},
+             {p1.x, p1.y, next.x, next.y}, {hw, s0, dp.on, dp.period},
+             {has_prev ? 1.0f : 0.0f, has_next ? 1.0f : 0.0f, 0.0f}, s.color);
     }
 
     void polyline_run(const std::vector<Vec2>& pts, const Stroke& s, bool closed) {
@@ -231,7 +238,12 @@ void Canvas::end() {
         if (x1 <= x0 || y1 <= y0) continue;
         gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fh - y1), static_cast<GLsizei>(x1 - x0),
                    static_cast<GLsizei>(y1 - y0));
-        m.shapes.draw(b.first, b.count);
+        if (b.clear) {
+            gl.ClearColor(b.clear_color.r, b.clear_color.g, b.clear_color.b, b.clear_color.a);
+            gl.Clear(GL_COLOR_BUFFER_BIT);
+            continue;
+        }
+        m.shapes.draw(b.kind, b.first, b.count);
     }
     gl.BindVertexArray(0);
     gl.Disable(GL_SCISSOR_TEST);
@@ -256,6 +268,20 @@ const Rect& Canvas::clip() const {
 }
 
 void Canvas::fill_rect(const Rect& r, Color c) {
+    const float ratio = impl_->ratio;
+    auto on_pixel = [ratio](float v) { return std::floor(v * ratio) == v * ratio; };
+    if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
+        // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
+        if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+        const Rect& cur = impl_->clips.back();
+        Batch b;
+        b.clear = true;
+        b.clear_color = c;
+        b.clip = {std::max(r.x0, cur.x0), std::max(r.y0, cur.y0), std::min(r.x1, cur.x1),
+                  std::min(r.y1, cur.y1)};
+        impl_->batches.push_back(b);
+        return;
+    }
     const float e = 2;
     impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
                     {0, 1, 0, 0}, c);
@@ -365,7 +391,7 @@ void Canvas::arrow(Vec2 from, Vec2 to, const ArrowStyle& s) {
 
 void Canvas::text(Vec2 anchor, std::string_view str, const TextStyle& style) {
     if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
-    Batch& b = impl_->batch_for(true, fonts_.atlas().TexID);
+    Batch& b = impl_->batch_for(true, detail::kSegment, fonts_.atlas().TexID);
     emit_text(*impl_->lists[b.list], fonts_, anchor, str, style);
 }
 

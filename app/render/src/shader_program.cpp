@@ -9,8 +9,12 @@
 namespace fv::gfx {
 namespace {
 
-GLuint compile(const GlApi& gl, GLenum type, std::string_view file) {
-    const std::string_view src = shader_source(file);
+GLuint compile(const GlApi& gl, GLenum type, std::string_view file, std::string_view defines) {
+    std::string src(shader_source(file));
+    if (!defines.empty()) {
+        const std::size_t eol = src.find('\n'); // #version must stay the first line.
+        src.insert(eol == std::string::npos ? src.size() : eol + 1, defines);
+    }
     const GLchar* ptr = src.data();
     const GLint len = static_cast<GLint>(src.size());
     GLuint sh = gl.CreateShader(type);
@@ -29,10 +33,11 @@ GLuint compile(const GlApi& gl, GLenum type, std::string_view file) {
 
 } // namespace
 
-ShaderProgram::ShaderProgram(const GlApi& gl, std::string_view vertex_file, std::string_view fragment_file)
+ShaderProgram::ShaderProgram(const GlApi& gl, std::string_view vertex_file, std::string_view fragment_file,
+                             std::string_view fragment_defines)
     : gl_(gl) {
-    GLuint vs = compile(gl, GL_VERTEX_SHADER, vertex_file);
-    GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment_file);
+    GLuint vs = compile(gl, GL_VERTEX_SHADER, vertex_file, {});
+    GLuint fs = compile(gl, GL_FRAGMENT_SHADER, fragment_file, fragment_defines);
     id_ = gl.CreateProgram();
     gl.AttachShader(id_, vs);
     gl.AttachShader(id_, fs);

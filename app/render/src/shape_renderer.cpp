@@ -1,14 +1,19 @@
 #include "shape_renderer.hpp"
 
 #include <cstddef>
+#include <string>
 
 namespace fv::gfx::detail {
 
-ShapeRenderer::ShapeRenderer(const GlApi& gl)
-    : gl_(gl), program_(gl, "shapes.vert.glsl", "shapes.frag.glsl") {
-    loc_size_ = program_.uniform("u_size");
-    loc_fb_height_ = program_.uniform("u_fb_height");
-    loc_ratio_ = program_.uniform("u_ratio");
+ShapeRenderer::ShapeRenderer(const GlApi& gl) : gl_(gl) {
+    for (int k = 0; k < kShapeKindCount; ++k) {
+        Program& p = programs_[k];
+        const std::string defines = "#define KIND " + std::to_string(k + 1) + "\n";
+        p.program = std::make_unique<ShaderProgram>(gl, "shapes.vert.glsl", "shapes.frag.glsl", defines);
+        p.loc_size = p.program->uniform("u_size");
+        p.loc_fb_height = p.program->uniform("u_fb_height");
+        p.loc_ratio = p.program->uniform("u_ratio");
+    }
     gl_.GenVertexArrays(1, &vao_);
     gl_.GenBuffers(1, &vbo_);
     gl_.GenBuffers(1, &ebo_);
@@ -48,10 +53,8 @@ void ShapeRenderer::upload(const std::vector<ShapeVertex>& vertices,
 }
 
 void ShapeRenderer::bind(float logical_w, float logical_h, float pixel_ratio, int fb_height) {
-    gl_.UseProgram(program_.id());
-    gl_.Uniform2f(loc_size_, logical_w, logical_h);
-    gl_.Uniform1f(loc_fb_height_, static_cast<float>(fb_height));
-    gl_.Uniform1f(loc_ratio_, pixel_ratio);
+    size_[0] = logical_w, size_[1] = logical_h, ratio_ = pixel_ratio,
+    fb_height_ = static_cast<float>(fb_height);
     gl_.Enable(GL_BLEND);
     gl_.BlendEquation(GL_FUNC_ADD);
     gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -60,7 +63,12 @@ void ShapeRenderer::bind(float logical_w, float logical_h, float pixel_ratio, in
     gl_.BindVertexArray(vao_);
 }
 
-void ShapeRenderer::draw(std::size_t first, std::size_t count) {
+void ShapeRenderer::draw(ShapeKind kind, std::size_t first, std::size_t count) {
+    const Program& p = programs_[kind - 1];
+    gl_.UseProgram(p.program->id());
+    gl_.Uniform2f(p.loc_size, size_[0], size_[1]);
+    gl_.Uniform1f(p.loc_fb_height, fb_height_);
+    gl_.Uniform1f(p.loc_ratio, ratio_);
     gl_.DrawElements(GL_TRIANGLES, static_cast<GLsizei>(count), GL_UNSIGNED_INT,
                      reinterpret_cast<void*>(first * sizeof(std::uint32_t)));
 }

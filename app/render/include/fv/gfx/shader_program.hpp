@@ -9,7 +9,9 @@ namespace fv::gfx {
 class ShaderProgram {
   public:
     /// Compiles and links; throws std::runtime_error with the GL info log on failure.
-    ShaderProgram(const GlApi& gl, std::string_view vertex_file, std::string_view fragment_file);
+    /// `fragment_defines` (e.g. "#define KIND 2\n") is inserted after the fragment shader's #version line.
+    ShaderProgram(const GlApi& gl, std::string_view vertex_file, std::string_view fragment_file,
+                  std::string_view fragment_defines = {});
     ~ShaderProgram();
     ShaderProgram(const ShaderProgram&) = delete;
     ShaderProgram& operator=(const ShaderProgram&) = delete;
