@@ -1,5 +1,5 @@
 // fvrender_demo: renders the demo page headless (OSMesa) or in a GLFW window and writes a PNG.
-//   fvrender_demo OUT.png [--window] [--imgui] [--compare EXPECTED.png [DIFF.png]]
+//   fvrender_demo OUT.png [--window] [--imgui] [--scale N] [--compare EXPECTED.png [DIFF.png]]
 // --window reads back the window's framebuffer, so under xvfb-run the two backends can be compared.
 #include "demo_page.hpp"
 
@@ -12,8 +12,10 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <fstream>
@@ -63,10 +65,13 @@ void imgui_panel(ImGuiRenderer& r, Vec2 size, float ratio) {
 int run(int argc, char** argv) {
     std::string out, compare_path, diff_path;
     bool window = false, with_imgui = false;
+    int scale = 1; // --scale 2: headless HiDPI check (2x framebuffer, same logical page).
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--window") {
             window = true;
+        } else if (a == "--scale" && i + 1 < argc) {
+            scale = std::max(1, std::atoi(argv[++i]));
         } else if (a == "--imgui") {
             with_imgui = true;
         } else if (a == "--compare" && i + 1 < argc) {
@@ -80,26 +85,28 @@ int run(int argc, char** argv) {
         }
     }
     if (out.empty()) {
-        std::fprintf(
-            stderr,
-            "usage: fvrender_demo OUT.png [--window] [--imgui] [--compare EXPECTED.png [DIFF.png]]\n");
+        std::fprintf(stderr, "usage: fvrender_demo OUT.png [--window] [--imgui] [--scale N] [--compare "
+                             "EXPECTED.png [DIFF.png]]\n");
         return 2;
     }
 
     ContextOptions opt;
     opt.backend = window ? Backend::Window : Backend::Headless;
-    opt.width = 1280, opt.height = 800, opt.title = "fvrender demo";
+    opt.width = 1280 * (window ? 1 : scale), opt.height = 800 * (window ? 1 : scale),
+    opt.title = "fvrender demo";
     auto t0 = Clock::now();
     std::unique_ptr<GpuContext> ctx = create_context(opt);
+    // Logical page is always 1280x800; the ratio maps it to framebuffer pixels.
+    const float ratio = window ? ctx->pixel_ratio() : static_cast<float>(scale);
     FontSetOptions fo;
-    fo.pixel_ratio = ctx->pixel_ratio();
+    fo.pixel_ratio = ratio;
     FontSet fonts(fo);
     ImGuiRenderer imgui(ctx->gl());
     imgui.upload_font_atlas(fonts.atlas());
     Canvas canvas(ctx->gl(), fonts, imgui);
     std::printf("%s\nsetup (context, fonts, shaders): %.1f ms\n", ctx->describe().c_str(), ms_since(t0));
-    const Size ls = ctx->logical_size();
-    const Vec2 logical{static_cast<float>(ls.width), static_cast<float>(ls.height)};
+    const Size fs = ctx->framebuffer_size();
+    const Vec2 logical{static_cast<float>(fs.width) / ratio, static_cast<float>(fs.height) / ratio};
 
     ImGuiContext* imgui_ctx = nullptr;
     if (with_imgui) {
@@ -115,10 +122,10 @@ int run(int argc, char** argv) {
     double render_ms = 0;
     for (int f = 0; f < warmup + timed; ++f) {
         const auto tf = Clock::now();
-        canvas.begin(logical, ctx->pixel_ratio(), colors::white);
+        canvas.begin(logical, ratio, colors::white);
         fv::demo::draw_demo_page(canvas);
         canvas.end();
-        if (with_imgui) imgui_panel(imgui, logical, ctx->pixel_ratio());
+        if (with_imgui) imgui_panel(imgui, logical, ratio);
         ctx->gl().Finish();
         if (f >= warmup) render_ms += ms_since(tf);
         if (f == warmup - 1) first = ctx->read_pixels();
