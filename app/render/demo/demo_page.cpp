@@ -179,4 +179,41 @@ void draw_demo_page(Canvas& c) {
     primitives_strip(c, {8, s.y - 236, s.x - 8, s.y - 8});
 }
 
+void draw_heatmap_page(Canvas& c) {
+    const Vec2 s = c.size();
+    Plot h({0, 0, std::round(s.x * 0.5f), s.y});
+    h.title = "mean friction ratio r_{x}(ζ, θ), rigid";
+    h.x_axis.title = "velocity ratio ζ";
+    h.y_axis.title = "angle θ [°]";
+    HeatMap m;
+    m.nx = 120, m.ny = 90, m.x0 = 0, m.x1 = 3, m.y0 = 0, m.y1 = 90, m.label = "r_{x}";
+    for (int j = 0; j < m.ny; ++j)
+        for (int i = 0; i < m.nx; ++i) {
+            const double z = (i + 0.5) / m.nx * 3, th = (j + 0.5) / m.ny * kPi / 2;
+            m.values.push_back(z / std::sqrt(z * z + std::sin(th) * std::sin(th) + 0.02 * std::cos(th)));
+        }
+    h.set_heatmap(m);
+    std::vector<double> zx, zy;
+    for (int j = 0; j <= 90; ++j) zx.push_back(std::sin(j * kPi / 180)), zy.push_back(j);
+    h.add_series("ζ = sin θ", zx, zy, {Color::hex(0xD55E00), 2.0f, LineStyle::Dashed});
+    h.legend = LegendPosition::TopRight;
+    h.draw(c);
+
+    Plot l({std::round(s.x * 0.5f), 0, s.x, s.y});
+    l.title = "convergence: error vs steps per period";
+    l.x_axis.title = "n";
+    l.y_axis.title = "|r_{x} − r_{x,ref}|";
+    l.x_axis.log = l.y_axis.log = true;
+    std::vector<double> n, e1, e2;
+    for (int k = 0; k <= 20; ++k) {
+        const double nn = 10 * std::pow(10.0, k / 5.0);
+        n.push_back(nn), e1.push_back(0.8 / nn), e2.push_back(3.0 / (nn * nn));
+    }
+    l.add_series("paper scheme ∝ 1/n", n, e1,
+                 {std::nullopt, 2.0f, LineStyle::Solid, true, MarkerShape::Circle});
+    l.add_series("RK4 ∝ 1/n²", n, e2,
+                 {std::nullopt, 2.0f, LineStyle::Dashed, true, MarkerShape::Triangle, 8, false});
+    l.draw(c);
+}
+
 } // namespace fv::demo

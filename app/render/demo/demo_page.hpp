@@ -6,5 +6,7 @@
 namespace fv::demo {
 
 void draw_demo_page(gfx::Canvas& canvas);
+/// Second page: a heat map with colour bar and a log-log plot.
+void draw_heatmap_page(gfx::Canvas& canvas);
 
 } // namespace fv::demo

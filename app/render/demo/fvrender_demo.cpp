@@ -1,5 +1,5 @@
 // fvrender_demo: renders the demo page headless (OSMesa) or in a GLFW window and writes a PNG.
-//   fvrender_demo OUT.png [--window] [--imgui] [--scale N] [--compare EXPECTED.png [DIFF.png]]
+//   fvrender_demo OUT.png [--window] [--imgui] [--page2] [--scale N] [--compare EXPECTED.png [DIFF.png]]
 // --window reads back the window's framebuffer, so under xvfb-run the two backends can be compared.
 #include "demo_page.hpp"
 
@@ -64,7 +64,7 @@ void imgui_panel(ImGuiRenderer& r, Vec2 size, float ratio) {
 
 int run(int argc, char** argv) {
     std::string out, compare_path, diff_path;
-    bool window = false, with_imgui = false;
+    bool window = false, with_imgui = false, page2 = false;
     int scale = 1; // --scale 2: headless HiDPI check (2x framebuffer, same logical page).
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -72,6 +72,8 @@ int run(int argc, char** argv) {
             window = true;
         } else if (a == "--scale" && i + 1 < argc) {
             scale = std::max(1, std::atoi(argv[++i]));
+        } else if (a == "--page2") {
+            page2 = true;
         } else if (a == "--imgui") {
             with_imgui = true;
         } else if (a == "--compare" && i + 1 < argc) {
@@ -85,8 +87,9 @@ int run(int argc, char** argv) {
         }
     }
     if (out.empty()) {
-        std::fprintf(stderr, "usage: fvrender_demo OUT.png [--window] [--imgui] [--scale N] [--compare "
-                             "EXPECTED.png [DIFF.png]]\n");
+        std::fprintf(stderr,
+                     "usage: fvrender_demo OUT.png [--window] [--imgui] [--page2] [--scale N] [--compare "
+                     "EXPECTED.png [DIFF.png]]\n");
         return 2;
     }
 
@@ -123,7 +126,10 @@ int run(int argc, char** argv) {
     for (int f = 0; f < warmup + timed; ++f) {
         const auto tf = Clock::now();
         canvas.begin(logical, ratio, colors::white);
-        fv::demo::draw_demo_page(canvas);
+        if (page2)
+            fv::demo::draw_heatmap_page(canvas);
+        else
+            fv::demo::draw_demo_page(canvas);
         canvas.end();
         if (with_imgui) imgui_panel(imgui, logical, ratio);
         ctx->gl().Finish();

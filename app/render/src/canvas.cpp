@@ -76,12 +76,17 @@ struct Canvas::Impl {
     std::vector<Batch> batches;
     std::vector<std::unique_ptr<ImDrawList>> lists;
     std::size_t lists_used = 0;
+    std::vector<GLuint> textures; // Pool for image(); reused from frame to frame.
+    std::size_t textures_used = 0;
     std::vector<Rect> clips;
     float ratio = 1;
     Color background;
     bool recording = false;
 
     Impl(const GlApi& g, ImGuiRenderer& r) : gl(g), imgui(r), shapes(g) {}
+    ~Impl() {
+        if (!textures.empty()) gl.DeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+    }
 
     Batch& batch_for(bool text, detail::ShapeKind kind, ImTextureID tex) {
         const Rect& clip = clips.back();
@@ -187,6 +192,7 @@ void Canvas::begin(Vec2 logical_size, float pixel_ratio, Color background) {
     m.indices.clear();
     m.batches.clear();
     m.lists_used = 0;
+    m.textures_used = 0;
     m.clips.assign(1, Rect{0, 0, logical_size.x, logical_size.y});
     m.shared.ClipRectFullscreen = ImVec4(0, 0, logical_size.x, logical_size.y);
     m.shared.TexUvWhitePixel = fonts_.atlas().TexUvWhitePixel;
@@ -393,6 +399,35 @@ void Canvas::text(Vec2 anchor, std::string_view str, const TextStyle& style) {
     if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
     Batch& b = impl_->batch_for(true, detail::kSegment, fonts_.atlas().TexID);
     emit_text(*impl_->lists[b.list], fonts_, anchor, str, style);
+}
+
+void Canvas::image(const Rect& dst, const Image& pixels, bool smooth) {
+    Impl& m = *impl_;
+    if (!m.recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+    if (pixels.empty()) return;
+    if (m.textures_used == m.textures.size()) {
+        GLuint t = 0;
+        m.gl.GenTextures(1, &t);
+        m.textures.push_back(t);
+    }
+    const GLuint tex = m.textures[m.textures_used++];
+    const GLint filter = smooth ? GL_LINEAR : GL_NEAREST;
+    m.gl.ActiveTexture(GL_TEXTURE0);
+    m.gl.BindTexture(GL_TEXTURE_2D, tex);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    m.gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    m.gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, pixels.width, pixels.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    pixels.rgba.data());
+    // Images go through the ImGui renderer (texture per command), as textured quads in a draw list.
+    Batch& b = m.batch_for(true, detail::kSegment, fonts_.atlas().TexID);
+    ImDrawList& l = *m.lists[b.list];
+    l.PushTextureID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(tex)));
+    l.PrimReserve(6, 4);
+    l.PrimRectUV(ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0, 0), ImVec2(1, 1), IM_COL32_WHITE);
+    l.PopTextureID();
 }
 
 Vec2 Canvas::measure_text(std::string_view str, float size, bool markup) const {

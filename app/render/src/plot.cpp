@@ -1,5 +1,6 @@
 #include "fv/gfx/plot.hpp"
 
+#include "fv/gfx/colormap.hpp"
 #include "fv/gfx/ticks.hpp"
 
 #include <algorithm>
@@ -170,17 +171,43 @@ MarkerStyle series_marker(const Series& s, Color c) {
 
 } // namespace
 
-static Layout compute_layout(const Plot& plot, const std::vector<Series>& series, const Rect& bounds,
-                             const Canvas& canvas) {
+static constexpr float kColorBarSpace = 90; // Bar, its tick labels and its title, right of the data area.
+
+// Range of an axis when a heat map is present: exactly its extent (series beyond it are clipped).
+static Range with_heatmap(double lo, double hi, const Axis& axis) {
+    Range r{lo, hi};
+    if (axis.min) r.lo = *axis.min;
+    if (axis.max) r.hi = *axis.max;
+    return r;
+}
+
+static std::pair<double, double> value_range(const HeatMap& h) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (double v : h.values)
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+    if (h.vmin) lo = *h.vmin;
+    if (h.vmax) hi = *h.vmax;
+    if (!std::isfinite(lo) || !std::isfinite(hi)) lo = 0, hi = 1;
+    if (hi <= lo) hi = lo + 1;
+    return {lo, hi};
+}
+
+static Layout compute_layout(const Plot& plot, const std::vector<Series>& series,
+                             const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas) {
     Layout L;
-    const Range xr = fit_range(series, true, plot.x_axis), yr = fit_range(series, false, plot.y_axis);
+    Range xr = fit_range(series, true, plot.x_axis), yr = fit_range(series, false, plot.y_axis);
+    if (hm) {
+        xr = with_heatmap(hm->x0, hm->x1, plot.x_axis);
+        yr = with_heatmap(hm->y0, hm->y1, plot.y_axis);
+    }
     PlotTransform& tf = L.tf;
     tf.log_x = plot.x_axis.log, tf.log_y = plot.y_axis.log;
     const float fs = plot.font_size, title_fs = plot.font_size + 1, head_fs = plot.font_size + 3;
     const float top = bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f));
     const float bottom = bounds.y1 - std::round(kTickLength + 4 + fs * 1.2f +
                                                 (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
-    const float right = bounds.x1 - std::round(fs * 1.5f); // Room for the last x tick label's overhang.
+    // Room for the last x tick label's overhang, or for the colour bar.
+    const float right = bounds.x1 - std::round(fs * 1.5f) - (hm ? kColorBarSpace : 0.0f);
     float left_margin = 50;
     // Two passes: the y tick labels' width sets the left margin, which changes the area and,
     // with equal aspect, the ranges and ticks.
@@ -196,20 +223,55 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
         }
         const int nx = std::max(2, static_cast<int>(tf.area.width() / 95));
         const int ny = std::max(2, static_cast<int>(tf.area.height() / 60));
-        L.x_ticks = tf.log_x ? log_ticks(tf.x0, tf.x1, nx) : linear_ticks(tf.x0, tf.x1, nx);
-        L.y_ticks = tf.log_y ? log_ticks(tf.y0, tf.y1, ny) : linear_ticks(tf.y0, tf.y1, ny);
+        // Decade labels are short: log axes can carry about twice as many.
+        L.x_ticks = tf.log_x ? log_ticks(tf.x0, tf.x1, 2 * nx) : linear_ticks(tf.x0, tf.x1, nx);
+        L.y_ticks = tf.log_y ? log_ticks(tf.y0, tf.y1, 2 * ny) : linear_ticks(tf.y0, tf.y1, ny);
         left_margin = std::round(kTickLength + 5 + max_label_width(canvas, L.y_ticks, fs) +
                                  (plot.y_axis.title.empty() ? 8 : title_fs * 1.5f + 6));
     }
     return L;
 }
 
+// Vertical colour bar right of the data area, with ticks and a rotated title.
+static void draw_colorbar(Canvas& canvas, const Rect& A, const HeatMap& hm, float fs, float title_fs) {
+    const auto [vlo, vhi] = value_range(hm);
+    const Rect bar{A.x1 + 14, A.y0, A.x1 + 30, A.y1};
+    Image grad(1, 256);
+    for (int i = 0; i < 256; ++i) {
+        const std::uint32_t c = viridis(1.0 - i / 255.0).packed();
+        std::uint8_t* p = grad.pixel(0, i);
+        p[0] = static_cast<std::uint8_t>(c), p[1] = static_cast<std::uint8_t>(c >> 8);
+        p[2] = static_cast<std::uint8_t>(c >> 16), p[3] = 255;
+    }
+    canvas.image(bar, grad, true);
+    const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
+    canvas.stroke_rect({bar.x0 + 0.5f, bar.y0 + 0.5f, bar.x1 - 0.5f, bar.y1 - 0.5f}, axis);
+    TextStyle ts;
+    ts.size = fs, ts.halign = HAlign::Left, ts.valign = VAlign::Middle;
+    const auto ticks = linear_ticks(vlo, vhi, std::max(2, static_cast<int>(bar.height() / 60)));
+    float label_w = 0;
+    for (const Tick& t : ticks) {
+        const float y =
+            std::floor(bar.y1 - static_cast<float>((t.value - vlo) / (vhi - vlo)) * bar.height()) + 0.5f;
+        canvas.line({bar.x1, y}, {bar.x1 + kTickLength, y}, axis);
+        canvas.text({bar.x1 + kTickLength + 3, y}, t.label, ts);
+        label_w = std::max(label_w, canvas.measure_text(t.label, fs).x);
+    }
+    if (!hm.label.empty()) {
+        TextStyle tt;
+        tt.size = title_fs, tt.halign = HAlign::Center, tt.valign = VAlign::Bottom, tt.angle_deg = 90;
+        canvas.text(
+            {std::round(bar.x1 + kTickLength + 6 + label_w + title_fs * 1.3f), 0.5f * (bar.y0 + bar.y1)},
+            hm.label, tt);
+    }
+}
+
 PlotTransform Plot::layout(const Canvas& canvas) const {
-    return compute_layout(*this, series_, bounds_, canvas).tf;
+    return compute_layout(*this, series_, heatmap_, bounds_, canvas).tf;
 }
 
 void Plot::draw(Canvas& canvas) const {
-    const Layout L = compute_layout(*this, series_, bounds_, canvas);
+    const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas);
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
     const float fs = font_size, title_fs = font_size + 1, head_fs = font_size + 3;
@@ -230,6 +292,15 @@ void Plot::draw(Canvas& canvas) const {
             const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
             canvas.line({A.x0, y}, {A.x1, y}, t.major ? major : minor);
         }
+    }
+
+    if (heatmap_ && heatmap_->nx > 0 && heatmap_->ny > 0 &&
+        heatmap_->values.size() >=
+            static_cast<std::size_t>(heatmap_->nx) * static_cast<std::size_t>(heatmap_->ny)) {
+        const auto [vlo, vhi] = value_range(*heatmap_);
+        const Vec2 tl = tf.to_pixel(heatmap_->x0, heatmap_->y1), br = tf.to_pixel(heatmap_->x1, heatmap_->y0);
+        canvas.image({tl.x, tl.y, br.x, br.y},
+                     heatmap_image(heatmap_->values.data(), heatmap_->nx, heatmap_->ny, vlo, vhi));
     }
 
     // Series, clipped to the data area.
@@ -303,6 +374,8 @@ void Plot::draw(Canvas& canvas) const {
         tt.size = head_fs, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
         canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0)}, title, tt);
     }
+
+    if (heatmap_) draw_colorbar(canvas, A, *heatmap_, fs, title_fs);
 
     // Legend.
     std::vector<std::size_t> entries;

@@ -71,11 +71,13 @@ std::vector<Tick> log_ticks(double lo, double hi, int target_count) {
     const int every =
         std::max(1, static_cast<int>(std::ceil(static_cast<double>(decades) / std::max(1, target_count))));
     const bool minor = every == 1 && decades <= 8;
+    // One style for the whole axis: plain numbers when every decade is short, else powers of ten.
+    const bool plain = e0 >= -3 && e1 <= 4;
     for (int e = e0; e <= e1; ++e) {
         const double v = std::pow(10.0, e);
         if (v >= lo * (1 - 1e-9) && v <= hi * (1 + 1e-9) && (e % every) == 0) {
             std::string label;
-            if (e >= -3 && e <= 4) {
+            if (plain) {
                 char buf[32];
                 std::snprintf(buf, sizeof buf, "%.*f", std::max(0, -e), v);
                 label = buf;

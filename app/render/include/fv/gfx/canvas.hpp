@@ -4,6 +4,7 @@
 // end() draws everything through GL, so shapes and text interleave exactly as called.
 // The canvas does not know which backend (headless or window) it renders on.
 #include "fv/gfx/gl_api.hpp"
+#include "fv/gfx/image.hpp"
 #include "fv/gfx/text.hpp"
 #include "fv/gfx/types.hpp"
 
@@ -74,6 +75,10 @@ class Canvas {
     void marker(Vec2 center, const MarkerStyle& m);
     /// Shaft from `from` to `to` with a filled head at `to`.
     void arrow(Vec2 from, Vec2 to, const ArrowStyle& s);
+
+    /// Draws an RGBA image stretched over `dst` (nearest-neighbour when `smooth` is false, e.g. heat-map
+    /// cells). The pixels are uploaded to a texture right away (the GL context must be current).
+    void image(const Rect& dst, const Image& pixels, bool smooth = false);
 
     void text(Vec2 anchor, std::string_view str, const TextStyle& style);
     Vec2 measure_text(std::string_view str, float size, bool markup = true) const;

@@ -40,6 +40,15 @@ struct Series {
     SeriesStyle style;
 };
 
+/// A grid of values shown as a viridis image under the series, with a colour bar at the right.
+struct HeatMap {
+    std::vector<double> values; ///< nx*ny, row-major, row 0 at y0 (bottom). NaN cells are transparent.
+    int nx = 0, ny = 0;
+    double x0 = 0, x1 = 1, y0 = 0, y1 = 1; ///< Data extent of the grid (outer cell edges).
+    std::optional<double> vmin, vmax;      ///< Colour range; default: the finite min/max.
+    std::string label;                     ///< Colour bar title (markup allowed).
+};
+
 enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft };
 
 /// Data <-> pixel mapping of a laid-out plot.
@@ -64,6 +73,8 @@ class Plot {
 
     Series& add_series(std::string label, std::vector<double> x, std::vector<double> y,
                        SeriesStyle style = {});
+    /// Shows a heat map (at most one per plot; linear axes). Unset axis ends fit its extent exactly.
+    void set_heatmap(HeatMap h) { heatmap_ = std::move(h); }
     /// Extra drawing in data space (after the series, clipped to the data area).
     void add_overlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
         overlays_.push_back(std::move(fn));
@@ -76,6 +87,7 @@ class Plot {
   private:
     Rect bounds_;
     std::vector<Series> series_;
+    std::optional<HeatMap> heatmap_;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_;
 };
 
