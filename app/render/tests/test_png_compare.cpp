@@ -44,3 +44,11 @@ TEST_CASE("compare_images counts pixels beyond the channel threshold") {
     CHECK(compare_images(b, a, 2, 0.02).passed);
     CHECK_FALSE(compare_images(b, gradient(10, 11), 255, 1.0).passed); // Size mismatch never passes.
 }
+
+#include "fv/gfx/fonts.hpp"
+
+TEST_CASE("a missing font file gives a one-line error") {
+    FontSetOptions o;
+    o.path = "/nonexistent/font.ttf";
+    CHECK_THROWS_WITH(FontSet(o), Catch::Contains("font not found"));
+}
