@@ -9,6 +9,7 @@ PACKAGES=(
   catch2                                    # tests (Catch2 v2)
   libimgui-dev libglfw3-dev libgl-dev libosmesa6-dev libstb-dev fonts-dejavu-core  # drawing
   xvfb xauth                                # window tests without a display (xvfb-run needs xauth)
+  bc                                        # scripts/bench.sh arithmetic
 )
 
 missing=()

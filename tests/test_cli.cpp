@@ -77,6 +77,12 @@ TEST_CASE("CLI: bad numbers are usage errors naming the flag and the allowed ran
              Case{"trace --zeta 0.3 --theta 90 --rdisp nan --i 1", "--rdisp"},
              Case{"ratio --zeta 0.3 --theta 90 --rdisp 2 --i 1 --bogus", "--bogus"},
              Case{"frobnicate --zeta 1", "frobnicate"},
+             Case{"render --figure fig99 --out /tmp", "fig10"}, // the message lists the valid ids
+             Case{"render --figure fig5 --out /tmp --size 10x10", "--size"},
+             Case{"render --figure fig5 --out /tmp --size big", "--size"},
+             Case{"render --figure fig5 --out /nonexistent-dir", "--out"},
+             Case{"render --figure scene --out /tmp --zeta 0.3", "--theta"},
+             Case{"render --figure fig5", "--out"},
          }) {
         CAPTURE(c.args);
         const Run r = run(c.args);
@@ -168,4 +174,37 @@ TEST_CASE("CLI: trace gives one steady period with the documented columns", "[cl
     }
     CHECK(rows == 500);
     CHECK(last_tau - first_tau == Approx(2 * 3.14159265358979 * 499 / 500).epsilon(1e-9));
+}
+
+TEST_CASE("CLI: render writes a PNG and its CSV, and fails cleanly without OSMesa", "[cli][render]") {
+    const std::string dir = scratch_dir() + "/render";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const Run r =
+        run("render --figure fig5,scene --zeta 0.4 --theta 30 --rdisp 3 --i 0 --size 400x300 --out " + dir);
+    REQUIRE(r.code == 0);
+    const std::string png = slurp(dir + "/fig5.png");
+    REQUIRE(png.size() > 24);
+    CHECK(png.substr(1, 3) == "PNG");
+    // IHDR: width and height as big-endian 32-bit integers at bytes 16 and 20.
+    auto be32 = [&](std::size_t at) {
+        return (static_cast<unsigned char>(png[at]) << 24) | (static_cast<unsigned char>(png[at + 1]) << 16) |
+               (static_cast<unsigned char>(png[at + 2]) << 8) | static_cast<unsigned char>(png[at + 3]);
+    };
+    CHECK(be32(16) == 400);
+    CHECK(be32(20) == 300);
+    CHECK(slurp(dir + "/fig5.csv").rfind("model,i,theta_deg,rdisp,zeta,r_x", 0) == 0);
+    CHECK(slurp(dir + "/scene.csv").rfind("tau,Px,Py,Tx,Ty,z,Fx,Fy", 0) == 0);
+    CHECK(slurp(dir + "/scene-ratio.csv").rfind("model,i,theta_deg", 0) == 0);
+
+    // No OSMesa: one line, exit 1, no PNG.
+    const std::string dir2 = scratch_dir() + "/render2";
+    REQUIRE(std::system(("mkdir -p " + dir2).c_str()) == 0);
+    const std::string cmd = "FV_OSMESA_LIBRARY=/nonexistent/libOSMesa.so " + std::string(FV_EXE) +
+                            " render --figure fig5 --out " + dir2 + " >/dev/null 2>" + dir2 + "/err.txt";
+    const int status = std::system(cmd.c_str());
+    CHECK(WEXITSTATUS(status) == 1);
+    const std::string err = slurp(dir2 + "/err.txt");
+    CHECK(lines(err) == 1);
+    CHECK(err.find("OSMesa") != std::string::npos);
+    CHECK(::access((dir2 + "/fig5.png").c_str(), F_OK) != 0);
 }

@@ -34,7 +34,8 @@ CLI::Validator size_spec() {
                     << kMaxH << "]";
             if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
                 return "'" + s + "' is not a size; " + allowed.str();
-            if (w < kMinW || w > kMaxW || h < kMinH || h > kMaxH) return "'" + s + "' is out of range; " + allowed.str();
+            if (w < kMinW || w > kMaxW || h < kMinH || h > kMaxH)
+                return "'" + s + "' is out of range; " + allowed.str();
             return {};
         },
         "WxH");
@@ -66,8 +67,10 @@ Command add_render_command(CLI::App& root) {
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
     cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
-    cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")->check(number_in(kThetaRange));
-    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene: displacement ratio")->check(number_in(kRdispRange));
+    cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")
+        ->check(number_in(kThetaRange));
+    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene: displacement ratio")
+                             ->check(number_in(kRdispRange));
     a->model.i_opt = cmd->add_option("--i", a->model.i, "scene: Dahl exponent")->check(number_in(kIRange));
     return {cmd, [a, cmd] {
                 // Resolve the list of figures first: an unknown id lists the valid ones.
@@ -86,10 +89,12 @@ Command add_render_command(CLI::App& root) {
                     } else if (const FigureSpec* f = find_figure(id)) {
                         specs.push_back(*f);
                     } else {
-                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: all, scene, " + figure_ids());
+                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: all, scene, " +
+                                         figure_ids());
                     }
                 }
-                if (specs.empty()) throw UsageError("--figure: no figure named; allowed: all, scene, " + figure_ids());
+                if (specs.empty())
+                    throw UsageError("--figure: no figure named; allowed: all, scene, " + figure_ids());
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
                 check_out(dir + "/" + specs.front().id + ".png");
@@ -117,7 +122,8 @@ Command add_render_command(CLI::App& root) {
                 for (const FigureSpec& spec : specs) {
                     const FigureData data = compute_figure(spec);
                     Output o{spec.id, session->render_figure(data), {}};
-                    for (const TableData& t : data.tables) o.csv.push_back({dir + "/" + spec.id + t.suffix + ".csv", csv_of(t)});
+                    for (const TableData& t : data.tables)
+                        o.csv.push_back({dir + "/" + spec.id + t.suffix + ".csv", csv_of(t)});
                     outs.push_back(std::move(o));
                 }
                 std::vector<std::string> errors(outs.size());

@@ -9,32 +9,45 @@ namespace {
 
 gfx::LineStyle line_style(Dash d) {
     switch (d) {
-    case Dash::dashed: return gfx::LineStyle::Dashed;
-    case Dash::dotted: return gfx::LineStyle::Dotted;
-    default: return gfx::LineStyle::Solid;
+    case Dash::dashed:
+        return gfx::LineStyle::Dashed;
+    case Dash::dotted:
+        return gfx::LineStyle::Dotted;
+    default:
+        return gfx::LineStyle::Solid;
     }
 }
 
 gfx::MarkerShape marker_shape(Mark m) {
     switch (m) {
-    case Mark::circle: return gfx::MarkerShape::Circle;
-    case Mark::square: return gfx::MarkerShape::Square;
-    case Mark::triangle: return gfx::MarkerShape::Triangle;
-    case Mark::diamond: return gfx::MarkerShape::Diamond;
-    case Mark::cross: return gfx::MarkerShape::Cross;
-    default: return gfx::MarkerShape::None;
+    case Mark::circle:
+        return gfx::MarkerShape::Circle;
+    case Mark::square:
+        return gfx::MarkerShape::Square;
+    case Mark::triangle:
+        return gfx::MarkerShape::Triangle;
+    case Mark::diamond:
+        return gfx::MarkerShape::Diamond;
+    case Mark::cross:
+        return gfx::MarkerShape::Cross;
+    default:
+        return gfx::MarkerShape::None;
     }
 }
 
-gfx::Vec2 to_px(const gfx::PlotTransform& tf, const fv::Vec2& p) { return tf.to_pixel(p.x(), p.y()); }
+gfx::Vec2 to_px(const gfx::PlotTransform& tf, const fv::Vec2& p) {
+    return tf.to_pixel(p.x(), p.y());
+}
 
 // Labels go on the side of a point that faces away from the middle of all marked points, so that labels
 // of nearby points (P(t), P(t+dt), ...) do not overlap each other or the lines between them.
-void label_point(gfx::Canvas& c, gfx::Vec2 at, gfx::Vec2 centre, const std::string& text, float size) {
+void label_point(gfx::Canvas& c, gfx::Vec2 at, gfx::Vec2 centre, const PointData& p, float size) {
+    const std::string& text = p.label;
     if (text.empty()) return;
     gfx::TextStyle ts;
     ts.size = size;
-    const float dx = at.x - centre.x, dy = at.y - centre.y;
+    const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
+    const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
     ts.halign = dx >= 0 ? gfx::HAlign::Left : gfx::HAlign::Right;
     ts.valign = dy >= 0 ? gfx::VAlign::Top : gfx::VAlign::Bottom;
     c.text({at.x + (dx >= 0 ? 9.f : -9.f), at.y + (dy >= 0 ? 7.f : -7.f)}, text, ts);
@@ -44,15 +57,24 @@ void label_point(gfx::Canvas& c, gfx::Vec2 at, gfx::Vec2 centre, const std::stri
 
 gfx::Color ink_color(Ink ink, std::size_t series_index) {
     switch (ink) {
-    case Ink::body: return gfx::palette(0);                     // blue
-    case Ink::tip: return gfx::palette(1);                      // vermillion
-    case Ink::pull: return gfx::palette(2);                     // green
-    case Ink::force: return gfx::palette(0);
-    case Ink::magnitude: return gfx::colors::black;
-    case Ink::rigid: return gfx::colors::black;
-    case Ink::spring: return gfx::Color::hex(0x8A8A8A);
-    case Ink::black: return gfx::colors::black;
-    case Ink::automatic: break;
+    case Ink::body:
+        return gfx::palette(0); // blue
+    case Ink::tip:
+        return gfx::palette(1); // vermillion
+    case Ink::pull:
+        return gfx::palette(2); // green
+    case Ink::force:
+        return gfx::palette(0);
+    case Ink::magnitude:
+        return gfx::colors::black;
+    case Ink::rigid:
+        return gfx::colors::black;
+    case Ink::spring:
+        return gfx::Color::hex(0x8A8A8A);
+    case Ink::black:
+        return gfx::colors::black;
+    case Ink::automatic:
+        break;
     }
     return gfx::palette(series_index);
 }
@@ -82,30 +104,35 @@ void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& b
             c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
                      {ink_color(ci.ink, 0), 1.2f, line_style(ci.dash)});
         gfx::Vec2 centre{0, 0};
-        for (const PointData& p : pd->points) centre = centre + to_px(tf, p.at) * (1.0f / pd->points.size());
+        for (const PointData& p : pd->points)
+            centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(pd->points.size()));
         for (const SegmentData& s : pd->segments) {
             const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
             c.line(a, b, {ink_color(s.ink, 0), s.width, line_style(s.dash)});
             if (!s.label.empty()) {
-                // Beside the middle of the segment, on its outer side.
-                const gfx::Vec2 m = (a + b) * 0.5f;
-                float nx = -(b.y - a.y), ny = b.x - a.x;
+                const gfx::Vec2 m = a + (b - a) * s.label_at;
+                // Unit normal pointing left of a->b on screen (y down).
+                float nx = b.y - a.y, ny = -(b.x - a.x);
                 const float len = std::max(1e-3f, std::hypot(nx, ny));
                 nx /= len, ny /= len;
-                if (nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0) nx = -nx, ny = -ny;
+                const bool flip =
+                    s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
+                if (flip) nx = -nx, ny = -ny;
                 gfx::TextStyle ts;
-                ts.size = 13;
+                ts.size = 15;
                 ts.color = ink_color(s.ink, 0);
-                ts.halign = nx >= 0 ? gfx::HAlign::Left : gfx::HAlign::Right;
-                ts.valign = gfx::VAlign::Middle;
-                c.text({m.x + nx * 10, m.y + ny * 10}, s.label, ts);
+                ts.halign =
+                    nx > 0.3f ? gfx::HAlign::Left : (nx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
+                ts.valign =
+                    ny > 0.3f ? gfx::VAlign::Top : (ny < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
+                c.text({m.x + nx * 8, m.y + ny * 8}, s.label, ts);
             }
         }
         for (const PointData& p : pd->points) {
             const gfx::Vec2 at = to_px(tf, p.at);
             const gfx::Color col = ink_color(p.ink, 0);
             c.marker(at, {marker_shape(p.mark), p.size, col, gfx::colors::white, 1.5f});
-            label_point(c, at, centre, p.label, 15);
+            label_point(c, at, centre, p, 15);
         }
     });
     plot.draw(canvas);

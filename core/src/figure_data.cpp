@@ -26,11 +26,11 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
     PanelData panel;
     panel.x_title = kZetaTitle;
     panel.y_title = kRxTitle;
-    panel.x_min = std::min(0.0, spec.zeta_from);
-    panel.x_max = spec.zeta_to;
+    const std::vector<double>& zetas = spec.zetas;
+    panel.x_min = std::min(0.0, zetas.front());
+    panel.x_max = zetas.back();
     panel.y_min = 0;
     panel.y_max = 1.05;
-    const auto zetas = linspace(spec.zeta_from, spec.zeta_to, spec.zeta_count);
     bool all_rigid = true;
     for (const auto& c : spec.curves) all_rigid = all_rigid && c.model == Model::rigid;
     // One flat list of points over all curves keeps both cores busy even when one curve is slow.
@@ -115,6 +115,15 @@ PanelData top_view(const Params& p, const std::vector<Sample>& period, const std
     }
     panel.points.push_back({last.P + shift, Ink::body, Mark::circle, "P", 9});
     panel.points.push_back({last.T + shift, Ink::tip, Mark::square, "T", 9});
+    // Frame both paths with a margin, so the labels of the start points stay inside the plot.
+    double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+    for (const SeriesData& s : panel.series)
+        for (std::size_t k = 0; k < s.x.size(); ++k) {
+            x0 = std::min(x0, s.x[k]), x1 = std::max(x1, s.x[k]);
+            y0 = std::min(y0, s.y[k]), y1 = std::max(y1, s.y[k]);
+        }
+    const double m = 0.08 * std::max(x1 - x0, y1 - y0);
+    panel.x_min = x0 - m, panel.x_max = x1 + m, panel.y_min = y0 - m, panel.y_max = y1 + m;
     return panel;
 }
 
@@ -185,14 +194,15 @@ PanelData step_panel(const Params& p, int n, std::vector<Sample>& rows) {
         path.y.push_back(q.y());
     }
     panel.series.push_back(std::move(path));
-    panel.segments.push_back({a.P, a.T, Ink::spring, Dash::solid, 2.0f, "z(t)"});
-    panel.segments.push_back({b.P, a.T, Ink::pull, Dash::dashed, 2.0f, "pull line"});
-    panel.segments.push_back({b.P, b.T, Ink::tip, Dash::solid, 2.0f, "z(t+Δt)"});
+    // T(t+dt) lies on the pull line (Eqs. (21)-(22)), so z(t+dt) overlaps it: label them on opposite sides.
+    panel.segments.push_back({a.P, a.T, Ink::spring, Dash::solid, 2.0f, "z(t)", 0.5f, 0});
+    panel.segments.push_back({b.P, b.T, Ink::tip, Dash::solid, 3.0f, "z(t+Δt)", 0.5f, 1});
+    panel.segments.push_back({b.P, a.T, Ink::pull, Dash::dashed, 1.5f, "pull line T(t)–P(t+Δt)", 0.35f, -1});
     panel.points.push_back({a.P, Ink::body, Mark::circle, "P(t)", 10});
     panel.points.push_back({b.P, Ink::body, Mark::circle, "P(t+Δt)", 10});
-    panel.points.push_back({a.T, Ink::tip, Mark::square, "T(t)", 10});
-    panel.points.push_back({b.T, Ink::tip, Mark::square, "T(t+Δt)", 10});
-    panel.circles.push_back({b.P, p.zss(), Ink::spring, Dash::dotted});
+    // The tip moves little in one step: put its two labels on opposite sides.
+    panel.points.push_back({a.T, Ink::tip, Mark::square, "T(t)", 10, -1, -1});
+    panel.points.push_back({b.T, Ink::tip, Mark::square, "T(t+Δt)", 10, 1, 1});
     // Frame the step: the four points with a margin of half their spread.
     double x0 = a.P.x(), x1 = x0, y0 = a.P.y(), y1 = y0;
     for (const Vec2& q : {a.P, b.P, a.T, b.T}) {

@@ -1,5 +1,7 @@
 #include "fv/figures.hpp"
 
+#include "fv/sweep.hpp"
+
 #include <cstdio>
 
 namespace fv {
@@ -26,9 +28,7 @@ FigureSpec ratio_family(const char* id, double i, double theta_deg) {
     f.caption = "r_x(ζ) of the Dahl model with i = " + fmt("%g", i) + " at θ = " + fmt("%g", theta_deg) +
                 "° for r_disp = 0.5, 1, 2, 5, 20, and the rigid model (Eq. " +
                 (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve.";
-    f.zeta_from = 0.02;
-    f.zeta_to = 3;
-    f.zeta_count = 60;
+    f.zetas = ratio_zeta_grid();
     for (double r : kRdispFamily) f.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
     f.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});
     return f;
@@ -54,9 +54,7 @@ std::vector<FigureSpec> make_figures() {
         f.caption =
             "r_x(ζ) of the rigid Coulomb model, Eq. (9), for θ = 0°, 30°, 45°, 60°, 90°. Below ζ ≈ 0.95 "
             "parallel vibration (θ = 0°) reduces friction most; above ζ = 1 perpendicular vibration does.";
-        f.zeta_from = 0;
-        f.zeta_to = 2;
-        f.zeta_count = 201;
+        f.zetas = linspace(0, 2, 201);
         for (double th : {0.0, 30.0, 45.0, 60.0, 90.0}) f.curves.push_back({Model::rigid, th * kDeg, 0, 0});
         v.push_back(f);
     }
@@ -80,11 +78,11 @@ std::vector<FigureSpec> make_figures() {
     v.push_back(ratio_family("fig13", 0, 0));
     v.push_back(
         state_figure("fig14a", FigureKind::period_view, {0.15, 90 * kDeg, 2, 1},
-                     "Fig. 14a: r_disp = 2, ζ = 0.15, θ = 90°, i = 1 (no stiction)",
+                     "Fig. 14a: r_{disp} = 2, ζ = 0.15, θ = 90°, i = 1 (no stiction)",
                      "P and T over one steady-state period at ζ = 0.15: the trajectory is squeezed in x "
                      "and the asperity relaxes in the tight turns. Dahl model without stiction, i = 1."));
     v.push_back(state_figure("fig14b", FigureKind::period_view, {0.15, 90 * kDeg, 2, 0},
-                             "Fig. 14b: r_disp = 2, ζ = 0.15, θ = 90°, i = 0 (stiction)",
+                             "Fig. 14b: r_{disp} = 2, ζ = 0.15, θ = 90°, i = 0 (stiction)",
                              "As Fig. 14a with the stiction model i = 0, Eq. (27): the tip sticks until the "
                              "deflection reaches z_ss."));
     v.push_back(state_figure("fig15", FigureKind::period_force, {0.15, 90 * kDeg, 2, 1},
@@ -95,10 +93,11 @@ std::vector<FigureSpec> make_figures() {
                              "Fig. 16: friction force over one period (Fig. 14b)",
                              "F_x, F_y and |F| over the steady-state period of Fig. 14b (i = 0)."));
     {
-        FigureSpec f = state_figure(
-            "fig17", FigureKind::period_view, {0.5, 90 * kDeg, 2, 1}, "Fig. 17: r_disp = 2, ζ = 0.5, θ = 90°",
-            "At ζ = 0.5 the trajectory is stretched in x, the asperity never relaxes and "
-            "i = 1 (solid) and i = 0 (dashed) coincide.");
+        FigureSpec f =
+            state_figure("fig17", FigureKind::period_view, {0.5, 90 * kDeg, 2, 1},
+                         "Fig. 17: r_{disp} = 2, ζ = 0.5, θ = 90°",
+                         "At ζ = 0.5 the trajectory is stretched in x, the asperity never relaxes and "
+                         "i = 1 (solid) and i = 0 (dashed) coincide.");
         f.overlay_other_i = true;
         v.push_back(f);
     }
@@ -109,6 +108,14 @@ std::vector<FigureSpec> make_figures() {
 }
 
 } // namespace
+
+std::vector<double> ratio_zeta_grid() {
+    std::vector<double> z;
+    for (int k = 1; k <= 25; ++k) z.push_back(0.02 * k);
+    for (int k = 1; k <= 20; ++k) z.push_back(0.5 + 0.025 * k);
+    for (int k = 1; k <= 20; ++k) z.push_back(1 + 0.1 * k);
+    return z;
+}
 
 const std::vector<FigureSpec>& paper_figures() {
     static const std::vector<FigureSpec> figs = make_figures();
@@ -132,12 +139,10 @@ FigureSpec scene_figure(const Params& p) {
     f.id = "scene";
     f.kind = FigureKind::scene;
     f.params = p;
-    f.title = "ζ = " + fmt("%g", p.zeta) + ", θ = " + fmt("%g", p.theta / kDeg) +
-              "°, r_disp = " + fmt("%g", p.rdisp) + ", i = " + fmt("%g", p.i);
+    f.title = "ζ = " + fmt("%g", p.zeta) + ", θ = " + fmt("%.4g", p.theta / kDeg) +
+              "°, r_{disp} = " + fmt("%g", p.rdisp) + ", i = " + fmt("%g", p.i);
     f.caption = "Top view, friction force over one steady-state period and r_x(ζ) for one parameter set.";
-    f.zeta_from = 0.02;
-    f.zeta_to = 3;
-    f.zeta_count = 60;
+    f.zetas = ratio_zeta_grid();
     f.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};
     return f;
 }

@@ -32,15 +32,19 @@ struct SegmentData {
     Ink ink = Ink::spring;
     Dash dash = Dash::solid;
     float width = 1.5f;
-    std::string label; // drawn at the middle
+    std::string label;     // drawn beside the segment,
+    float label_at = 0.5f; // this far along from a to b,
+    int label_side = 0; // on this side: +1 left of a->b (on screen), -1 right, 0 away from the marked points
 };
 
 struct PointData {
     Vec2 at;
     Ink ink = Ink::black;
     Mark mark = Mark::circle;
-    std::string label; // drawn beside the point
+    std::string label; // drawn beside the point,
     float size = 9;
+    int label_dx = 0, label_dy = 0; // on this side (+1 right / below on screen, -1 left / above; 0: away from
+                                    // the middle of all marked points)
 };
 
 struct CircleData {

@@ -30,10 +30,9 @@ struct FigureSpec {
     std::string title;   // drawn above the figure
     std::string caption; // what it shows, for README and --help
     FigureKind kind = FigureKind::ratio_curves;
-    // ratio_curves
+    // ratio_curves (and scene): the curves and the zeta values they are computed at
     std::vector<Curve> curves;
-    double zeta_from = 0, zeta_to = 3;
-    int zeta_count = 61;
+    std::vector<double> zetas;
     // step_view, period_view, period_force, scene
     Params params;
     int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
@@ -45,6 +44,10 @@ const std::vector<FigureSpec>& paper_figures();
 
 // nullptr if unknown.
 const FigureSpec* find_figure(const std::string& id);
+
+// zeta grid of the r_x(zeta) figures: 0.02 apart up to 0.5 (where compliant curves turn sharply), 0.025 up
+// to 1 (which is on the grid: the rigid curve has its corner there at theta = 0), then 0.1 up to 3.
+std::vector<double> ratio_zeta_grid();
 
 // Comma-separated list of the valid ids (for error messages).
 std::string figure_ids();

@@ -1,0 +1,99 @@
+#pragma once
+// GL contexts. The backend (headless OSMesa or GLFW window) is chosen in one place,
+// create_context(); everything that draws only sees GpuContext and its GlApi.
+#include "fv/gfx/gl_api.hpp"
+#include "fv/gfx/image.hpp"
+
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace fv::gfx {
+
+enum class Backend { Headless, Window };
+
+struct ContextOptions {
+    Backend backend = Backend::Headless;
+    int width = 1280; ///< Headless: framebuffer pixels. Window: window size in screen units.
+    int height = 800;
+    std::string title = "frictionviz"; ///< Window only.
+    bool visible = true;               ///< Window only.
+};
+
+struct Size {
+    int width = 0;
+    int height = 0;
+};
+
+/// A current GL 3.3+ core context with a default framebuffer to draw into.
+class GpuContext {
+  public:
+    virtual ~GpuContext() = default;
+    GpuContext(const GpuContext&) = delete;
+    GpuContext& operator=(const GpuContext&) = delete;
+
+    const GlApi& gl() const { return gl_; }
+    /// Size of the framebuffer in pixels (what glViewport and readback use).
+    virtual Size framebuffer_size() const = 0;
+    /// Size in logical units (window size; equals the framebuffer size headless).
+    virtual Size logical_size() const = 0;
+    /// Framebuffer pixels per logical unit (2 on a HiDPI screen, 1 headless).
+    float pixel_ratio() const;
+    virtual void make_current() = 0;
+    /// Ends a frame: swaps buffers in a window, glFinish headless.
+    virtual void present() = 0;
+    /// Reads the current draw framebuffer (before present()) as RGBA8, rows top-down.
+    Image read_pixels() const;
+    /// One line: backend and GL version/renderer.
+    virtual std::string describe() const = 0;
+
+  protected:
+    GpuContext() = default;
+    GlApi gl_;
+};
+
+/// OSMesa (llvmpipe) core-profile 3.3 context rendering into a memory buffer.
+/// Throws std::runtime_error with a one-line message if libOSMesa can't be loaded or the context can't be
+/// made.
+class HeadlessContext final : public GpuContext {
+  public:
+    HeadlessContext(int width, int height);
+    ~HeadlessContext() override;
+    Size framebuffer_size() const override { return {width_, height_}; }
+    Size logical_size() const override { return {width_, height_}; }
+    void make_current() override;
+    void present() override;
+    std::string describe() const override;
+
+  private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    int width_;
+    int height_;
+};
+
+/// GLFW 3.3 window with a core forward-compatible 3.3 context. HiDPI aware: the framebuffer may
+/// be larger than the window. Throws std::runtime_error if there is no display or no context.
+class WindowContext final : public GpuContext {
+  public:
+    WindowContext(int width, int height, const std::string& title, bool visible);
+    ~WindowContext() override;
+    Size framebuffer_size() const override;
+    Size logical_size() const override;
+    void make_current() override;
+    void present() override;
+    std::string describe() const override;
+
+    bool should_close() const;
+    void poll_events();
+    GLFWwindow* native() const { return window_; } ///< For the ImGui GLFW input backend.
+
+  private:
+    GLFWwindow* window_ = nullptr;
+};
+
+/// The one place that picks a backend.
+std::unique_ptr<GpuContext> create_context(const ContextOptions& options);
+
+} // namespace fv::gfx

@@ -1,0 +1,37 @@
+#pragma once
+// General renderer for Dear ImGui draw data on GL 3.3 core, through our GlApi table.
+// (The prebuilt ImGui OpenGL3 backend resolves GL via libGL and fails under OSMesa.)
+// Used for the app's ImGui panels and for the text the Canvas emits as ImDrawLists.
+#include "fv/gfx/gl_api.hpp"
+#include "fv/gfx/shader_program.hpp"
+
+struct ImDrawData;
+struct ImFontAtlas;
+
+namespace fv::gfx {
+
+class ImGuiRenderer {
+  public:
+    explicit ImGuiRenderer(const GlApi& gl);
+    ~ImGuiRenderer();
+    ImGuiRenderer(const ImGuiRenderer&) = delete;
+    ImGuiRenderer& operator=(const ImGuiRenderer&) = delete;
+
+    /// Uploads the atlas' RGBA32 texture and stores its GL name as the atlas TexID.
+    /// Call again after rebuilding the atlas. The renderer owns the texture.
+    void upload_font_atlas(ImFontAtlas& atlas);
+
+    /// Draws every command list: one glDrawElements per command with its scissor and texture.
+    /// Sets all the GL state it needs (blend, scissor, viewport from DisplaySize*FramebufferScale).
+    void render(const ImDrawData& draw_data);
+
+  private:
+    const GlApi& gl_;
+    ShaderProgram program_;
+    GLint loc_proj_ = -1;
+    GLint loc_tex_ = -1;
+    GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
+    GLuint font_texture_ = 0;
+};
+
+} // namespace fv::gfx

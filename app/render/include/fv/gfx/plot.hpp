@@ -1,0 +1,94 @@
+#pragma once
+// A small scientific 2D plot (ImPlot is not packaged): axes with nice ticks, grid, titles with
+// Greek and sub/superscripts, several styled series, error bars, legend, clipping, fixed or
+// auto-fit ranges, log axes and an equal-aspect mode. Draws onto a Canvas inside a pixel rectangle.
+#include "fv/gfx/canvas.hpp"
+#include "fv/gfx/types.hpp"
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace fv::gfx {
+
+/// Colour-blind-friendly palette (Okabe & Ito), cycled by series index.
+Color palette(std::size_t index);
+
+struct Axis {
+    std::string title; ///< Markup allowed, e.g. "friction ratio r_{x}".
+    bool log = false;  ///< Log10 scale; non-positive values are skipped.
+    bool grid = true;
+    std::optional<double> min, max; ///< Fixed ends; unset ends are auto-fitted with a little padding.
+    void set_range(double lo, double hi) { min = lo, max = hi; }
+};
+
+struct SeriesStyle {
+    std::optional<Color> color; ///< Default: palette(series index).
+    float line_width = 2.0f;
+    LineStyle line = LineStyle::Solid;
+    bool draw_line = true;
+    MarkerShape marker = MarkerShape::None;
+    float marker_size = 7.0f;
+    bool marker_filled = true; ///< false: outline in the series colour on white.
+};
+
+struct Series {
+    std::string label; ///< Empty: not in the legend.
+    std::vector<double> x, y;
+    std::vector<double> y_err; ///< Optional symmetric error bars (same length as y).
+    SeriesStyle style;
+};
+
+/// A grid of values shown as a viridis image under the series, with a colour bar at the right.
+struct HeatMap {
+    std::vector<double> values; ///< nx*ny, row-major, row 0 at y0 (bottom). NaN cells are transparent.
+    int nx = 0, ny = 0;
+    double x0 = 0, x1 = 1, y0 = 0, y1 = 1; ///< Data extent of the grid (outer cell edges).
+    std::optional<double> vmin, vmax;      ///< Colour range; default: the finite min/max.
+    std::string label;                     ///< Colour bar title (markup allowed).
+};
+
+enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft };
+
+/// Data <-> pixel mapping of a laid-out plot.
+struct PlotTransform {
+    Rect area; ///< Data area in canvas pixels.
+    double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+    bool log_x = false, log_y = false;
+    Vec2 to_pixel(double x, double y) const;
+    /// Pixels per data unit along x (linear axes; used e.g. for radii in equal-aspect plots).
+    float pixels_per_unit_x() const { return static_cast<float>(area.width() / (x1 - x0)); }
+};
+
+class Plot {
+  public:
+    explicit Plot(const Rect& bounds) : bounds_(bounds) {}
+
+    std::string title;
+    Axis x_axis, y_axis;
+    bool equal_aspect = false; ///< One data unit spans the same pixels in x and y (linear axes).
+    LegendPosition legend = LegendPosition::Best;
+    float font_size = 13; ///< Tick labels; titles are a little larger.
+
+    Series& add_series(std::string label, std::vector<double> x, std::vector<double> y,
+                       SeriesStyle style = {});
+    /// Shows a heat map (at most one per plot; linear axes). Unset axis ends fit its extent exactly.
+    void set_heatmap(HeatMap h) { heatmap_ = std::move(h); }
+    /// Extra drawing in data space (after the series, clipped to the data area).
+    void add_overlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
+        overlays_.push_back(std::move(fn));
+    }
+
+    /// Computes ranges, ticks and margins (needs the canvas for text metrics).
+    PlotTransform layout(const Canvas& canvas) const;
+    void draw(Canvas& canvas) const;
+
+  private:
+    Rect bounds_;
+    std::vector<Series> series_;
+    std::optional<HeatMap> heatmap_;
+    std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_;
+};
+
+} // namespace fv::gfx

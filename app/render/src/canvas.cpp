@@ -1,0 +1,437 @@
+#include "fv/gfx/canvas.hpp"
+
+#include "fv/gfx/fonts.hpp"
+#include "fv/gfx/imgui_renderer.hpp"
+#include "shape_renderer.hpp"
+
+#include <imgui.h>
+#include <imgui_internal.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace fv::gfx {
+
+std::uint32_t Color::packed() const {
+    auto byte = [](float v) {
+        return static_cast<std::uint32_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f));
+    };
+    return byte(r) | (byte(g) << 8) | (byte(b) << 16) | (byte(a) << 24);
+}
+
+using detail::ShapeVertex;
+
+namespace {
+
+// A run of consecutive draws of one kind under one clip rectangle. Batches are drawn in order,
+// which is what lets text sit on top of a legend box that sits on top of data lines.
+struct Batch {
+    bool text = false;
+    bool clear = false; // Opaque pixel-aligned rectangle done as a scissored glClear (llvmpipe: ~free).
+    Color clear_color;
+    detail::ShapeKind kind = detail::kSegment; // Shapes: one program per kind.
+    Rect clip;
+    std::size_t first = 0, count = 0; // Shapes: index range.
+    std::size_t list = 0;             // Text: index into the draw-list pool.
+};
+
+bool same_rect(const Rect& a, const Rect& b) {
+    return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+}
+
+struct DashPattern {
+    float on = 0, period = 0; // Arc-length pattern of dash cores; period 0 = solid.
+};
+
+// Dash lengths scale with the width but keep a minimum so thin lines still read as dashed.
+DashPattern dash_pattern(const Stroke& s) {
+    const float w = s.width;
+    switch (s.style) {
+    case LineStyle::Solid:
+        return {};
+    case LineStyle::Dashed: {
+        const float on = std::max(2.5f * w, 5.0f), gap = std::max(2.0f * w, 4.0f);
+        return {on, on + w + gap}; // Round caps add w to each visible dash.
+    }
+    case LineStyle::Dotted:
+        return {0.0f, w + std::max(1.3f * w, 2.5f)};
+    }
+    return {};
+}
+
+bool finite(Vec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+} // namespace
+
+struct Canvas::Impl {
+    const GlApi& gl;
+    ImGuiRenderer& imgui;
+    detail::ShapeRenderer shapes;
+    ImDrawListSharedData shared; // Our own: text is emitted without an ImGui frame.
+    std::vector<ShapeVertex> verts;
+    std::vector<std::uint32_t> indices;
+    std::vector<Batch> batches;
+    std::vector<std::unique_ptr<ImDrawList>> lists;
+    std::size_t lists_used = 0;
+    std::vector<GLuint> textures; // Pool for image(); reused from frame to frame.
+    std::size_t textures_used = 0;
+    std::vector<Rect> clips;
+    float ratio = 1;
+    Color background;
+    bool recording = false;
+
+    Impl(const GlApi& g, ImGuiRenderer& r) : gl(g), imgui(r), shapes(g) {}
+    ~Impl() {
+        if (!textures.empty()) gl.DeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
+    }
+
+    Batch& batch_for(bool text, detail::ShapeKind kind, ImTextureID tex) {
+        const Rect& clip = clips.back();
+        if (batches.empty() || batches.back().clear || batches.back().text != text ||
+            (!text && batches.back().kind != kind) || !same_rect(batches.back().clip, clip)) {
+            Batch b;
+            b.text = text;
+            b.kind = kind;
+            b.clip = clip;
+            b.first = indices.size();
+            if (text) {
+                if (lists_used == lists.size()) lists.push_back(std::make_unique<ImDrawList>(&shared));
+                ImDrawList& l = *lists[lists_used];
+                l._ResetForNewFrame();
+                l.Flags = ImDrawListFlags_AllowVtxOffset;
+                l.PushClipRect(ImVec2(clip.x0, clip.y0), ImVec2(clip.x1, clip.y1), false);
+                l.PushTextureID(tex);
+                b.list = lists_used++;
+            }
+            batches.push_back(b);
+        }
+        return batches.back();
+    }
+
+    // Appends a quad (corners q0..q3) carrying the same shape parameters on all four vertices.
+    void quad(const Vec2 (&q)[4], int kind, const float (&a)[4], const float (&b)[4], const float (&c)[4],
+              const float (&d3)[3], Color col) {
+        if (!recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+        Batch& batch = batch_for(false, static_cast<detail::ShapeKind>(kind), nullptr);
+        const auto base = static_cast<std::uint32_t>(verts.size());
+        const std::uint32_t packed = col.packed();
+        for (const Vec2& p : q) {
+            ShapeVertex v{};
+            v.pos[0] = p.x;
+            v.pos[1] = p.y;
+            std::copy(std::begin(a), std::end(a), v.a);
+            std::copy(std::begin(b), std::end(b), v.b);
+            std::copy(std::begin(c), std::end(c), v.c);
+            v.d[0] = static_cast<float>(kind);
+            std::copy(std::begin(d3), std::end(d3), v.d + 1);
+            v.color = packed;
+            verts.push_back(v);
+        }
+        for (std::uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(base + i);
+        batch.count += 6;
+    }
+
+    void box_quad(float x0, float y0, float x1, float y1, int kind, const float (&a)[4], const float (&b)[4],
+                  Color col) {
+        const Vec2 q[4] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+        quad(q, kind, a, b, {0, 0, 0, 0}, {0, 0, 0}, col);
+    }
+
+    void segment(Vec2 prev, Vec2 p0, Vec2 p1, Vec2 next, bool has_prev, bool has_next, float s0,
+                 const Stroke& s, const DashPattern& dp) {
+        const float hw = 0.5f * s.width;
+        const float e = hw + 1.0f + 1.0f / ratio; // Must exceed the shader's reach (hw + 1/ratio + 0.5).
+        Vec2 dir = p1 - p0;
+        const float len = std::hypot(dir.x, dir.y);
+        dir = dir * (1.0f / len);
+        const Vec2 n{-dir.y, dir.x};
+        const Vec2 q[4] = {p0 - dir * e - n * e, p1 + dir * e - n * e, p1 + dir * e + n * e,
+                           p0 - dir * e + n * e};
+        // Solid lines use a cheaper program without the dash evaluation.
+        quad(q, dp.period > 0 ? detail::kSegment : detail::kSolidSegment, {prev.x, prev.y, p0.x, p0.y},
+             {p1.x, p1.y, next.x, next.y}, {hw, s0, dp.on, dp.period},
+             {has_prev ? 1.0f : 0.0f, has_next ? 1.0f : 0.0f, 0.0f}, s.color);
+    }
+
+    void polyline_run(const std::vector<Vec2>& pts, const Stroke& s, bool closed) {
+        const std::size_t n = pts.size();
+        if (n < 2) return;
+        closed = closed && n >= 3;
+        const DashPattern dp = dash_pattern(s);
+        const std::size_t nseg = closed ? n : n - 1;
+        double arc = 0; // Accumulated in double so long lines keep an exact dash phase.
+        for (std::size_t i = 0; i < nseg; ++i) {
+            const Vec2 p0 = pts[i], p1 = pts[(i + 1) % n];
+            const bool has_prev = closed || i > 0;
+            const bool has_next = closed || i + 1 < nseg;
+            const Vec2 prev = has_prev ? pts[(i + n - 1) % n] : p0;
+            const Vec2 next = has_next ? pts[(i + 2) % n] : p1;
+            segment(prev, p0, p1, next, has_prev, has_next, static_cast<float>(arc), s, dp);
+            arc += std::hypot(static_cast<double>(p1.x - p0.x), static_cast<double>(p1.y - p0.y));
+        }
+    }
+};
+
+Canvas::Canvas(const GlApi& gl, const FontSet& fonts, ImGuiRenderer& renderer)
+    : impl_(std::make_unique<Impl>(gl, renderer)), fonts_(fonts) {
+    if (!fonts.atlas().TexID)
+        throw std::logic_error("Canvas: upload the font atlas to the ImGuiRenderer first");
+}
+
+Canvas::~Canvas() = default;
+
+void Canvas::begin(Vec2 logical_size, float pixel_ratio, Color background) {
+    Impl& m = *impl_;
+    size_ = logical_size;
+    m.ratio = pixel_ratio;
+    m.background = background;
+    m.verts.clear();
+    m.indices.clear();
+    m.batches.clear();
+    m.lists_used = 0;
+    m.textures_used = 0;
+    m.clips.assign(1, Rect{0, 0, logical_size.x, logical_size.y});
+    m.shared.ClipRectFullscreen = ImVec4(0, 0, logical_size.x, logical_size.y);
+    m.shared.TexUvWhitePixel = fonts_.atlas().TexUvWhitePixel;
+    m.shared.Font = fonts_.font_for(14);
+    m.shared.FontSize = 14;
+    m.recording = true;
+}
+
+void Canvas::end() {
+    Impl& m = *impl_;
+    m.recording = false;
+    const int fb_w = static_cast<int>(std::lround(size_.x * m.ratio));
+    const int fb_h = static_cast<int>(std::lround(size_.y * m.ratio));
+    const GlApi& gl = m.gl;
+    gl.Viewport(0, 0, fb_w, fb_h);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.ClearColor(m.background.r, m.background.g, m.background.b, m.background.a);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    m.shapes.upload(m.verts, m.indices);
+    bool shapes_bound = false;
+    for (const Batch& b : m.batches) {
+        if (b.text) {
+            ImDrawList* list = m.lists[b.list].get();
+            ImDrawData dd;
+            dd.Valid = true;
+            dd.CmdListsCount = 1;
+            dd.CmdLists = &list;
+            dd.TotalVtxCount = list->VtxBuffer.Size;
+            dd.TotalIdxCount = list->IdxBuffer.Size;
+            dd.DisplayPos = ImVec2(0, 0);
+            dd.DisplaySize = ImVec2(size_.x, size_.y);
+            dd.FramebufferScale = ImVec2(m.ratio, m.ratio);
+            m.imgui.render(dd);
+            shapes_bound = false; // The ImGui renderer changed program, VAO and scissor.
+            continue;
+        }
+        if (!shapes_bound) {
+            m.shapes.bind(size_.x, size_.y, m.ratio, fb_h);
+            gl.Enable(GL_SCISSOR_TEST);
+            gl.Viewport(0, 0, fb_w, fb_h);
+            shapes_bound = true;
+        }
+        // Same rounding as the ImGui renderer so text and shapes clip identically.
+        const float fw = static_cast<float>(fb_w), fh = static_cast<float>(fb_h);
+        const float x0 = std::clamp(b.clip.x0 * m.ratio, 0.0f, fw),
+                    y0 = std::clamp(b.clip.y0 * m.ratio, 0.0f, fh);
+        const float x1 = std::clamp(b.clip.x1 * m.ratio, 0.0f, fw),
+                    y1 = std::clamp(b.clip.y1 * m.ratio, 0.0f, fh);
+        if (x1 <= x0 || y1 <= y0) continue;
+        gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fh - y1), static_cast<GLsizei>(x1 - x0),
+                   static_cast<GLsizei>(y1 - y0));
+        if (b.clear) {
+            gl.ClearColor(b.clear_color.r, b.clear_color.g, b.clear_color.b, b.clear_color.a);
+            gl.Clear(GL_COLOR_BUFFER_BIT);
+            continue;
+        }
+        m.shapes.draw(b.kind, b.first, b.count);
+    }
+    gl.BindVertexArray(0);
+    gl.Disable(GL_SCISSOR_TEST);
+}
+
+void Canvas::push_clip(const Rect& r, bool intersect) {
+    Rect c = r;
+    if (intersect) {
+        const Rect& cur = impl_->clips.back();
+        c = {std::max(c.x0, cur.x0), std::max(c.y0, cur.y0), std::min(c.x1, cur.x1), std::min(c.y1, cur.y1)};
+    }
+    impl_->clips.push_back(c);
+}
+
+void Canvas::pop_clip() {
+    if (impl_->clips.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
+    impl_->clips.pop_back();
+}
+
+const Rect& Canvas::clip() const {
+    return impl_->clips.back();
+}
+
+void Canvas::fill_rect(const Rect& r, Color c) {
+    const float ratio = impl_->ratio;
+    auto on_pixel = [ratio](float v) { return std::floor(v * ratio) == v * ratio; };
+    if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
+        // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
+        if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+        const Rect& cur = impl_->clips.back();
+        Batch b;
+        b.clear = true;
+        b.clear_color = c;
+        b.clip = {std::max(r.x0, cur.x0), std::max(r.y0, cur.y0), std::min(r.x1, cur.x1),
+                  std::min(r.y1, cur.y1)};
+        impl_->batches.push_back(b);
+        return;
+    }
+    const float e = 2;
+    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
+                    {0, 1, 0, 0}, c);
+}
+
+void Canvas::stroke_rect(const Rect& r, const Stroke& s) {
+    if (s.style != LineStyle::Solid) {
+        const std::vector<Vec2> pts = {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
+        polyline(pts, s, true);
+        return;
+    }
+    const float hw = 0.5f * s.width, e = hw + 2;
+    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
+                    {hw, 0, 0, 0}, s.color);
+}
+
+void Canvas::line(Vec2 a, Vec2 b, const Stroke& s) {
+    const Vec2 pts[2] = {a, b};
+    polyline(pts, 2, s, false);
+}
+
+void Canvas::polyline(const Vec2* pts, std::size_t n, const Stroke& s, bool closed) {
+    // Split at non-finite points and drop repeated points (zero-length segments have no direction).
+    std::vector<Vec2> run;
+    run.reserve(n);
+    bool broken = false;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!finite(pts[i])) {
+            impl_->polyline_run(run, s, false);
+            run.clear();
+            broken = true;
+            continue;
+        }
+        if (!run.empty() && std::fabs(run.back().x - pts[i].x) < 1e-4f &&
+            std::fabs(run.back().y - pts[i].y) < 1e-4f)
+            continue;
+        run.push_back(pts[i]);
+    }
+    if (closed && run.size() >= 2) {
+        const Vec2 f = run.front(), l = run.back();
+        if (std::fabs(f.x - l.x) < 1e-4f && std::fabs(f.y - l.y) < 1e-4f) run.pop_back();
+    }
+    impl_->polyline_run(run, s, closed && !broken);
+}
+
+void Canvas::circle(Vec2 center, float radius, const Stroke& s) {
+    if (s.style == LineStyle::Solid) {
+        const float hw = 0.5f * s.width, e = radius + hw + 2;
+        impl_->box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
+                        {center.x, center.y, radius, hw}, {1, 0, 0, 0}, s.color);
+        return;
+    }
+    // Dashed circles: a fine closed polyline keeps the dash pattern continuous all round.
+    const int n = std::max(48, static_cast<int>(std::ceil(2.0f * 3.14159265f * radius / 3.0f)));
+    std::vector<Vec2> pts(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const double t = 2.0 * 3.141592653589793 * i / n;
+        pts[static_cast<std::size_t>(i)] = {center.x + radius * static_cast<float>(std::cos(t)),
+                                            center.y - radius * static_cast<float>(std::sin(t))};
+    }
+    polyline(pts, s, true);
+}
+
+void Canvas::fill_circle(Vec2 center, float radius, Color c) {
+    const float e = radius + 2;
+    impl_->box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
+                    {center.x, center.y, radius, 0}, {1, 1, 0, 0}, c);
+}
+
+void Canvas::fill_triangle(Vec2 a, Vec2 b, Vec2 c, Color col) {
+    const float e = 2;
+    const float x0 = std::min({a.x, b.x, c.x}) - e, x1 = std::max({a.x, b.x, c.x}) + e;
+    const float y0 = std::min({a.y, b.y, c.y}) - e, y1 = std::max({a.y, b.y, c.y}) + e;
+    impl_->box_quad(x0, y0, x1, y1, detail::kTriangle, {a.x, a.y, b.x, b.y}, {c.x, c.y, 0, 0}, col);
+}
+
+void Canvas::marker(Vec2 center, const MarkerStyle& m) {
+    if (m.shape == MarkerShape::None || !finite(center)) return;
+    const float r = 0.5f * m.size;
+    const float shape =
+        static_cast<float>(static_cast<int>(m.shape)); // Circle=1 ... Plus=6, as in the shader.
+    const float e = 1.6f * r + m.edge_width + 2;
+    const float x0 = center.x - e, y0 = center.y - e, x1 = center.x + e, y1 = center.y + e;
+    // Cross and plus are filled bars whose thickness follows the size; they take fill and edge like the
+    // others.
+    const float bar = std::max(0.75f, 0.1f * m.size);
+    if (m.fill.a > 0)
+        impl_->box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0}, {shape, 1, bar, 0},
+                        m.fill);
+    if (m.edge_width > 0 && m.edge.a > 0)
+        impl_->box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0.5f * m.edge_width},
+                        {shape, 0, bar, 0}, m.edge);
+}
+
+void Canvas::arrow(Vec2 from, Vec2 to, const ArrowStyle& s) {
+    Vec2 d = to - from;
+    const float len = std::hypot(d.x, d.y);
+    if (!(len > 0)) return;
+    d = d * (1.0f / len);
+    const float head = std::min(s.head_length, len);
+    const Vec2 n{-d.y, d.x};
+    const Vec2 base = to - d * head;
+    // The shaft stops inside the head so its round cap never pokes out of the tip.
+    line(from, base + d * (0.4f * head), s.shaft);
+    fill_triangle(to, base + n * (0.5f * s.head_width), base - n * (0.5f * s.head_width), s.shaft.color);
+}
+
+void Canvas::text(Vec2 anchor, std::string_view str, const TextStyle& style) {
+    if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+    Batch& b = impl_->batch_for(true, detail::kSegment, fonts_.atlas().TexID);
+    emit_text(*impl_->lists[b.list], fonts_, anchor, str, style);
+}
+
+void Canvas::image(const Rect& dst, const Image& pixels, bool smooth) {
+    Impl& m = *impl_;
+    if (!m.recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+    if (pixels.empty()) return;
+    if (m.textures_used == m.textures.size()) {
+        GLuint t = 0;
+        m.gl.GenTextures(1, &t);
+        m.textures.push_back(t);
+    }
+    const GLuint tex = m.textures[m.textures_used++];
+    const GLint filter = smooth ? GL_LINEAR : GL_NEAREST;
+    m.gl.ActiveTexture(GL_TEXTURE0);
+    m.gl.BindTexture(GL_TEXTURE_2D, tex);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    m.gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    m.gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, pixels.width, pixels.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    pixels.rgba.data());
+    // Images go through the ImGui renderer (texture per command), as textured quads in a draw list.
+    Batch& b = m.batch_for(true, detail::kSegment, fonts_.atlas().TexID);
+    ImDrawList& l = *m.lists[b.list];
+    l.PushTextureID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(tex)));
+    l.PrimReserve(6, 4);
+    l.PrimRectUV(ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0, 0), ImVec2(1, 1), IM_COL32_WHITE);
+    l.PopTextureID();
+}
+
+Vec2 Canvas::measure_text(std::string_view str, float size, bool markup) const {
+    return fv::gfx::measure_text(fonts_, str, size, markup);
+}
+
+} // namespace fv::gfx

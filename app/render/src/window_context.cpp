@@ -1,0 +1,91 @@
+// Window backend: GLFW 3.3, core forward-compatible 3.3 context, HiDPI aware.
+#include "fv/gfx/context.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace fv::gfx {
+namespace {
+
+std::string g_last_glfw_error; // GLFW reports errors through a callback; keep the last one for messages.
+int g_glfw_users = 0;          // glfwInit/glfwTerminate are process-wide: count windows.
+
+void on_glfw_error(int /*code*/, const char* description) {
+    g_last_glfw_error = description ? description : "?";
+}
+
+void* glfw_loader(const char* name) {
+    return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
+
+bool env_set(const char* name) {
+    const char* v = std::getenv(name);
+    return v != nullptr && *v != '\0';
+}
+
+} // namespace
+
+WindowContext::WindowContext(int width, int height, const std::string& title, bool visible) {
+    if (!env_set("DISPLAY") && !env_set("WAYLAND_DISPLAY"))
+        throw std::runtime_error("no display (DISPLAY is not set): use headless mode, or run under "
+                                 "xvfb-run -a -s \"-screen 0 1280x800x24\"");
+    glfwSetErrorCallback(&on_glfw_error);
+    if (g_glfw_users == 0 && glfwInit() != GLFW_TRUE)
+        throw std::runtime_error("GLFW init failed: " + g_last_glfw_error);
+    ++g_glfw_users;
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE); // Window size follows the monitor's content scale.
+    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_SAMPLES, 0); // Our primitives antialias themselves; MSAA would change pixels.
+    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (!window_) {
+        if (--g_glfw_users == 0) glfwTerminate();
+        throw std::runtime_error("could not open a GL 3.3 core window: " + g_last_glfw_error);
+    }
+    glfwMakeContextCurrent(window_);
+    glfwSwapInterval(1);
+    gl_.load(&glfw_loader);
+}
+
+WindowContext::~WindowContext() {
+    glfwDestroyWindow(window_);
+    if (--g_glfw_users == 0) glfwTerminate();
+}
+
+Size WindowContext::framebuffer_size() const {
+    Size s;
+    glfwGetFramebufferSize(window_, &s.width, &s.height);
+    return s;
+}
+
+Size WindowContext::logical_size() const {
+    Size s;
+    glfwGetWindowSize(window_, &s.width, &s.height);
+    return s;
+}
+
+void WindowContext::make_current() {
+    glfwMakeContextCurrent(window_);
+}
+void WindowContext::present() {
+    glfwSwapBuffers(window_);
+}
+bool WindowContext::should_close() const {
+    return glfwWindowShouldClose(window_) != 0;
+}
+void WindowContext::poll_events() {
+    glfwPollEvents();
+}
+
+std::string WindowContext::describe() const {
+    return "GLFW window, " + gl_.describe();
+}
+
+} // namespace fv::gfx

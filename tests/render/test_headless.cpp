@@ -1,0 +1,122 @@
+// Renders small scenes with the headless (OSMesa) backend.
+#include "fv/gfx/canvas.hpp"
+#include "fv/gfx/context.hpp"
+#include "fv/gfx/fonts.hpp"
+#include "fv/gfx/imgui_renderer.hpp"
+#include "fv/gfx/plot.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace fv::gfx;
+
+namespace {
+
+struct Rig {
+    HeadlessContext ctx{320, 240};
+    FontSet fonts;
+    ImGuiRenderer imgui{ctx.gl()};
+    std::unique_ptr<Canvas> canvas;
+    Rig() {
+        imgui.upload_font_atlas(fonts.atlas());
+        canvas = std::make_unique<Canvas>(ctx.gl(), fonts, imgui);
+    }
+    Image render(const std::function<void(Canvas&)>& draw) {
+        canvas->begin({320, 240}, 1, colors::white);
+        draw(*canvas);
+        canvas->end();
+        return ctx.read_pixels();
+    }
+};
+
+Rig& rig() {
+    static Rig r; // One OSMesa context for all tests.
+    return r;
+}
+
+bool is_white(const Image& img, int x, int y) {
+    const std::uint8_t* p = img.pixel(x, y);
+    return p[0] == 255 && p[1] == 255 && p[2] == 255;
+}
+
+} // namespace
+
+TEST_CASE("readback is top-down and opaque") {
+    const Image img = rig().render([](Canvas& c) { c.fill_rect({0, 0, 320, 10}, Color::hex(0xFF0000)); });
+    REQUIRE(img.width == 320);
+    CHECK(img.pixel(5, 5)[0] == 255);
+    CHECK(img.pixel(5, 5)[1] == 0);
+    CHECK(is_white(img, 5, 20));
+    CHECK(img.pixel(5, 200)[3] == 255);
+}
+
+TEST_CASE("the same drawing twice gives identical pixels") {
+    auto scene = [](Canvas& c) {
+        Plot p({0, 0, 320, 240});
+        p.title = "θ = 90°, r_{disp} = 2";
+        p.x_axis.title = "ζ";
+        p.add_series("a", {0, 1, 2, 3}, {0, 1, 0.5, 2}, {std::nullopt, 2, LineStyle::Dashed});
+        p.draw(c);
+    };
+    const Image a = rig().render(scene), b = rig().render(scene);
+    CHECK(a.rgba == b.rgba);
+}
+
+TEST_CASE("a NaN point breaks the line") {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    PlotTransform tf;
+    const Image img = rig().render([&](Canvas& c) {
+        Plot p({0, 0, 320, 240});
+        p.legend = LegendPosition::None;
+        p.x_axis.grid = p.y_axis.grid = false;
+        p.y_axis.set_range(0, 2);
+        p.x_axis.set_range(0, 4);
+        p.add_series("", {0, 1, 2, 3, 4}, {1, 1, nan, 1, 1});
+        tf = p.layout(c);
+        p.draw(c);
+    });
+    const Vec2 on = tf.to_pixel(0.5, 1), gap = tf.to_pixel(2, 1);
+    CHECK_FALSE(is_white(img, static_cast<int>(on.x), static_cast<int>(on.y)));
+    CHECK(is_white(img, static_cast<int>(gap.x), static_cast<int>(gap.y)));
+}
+
+TEST_CASE("degenerate data ranges give a finite layout") {
+    rig().render([](Canvas& c) {
+        Plot empty({0, 0, 320, 240});
+        const PlotTransform t0 = empty.layout(c);
+        CHECK(t0.x1 > t0.x0);
+        Plot flat({0, 0, 320, 240});
+        flat.add_series("", {1, 1, 1}, {5, 5, 5});
+        const PlotTransform t1 = flat.layout(c);
+        CHECK(t1.x1 > t1.x0);
+        CHECK(t1.y1 > t1.y0);
+        CHECK(std::isfinite(t1.to_pixel(1, 5).x));
+        Plot logp({0, 0, 320, 240});
+        logp.x_axis.log = true;
+        logp.add_series("", {0, 1, 10, 100}, {1, 2, 3, 4}); // 0 is skipped on a log axis
+        const PlotTransform t2 = logp.layout(c);
+        CHECK(t2.x0 > 0);
+        flat.draw(c);
+        logp.draw(c);
+    });
+}
+
+TEST_CASE("equal aspect gives the same pixels per unit on both axes") {
+    rig().render([](Canvas& c) {
+        Plot p({0, 0, 320, 240});
+        p.equal_aspect = true;
+        p.add_series("", {0, 2}, {-1, 1});
+        const PlotTransform t = p.layout(c);
+        const double sx = t.area.width() / (t.x1 - t.x0), sy = t.area.height() / (t.y1 - t.y0);
+        CHECK(sx == Approx(sy).epsilon(1e-6));
+    });
+}
+
+TEST_CASE("markup subscripts are narrower than the plain text") {
+    const FontSet& f = rig().fonts;
+    CHECK(measure_text(f, "r_{disp}", 14).x < measure_text(f, "rdisp", 14).x);
+    CHECK(measure_text(f, "r_{disp}", 14, false).x > measure_text(f, "rdisp", 14).x);
+}

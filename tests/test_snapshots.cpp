@@ -1,0 +1,95 @@
+// Snapshot tests: every figure rendered headless at a fixed size and compared with the baseline PNG in
+// tests/snapshots/ with a tolerance (max channel difference + share of differing pixels).
+// On failure the actual image and a diff image are written into the build tree and named in the message.
+// Baselines change only on purpose:  FV_UPDATE_SNAPSHOTS=1 ctest -R snapshot   (then review and commit).
+#include "figures/render_session.hpp"
+
+#include "fv/atomic_file.hpp"
+#include "fv/figure_data.hpp"
+#include "fv/figures.hpp"
+#include "fv/gfx/compare.hpp"
+#include "fv/gfx/png.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <sys/stat.h>
+
+namespace {
+
+constexpr int kWidth = 960, kHeight = 600;
+// llvmpipe output is byte-identical run to run on one Mesa version; the tolerance absorbs antialiasing
+// differences of another build without letting a moved curve (hundreds of pixels) through.
+constexpr int kMaxChannelDiff = 32;
+constexpr double kMaxShare = 0.0005;
+
+std::string read_all(const std::string& path, bool& ok) {
+    std::ifstream f(path, std::ios::binary);
+    ok = static_cast<bool>(f);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+std::string png_bytes(const fv::gfx::Image& img) {
+    const auto v = fv::gfx::encode_png(img);
+    return {reinterpret_cast<const char*>(v.data()), v.size()};
+}
+
+void check_snapshot(fv::app::RenderSession& session, const fv::FigureSpec& spec) {
+    const std::string baseline = std::string(FV_SNAPSHOT_DIR) + "/" + spec.id + ".png";
+    const std::string outdir = FV_SNAPSHOT_OUT;
+    ::mkdir(outdir.c_str(), 0755);
+    const fv::gfx::Image actual = session.render_figure(fv::compute_figure(spec));
+    const char* update = std::getenv("FV_UPDATE_SNAPSHOTS");
+    if (update && std::string(update) == "1") {
+        REQUIRE(fv::write_file_atomic(baseline, png_bytes(actual)).empty());
+        WARN("updated baseline " << baseline);
+        return;
+    }
+    bool ok = false;
+    const std::string bytes = read_all(baseline, ok);
+    const std::string actual_path = outdir + "/" + spec.id + ".actual.png";
+    if (!ok) {
+        fv::write_file_atomic(actual_path, png_bytes(actual));
+        FAIL("missing baseline " << baseline << " (actual image: " << actual_path
+                                 << "; create baselines with FV_UPDATE_SNAPSHOTS=1)");
+    }
+    const fv::gfx::Image expected =
+        fv::gfx::decode_png(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
+    const auto cmp = fv::gfx::compare_images(actual, expected, kMaxChannelDiff, kMaxShare);
+    if (!cmp.passed) {
+        const std::string diff_path = outdir + "/" + spec.id + ".diff.png";
+        fv::write_file_atomic(actual_path, png_bytes(actual));
+        if (!cmp.diff.empty()) fv::write_file_atomic(diff_path, png_bytes(cmp.diff));
+        FAIL_CHECK(spec.id << " differs from " << baseline << ": max channel difference "
+                           << cmp.max_channel_diff << ", " << cmp.differing_share * 100
+                           << "% of pixels differ (allowed " << kMaxShare * 100
+                           << "%); actual: " << actual_path << ", diff: " << diff_path);
+    }
+}
+
+} // namespace
+
+TEST_CASE("Snapshot: every paper figure matches its baseline", "[snapshot]") {
+    fv::gfx::ContextOptions o;
+    o.backend = fv::gfx::Backend::Headless;
+    o.width = kWidth;
+    o.height = kHeight;
+    fv::app::RenderSession session(o);
+    for (const auto& spec : fv::paper_figures()) check_snapshot(session, spec);
+    check_snapshot(session, fv::scene_figure({0.3, fv::kPi / 6, 2, 1}));
+}
+
+TEST_CASE("Snapshot comparison catches a changed picture", "[snapshot]") {
+    // The tolerance must not swallow a real change: one figure against another's baseline fails.
+    fv::gfx::ContextOptions o;
+    o.width = kWidth;
+    o.height = kHeight;
+    fv::app::RenderSession session(o);
+    const auto a = session.render_figure(fv::compute_figure(*fv::find_figure("fig14a")));
+    const auto b = session.render_figure(fv::compute_figure(*fv::find_figure("fig14b")));
+    CHECK_FALSE(fv::gfx::compare_images(a, b, kMaxChannelDiff, kMaxShare).passed);
+    CHECK(fv::gfx::compare_images(a, a, 0, 0).passed);
+}
