@@ -46,17 +46,14 @@ Sample PaperStepper::sample() const {
     return s;
 }
 
-void PaperStepper::step() {
-    const double zss = p_.zss();
-    const double ds = dsin_[static_cast<std::size_t>(k_)];
-    // P(t + dt) - P(t), Eqs. (28)-(29).
-    const Vec2 dP{p_.zeta * dtau_ + ds * std::cos(p_.theta), ds * std::sin(p_.theta)};
+Vec2 dahl_update(const Params& p, Vec2 lag, Vec2 dP) {
+    const double zss = p.zss();
     // P(t + dt) - T(t): the asperity is pulled along this line (Fig. 8).
-    const Vec2 pull = lag_ + dP;
+    const Vec2 pull = lag + dP;
     const double d = pull.norm(); // |T(t) P(t+dt)|
-    const double z = lag_.norm(); // Eq. (18)
+    const double z = lag.norm();  // Eq. (18)
     double z_new;
-    if (p_.i == 0) {
+    if (p.i == 0) {
         // Eq. (27): sticks (deflection follows P) below z_ss, slips at z_ss. Never Eq. (20) with i = 0:
         // pow(0, 0) == 1 would let z run past z_ss.
         z_new = std::min(d, zss);
@@ -66,14 +63,21 @@ void PaperStepper::step() {
         // Eq. (17) with the exponent i of Eq. (16). The base is >= 0 whenever z <= z_ss; the clamp keeps
         // pow() finite for non-integer i if a coarse step ever left z above z_ss.
         const double base = std::max(0.0, 1 - sgn * z / zss);
-        const double factor = p_.i == 1 ? base : std::pow(base, p_.i);
+        const double factor = p.i == 1 ? base : std::pow(base, p.i);
         z_new = z + v_dt * factor; // Eq. (20)
         // Guards that act only when P moves by a sizeable fraction of z_ss in one step: the continuous
         // model (16) keeps 0 <= z <= z_ss, a too-coarse explicit step can overshoot either bound.
         z_new = std::clamp(z_new, 0.0, std::max(zss, z));
     }
     // Eqs. (21)-(22): T(t+dt) lies on the pull line at distance z(t+dt) from P(t+dt).
-    lag_ = d > 0 ? Vec2(pull * (z_new / d)) : Vec2(Vec2::Zero());
+    return d > 0 ? Vec2(pull * (z_new / d)) : Vec2(Vec2::Zero());
+}
+
+void PaperStepper::step() {
+    const double ds = dsin_[static_cast<std::size_t>(k_)];
+    // P(t + dt) - P(t), Eqs. (28)-(29).
+    const Vec2 dP{p_.zeta * dtau_ + ds * std::cos(p_.theta), ds * std::sin(p_.theta)};
+    lag_ = dahl_update(p_, lag_, dP);
     if (++k_ == n_) {
         k_ = 0;
         ++period_;
