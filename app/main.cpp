@@ -18,10 +18,10 @@ int main(int argc, char** argv) {
     CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)",
                  "frictionviz"};
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
-    app.require_subcommand(1);
+    app.require_subcommand(0, 1);
     const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app),
                                         add_trace_command(app),
-                                        add_render_command(app)};
+                                        add_render_command(app), add_gui_command(app)};
     // CLI11 would report an unknown subcommand as a missing one; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
@@ -53,8 +53,13 @@ int main(int argc, char** argv) {
         return kExitUsage;
     }
     try {
+        bool ran = false;
         for (const auto& c : commands)
-            if (c.app->parsed()) c.run();
+            if (c.app->parsed()) c.run(), ran = true;
+        // No command: the interactive window (with its defaults).
+        if (!ran)
+            for (const auto& c : commands)
+                if (c.app->get_name() == "gui") c.run();
     } catch (const UsageError& e) {
         std::fprintf(stderr, "frictionviz: %s\n", e.what());
         return kExitUsage;

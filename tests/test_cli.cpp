@@ -208,3 +208,27 @@ TEST_CASE("CLI: render writes a PNG and its CSV, and fails cleanly without OSMes
     CHECK(err.find("OSMesa") != std::string::npos);
     CHECK(::access((dir2 + "/fig5.png").c_str(), F_OK) != 0);
 }
+
+TEST_CASE("CLI: gui without a display says what to run instead", "[cli][gui]") {
+    const std::string err = scratch_dir() + "/gui-err.txt";
+    const std::string cmd =
+        "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " gui --frames 2 >/dev/null 2>" + err;
+    const int status = std::system(cmd.c_str());
+    CHECK(WEXITSTATUS(status) == 1);
+    const std::string text = slurp(err);
+    CHECK(lines(text) == 1);
+    CHECK(text.find("frictionviz render") != std::string::npos);
+    // No subcommand at all means the window, too.
+    const int status2 = std::system(
+        ("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " >/dev/null 2>&1").c_str());
+    CHECK(WEXITSTATUS(status2) == 1);
+}
+
+TEST_CASE("CLI: a malformed gui script is a usage error naming file and line", "[cli][gui]") {
+    const std::string script = scratch_dir() + "/bad-script.txt";
+    std::ofstream(script) << "0 zeta 0.3\n5 warp 9\n";
+    const Run r = run("gui --headless --frames 3 --script " + script);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find(script + ":2") != std::string::npos);
+}

@@ -79,7 +79,7 @@ gfx::Color ink_color(Ink ink, std::size_t series_index) {
     return gfx::palette(series_index);
 }
 
-void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds) {
+gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds) {
     gfx::Plot plot(bounds);
     plot.title = panel.title;
     plot.x_axis.title = panel.x_title;
@@ -89,10 +89,20 @@ void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& b
     plot.y_axis.min = panel.y_min;
     plot.y_axis.max = panel.y_max;
     plot.equal_aspect = panel.equal_aspect;
+    if (panel.legend == "none")
+        plot.legend = gfx::LegendPosition::None;
+    else if (panel.legend == "top-left")
+        plot.legend = gfx::LegendPosition::TopLeft;
+    else if (panel.legend == "top-right")
+        plot.legend = gfx::LegendPosition::TopRight;
+    else if (panel.legend == "bottom-left")
+        plot.legend = gfx::LegendPosition::BottomLeft;
+    else if (panel.legend == "bottom-right")
+        plot.legend = gfx::LegendPosition::BottomRight;
     for (std::size_t k = 0; k < panel.series.size(); ++k) {
         const SeriesData& s = panel.series[k];
         gfx::SeriesStyle st;
-        st.color = ink_color(s.ink, k);
+        st.color = ink_color(s.ink, k).with_alpha(s.opacity);
         st.line_width = s.width;
         st.line = line_style(s.dash);
         st.marker = marker_shape(s.mark);
@@ -100,42 +110,67 @@ void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& b
     }
     const PanelData* pd = &panel;
     plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
+        // Shapes first, then every label: text and shapes are separate draw batches, and the software
+        // renderer pays per batch. Labels belong on top anyway.
         for (const CircleData& ci : pd->circles)
             c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
-                     {ink_color(ci.ink, 0), 1.2f, line_style(ci.dash)});
+                     {ink_color(ci.ink, 0), ci.width, line_style(ci.dash)});
         gfx::Vec2 centre{0, 0};
         for (const PointData& p : pd->points)
             centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(pd->points.size()));
+        for (const SegmentData& s : pd->segments)
+            c.line(to_px(tf, s.a), to_px(tf, s.b), {ink_color(s.ink, 0), s.width, line_style(s.dash)});
+        for (const ArrowData& a : pd->arrows) {
+            const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+            const float len = std::hypot(to.x - from.x, to.y - from.y);
+            if (len < 2) continue;
+            c.arrow(from, to,
+                    {{ink_color(a.ink, 0), a.width, gfx::LineStyle::Solid},
+                     std::min(14.f, 0.5f * len),
+                     std::min(10.f, 0.4f * len)});
+        }
+        for (const PointData& p : pd->points)
+            c.marker(to_px(tf, p.at),
+                     {marker_shape(p.mark), p.size, ink_color(p.ink, 0), gfx::colors::white, 1.5f});
+
         for (const SegmentData& s : pd->segments) {
+            if (s.label.empty()) continue;
             const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
-            c.line(a, b, {ink_color(s.ink, 0), s.width, line_style(s.dash)});
-            if (!s.label.empty()) {
-                const gfx::Vec2 m = a + (b - a) * s.label_at;
-                // Unit normal pointing left of a->b on screen (y down).
-                float nx = b.y - a.y, ny = -(b.x - a.x);
-                const float len = std::max(1e-3f, std::hypot(nx, ny));
-                nx /= len, ny /= len;
-                const bool flip =
-                    s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
-                if (flip) nx = -nx, ny = -ny;
-                gfx::TextStyle ts;
-                ts.size = 15;
-                ts.color = ink_color(s.ink, 0);
-                ts.halign =
-                    nx > 0.3f ? gfx::HAlign::Left : (nx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
-                ts.valign =
-                    ny > 0.3f ? gfx::VAlign::Top : (ny < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
-                c.text({m.x + nx * 8, m.y + ny * 8}, s.label, ts);
-            }
+            const gfx::Vec2 m = a + (b - a) * s.label_at;
+            // Unit normal pointing left of a->b on screen (y down).
+            float nx = b.y - a.y, ny = -(b.x - a.x);
+            const float len = std::max(1e-3f, std::hypot(nx, ny));
+            nx /= len, ny /= len;
+            const bool flip =
+                s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
+            if (flip) nx = -nx, ny = -ny;
+            gfx::TextStyle ts;
+            ts.size = 15;
+            ts.color = ink_color(s.ink, 0);
+            ts.halign =
+                nx > 0.3f ? gfx::HAlign::Left : (nx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
+            ts.valign =
+                ny > 0.3f ? gfx::VAlign::Top : (ny < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
+            c.text({m.x + nx * 8, m.y + ny * 8}, s.label, ts);
         }
-        for (const PointData& p : pd->points) {
-            const gfx::Vec2 at = to_px(tf, p.at);
-            const gfx::Color col = ink_color(p.ink, 0);
-            c.marker(at, {marker_shape(p.mark), p.size, col, gfx::colors::white, 1.5f});
-            label_point(c, at, centre, p, 15);
+        for (const ArrowData& a : pd->arrows) {
+            const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+            const float len = std::hypot(to.x - from.x, to.y - from.y);
+            if (len < 2 || a.label.empty()) continue;
+            gfx::TextStyle ts;
+            ts.size = 14;
+            ts.color = ink_color(a.ink, 0);
+            const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
+            ts.halign =
+                ux > 0.3f ? gfx::HAlign::Left : (ux < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
+            ts.valign =
+                uy > 0.3f ? gfx::VAlign::Top : (uy < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
+            c.text({to.x + ux * 6, to.y + uy * 6}, a.label, ts);
         }
+        for (const PointData& p : pd->points) label_point(c, to_px(tf, p.at), centre, p, 15);
     });
     plot.draw(canvas);
+    return plot.layout(canvas);
 }
 
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {

@@ -3,6 +3,7 @@
 
 #include "fv/figure_data.hpp"
 #include "fv/gfx/canvas.hpp"
+#include "fv/gfx/plot.hpp"
 
 namespace fv::app {
 
@@ -10,8 +11,8 @@ namespace fv::app {
 // put the top view on the left and the two plots stacked on the right.
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds);
 
-// One panel inside `bounds` (used by the app's own layouts too).
-void paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds);
+// One panel inside `bounds` (used by the app's own layouts too). Returns its data <-> pixel mapping.
+gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds);
 
 gfx::Color ink_color(Ink ink, std::size_t series_index);
 

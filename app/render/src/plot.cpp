@@ -339,21 +339,27 @@ void Plot::draw(Canvas& canvas) const {
     // Frame and outward ticks.
     const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
     canvas.stroke_rect({A.x0 + 0.5f, A.y0 + 0.5f, A.x1 - 0.5f, A.y1 - 0.5f}, axis);
+    // All tick marks first, then all labels: text and shapes are separate draw batches, and llvmpipe
+    // pays per batch (they do not overlap, so the order does not change a pixel).
+    for (const Tick& t : L.x_ticks) {
+        const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
+        canvas.line({x, A.y1}, {x, A.y1 + (t.major ? kTickLength : kTickLength * 0.6f)}, axis);
+    }
+    for (const Tick& t : L.y_ticks) {
+        const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
+        canvas.line({A.x0 - (t.major ? kTickLength : kTickLength * 0.6f), y}, {A.x0, y}, axis);
+    }
     TextStyle ts;
     ts.size = fs;
     for (const Tick& t : L.x_ticks) {
-        const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
-        const float len = t.major ? kTickLength : kTickLength * 0.6f;
-        canvas.line({x, A.y1}, {x, A.y1 + len}, axis);
         if (t.label.empty()) continue;
+        const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
         ts.halign = HAlign::Center, ts.valign = VAlign::Top;
         canvas.text({x, A.y1 + kTickLength + 3}, t.label, ts);
     }
     for (const Tick& t : L.y_ticks) {
-        const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
-        const float len = t.major ? kTickLength : kTickLength * 0.6f;
-        canvas.line({A.x0 - len, y}, {A.x0, y}, axis);
         if (t.label.empty()) continue;
+        const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
         ts.halign = HAlign::Right, ts.valign = VAlign::Middle;
         canvas.text({A.x0 - kTickLength - 4, y}, t.label, ts);
     }
@@ -417,7 +423,9 @@ void Plot::draw(Canvas& canvas) const {
                        {Color::hex(0xB0B0B0), 1.0f, LineStyle::Solid});
     TextStyle lt;
     lt.size = fs, lt.valign = VAlign::Middle;
-    float y = box.y0 + pad * 0.75f + 0.5f * row;
+    // Samples first, labels after (fewer draw batches; they do not overlap).
+    const float y_first = box.y0 + pad * 0.75f + 0.5f * row;
+    float y = y_first;
     for (std::size_t i : entries) {
         const Series& s = series_[i];
         const Color c = series_color(s, i);
@@ -428,7 +436,11 @@ void Plot::draw(Canvas& canvas) const {
             canvas.line({x0 + 0.5f * sample, cy - 6}, {x0 + 0.5f * sample, cy + 6},
                         {c, 1.2f, LineStyle::Solid});
         if (s.style.marker != MarkerShape::None) canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
-        canvas.text({x0 + sample + 8, y}, s.label, lt);
+        y += row;
+    }
+    y = y_first;
+    for (std::size_t i : entries) {
+        canvas.text({box.x0 + pad + sample + 8, y}, series_[i].label, lt);
         y += row;
     }
 }

@@ -25,6 +25,7 @@ struct SeriesData {
     Dash dash = Dash::solid;
     Mark mark = Mark::none;
     float width = 2;
+    float opacity = 1; // < 1: faded (older parts of a trail)
 };
 
 struct SegmentData {
@@ -47,11 +48,19 @@ struct PointData {
                                     // the middle of all marked points)
 };
 
+struct ArrowData {
+    Vec2 from, to; // data coordinates
+    Ink ink = Ink::black;
+    std::string label; // drawn beyond the head
+    float width = 2.5f;
+};
+
 struct CircleData {
     Vec2 center;
     double radius = 1;
     Ink ink = Ink::spring;
     Dash dash = Dash::dotted;
+    float width = 1.2f;
 };
 
 struct PanelData {
@@ -62,6 +71,8 @@ struct PanelData {
     std::vector<SegmentData> segments;
     std::vector<PointData> points;
     std::vector<CircleData> circles;
+    std::vector<ArrowData> arrows;
+    std::string legend = "best"; // best, none, top-left, top-right, bottom-left, bottom-right
 };
 
 // A table written next to the PNG: "<id><suffix>.csv".

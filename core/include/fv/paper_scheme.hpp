@@ -18,9 +18,9 @@ Vec2 body_point(const Params& p, double tau);
 // dP/dtau, from Eq. (1).
 Vec2 body_velocity(const Params& p, double tau);
 
-// One step of the scheme, Eqs. (17)-(27): from the lag L = P(t) - T(t) and the body's move dP = P(t+dt) - P(t),
-// the lag L(t+dt) = P(t+dt) - T(t+dt). This is the whole model; PaperStepper and the app's live simulation
-// both step with it.
+// One step of the scheme, Eqs. (17)-(27): from the lag L = P(t) - T(t) and the body's move dP = P(t+dt) -
+// P(t), the lag L(t+dt) = P(t+dt) - T(t+dt). This is the whole model; PaperStepper and the app's live
+// simulation both step with it.
 Vec2 dahl_update(const Params& p, Vec2 lag, Vec2 dP);
 
 // One recorded instant.

@@ -1,0 +1,75 @@
+// frictionviz gui (also: no subcommand): the interactive window; --headless runs the same app into an
+// OSMesa buffer (scripted tests, benchmarks).
+#include "commands.hpp"
+#include "errors.hpp"
+#include "model_options.hpp"
+#include "output.hpp"
+
+#include "gui/gui_app.hpp"
+
+#include <memory>
+
+namespace fv::cli {
+
+Command add_gui_command(CLI::App& root) {
+    struct Args {
+        ModelArgs model;
+        bool headless = false;
+        int frames = 0, bench = 0;
+        std::string script, screenshot;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
+    cmd->add_option("--zeta", a->model.zeta, "initial velocity ratio")->check(number_in(kZetaRange));
+    cmd->add_option("--theta", a->model.theta_deg, "initial vibration angle in degrees")
+        ->check(number_in(kThetaRange));
+    cmd->add_option("--rdisp", a->model.rdisp, "initial displacement ratio")->check(number_in(kRdispRange));
+    cmd->add_option("--i", a->model.i, "initial Dahl exponent")->check(number_in(kIRange));
+    cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
+    cmd->add_flag("--headless", a->headless,
+                  "render into an OSMesa buffer instead of a window (same pixels)");
+    cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
+        ->check(integer_in(1, 1000000));
+    cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)");
+    cmd->add_option("--screenshot", a->screenshot, "write the last frame to this PNG (with --frames)");
+    cmd->add_option("--bench", a->bench,
+                    "benchmark: N frames with a slider changing every frame; prints frame times")
+        ->check(integer_in(10, 100000));
+    return {cmd, [a, cmd] {
+                app::GuiOptions o;
+                o.headless = a->headless;
+                o.frames = a->frames;
+                o.bench_frames = a->bench;
+                o.script = a->script;
+                o.screenshot = a->screenshot;
+                if (!o.screenshot.empty()) {
+                    if (o.frames == 0)
+                        throw UsageError("--screenshot needs --frames N (the frame to capture)");
+                    check_out(o.screenshot, "--screenshot");
+                }
+                // Start from the given flags, the rest from Fig. 14a's parameters.
+                if (cmd->get_option("--zeta")->count()) o.params.zeta = a->model.zeta;
+                if (cmd->get_option("--theta")->count()) o.params.theta = a->model.theta_deg * kPi / 180;
+                if (cmd->get_option("--rdisp")->count()) o.params.rdisp = a->model.rdisp;
+                if (cmd->get_option("--i")->count()) o.params.i = a->model.i;
+                if (cmd->get_option("--model")->count()) o.model = model_of(a->model);
+                try {
+                    const int rc = app::run_gui(o);
+                    if (rc != 0) throw RuntimeFailure("the window closed with an error");
+                } catch (const UsageError&) {
+                    throw;
+                } catch (const std::exception& e) {
+                    const std::string what = e.what();
+                    if (what.find("display") != std::string::npos)
+                        throw RuntimeFailure(
+                            "no display to open a window on (" + what +
+                            "); render figures headless with `frictionviz render --figure all --out DIR`, "
+                            "or run the window under xvfb-run");
+                    if (what.find(a->script) == 0 && !a->script.empty())
+                        throw UsageError("--script: " + what);
+                    throw RuntimeFailure(what);
+                }
+            }};
+}
+
+} // namespace fv::cli

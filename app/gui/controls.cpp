@@ -1,0 +1,157 @@
+#include "controls.hpp"
+
+#include "fv/figures.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace fv::app {
+
+void UiEdits::merge(const UiEdits& o) {
+    if (o.model) model = o.model;
+    if (o.params) params = o.params;
+    if (o.playing) playing = o.playing;
+    if (o.speed) speed = o.speed;
+    if (o.trail_periods) trail_periods = o.trail_periods;
+    if (o.preset) preset = o.preset;
+    step |= o.step;
+    reset |= o.reset;
+    screenshot |= o.screenshot;
+    export_csv |= o.export_csv;
+    quit |= o.quit;
+}
+
+std::vector<const FigureSpec*> presets() {
+    std::vector<const FigureSpec*> v;
+    for (const auto& f : paper_figures())
+        if (f.kind == FigureKind::period_view) v.push_back(&f);
+    return v;
+}
+
+namespace {
+
+bool slider_double(const char* label, double* v, double lo, double hi, const char* format, bool log = false) {
+    return ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, format,
+                               log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+}
+
+void readout(const char* name, const char* fmt, double v) {
+    ImGui::TextUnformatted(name);
+    ImGui::SameLine(130);
+    ImGui::Text(fmt, v);
+}
+
+} // namespace
+
+UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                      bool busy, float width, float height) {
+    UiEdits e;
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::Begin("frictionviz", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    ImGui::PushItemWidth(-64);
+
+    Params p = ui.params;
+    double theta_deg = p.theta * 180 / kPi;
+    bool changed = false;
+    ImGui::TextUnformatted("Parameters");
+    changed |= slider_double("ζ", &p.zeta, 0, 3, "%.3f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("velocity ratio ζ = v_b / v_v, Eq. (6)");
+    changed |= slider_double("θ [°]", &theta_deg, 0, 180, "%.1f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("angle of the vibration to the sliding velocity, Eq. (1)");
+    for (double q : {0.0, 30.0, 45.0, 60.0, 90.0}) {
+        char b[16];
+        std::snprintf(b, sizeof b, "%g°", q);
+        if (ImGui::SmallButton(b)) theta_deg = q, changed = true;
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    const bool dahl = ui.model == Model::dahl;
+    if (!dahl) ImGui::BeginDisabled();
+    changed |= slider_double("r_disp", &p.rdisp, 0.1, 100, "%.3g", true);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact");
+    changed |= slider_double("i", &p.i, 0, 3, "%.2f");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Dahl shape exponent, Eq. (12); i = 0 sticks below z_ss (Eq. 27)");
+    if (ImGui::SmallButton("i = 0 (stiction)")) p.i = 0, changed = true;
+    ImGui::SameLine();
+    if (ImGui::SmallButton("i = 1")) p.i = 1, changed = true;
+    if (!dahl) ImGui::EndDisabled();
+    int model = dahl ? 0 : 1;
+    if (ImGui::RadioButton("Dahl (compliant)", &model, 0)) e.model = Model::dahl;
+    ImGui::SameLine();
+    if (ImGui::RadioButton("rigid", &model, 1)) e.model = Model::rigid;
+    if (changed) {
+        p.theta = theta_deg * kPi / 180;
+        e.params = p;
+    }
+
+    ImGui::Separator();
+    ImGui::TextUnformatted("Paper figures");
+    for (const FigureSpec* f : presets()) {
+        if (ImGui::Button(f->id.c_str())) e.preset = f->id;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+
+    ImGui::Separator();
+    ImGui::TextUnformatted("Animation");
+    if (ImGui::Button(ui.playing ? "Pause [Space]" : "Play [Space]")) e.playing = !ui.playing;
+    ImGui::SameLine();
+    if (ImGui::Button("Step [→]")) e.step = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset [R]")) e.reset = true;
+    double speed = ui.speed, trail = ui.view.trail_periods;
+    if (slider_double("periods/s", &speed, 0.02, 3, "%.2f", true)) e.speed = speed;
+    if (slider_double("trail", &trail, 0.25, 4, "%.2f periods")) e.trail_periods = trail;
+
+    ImGui::Separator();
+    ImGui::TextUnformatted("Now");
+    readout("τ / 2π", "%.2f", sim.tau() / (2 * kPi));
+    readout("z / z_ss", "%.3f", sim.model() == Model::rigid ? 1.0 : sim.z() / sim.params().zss());
+    ImGui::TextUnformatted("tip");
+    ImGui::SameLine(130);
+    ImGui::TextUnformatted(sim.model() == Model::rigid ? "rigid" : (sim.slipping() ? "slips" : "sticks"));
+    if (std::isfinite(sim.last_period_mean().x()))
+        readout("mean F_x, last period", "%.4f", sim.last_period_mean().x());
+    ImGui::Separator();
+    ImGui::TextUnformatted(busy ? "Steady state (updating…)" : "Steady state");
+    if (curves) {
+        readout("r_x", "%.5f", curves->current.rx);
+        readout("r_y", "%.5f", curves->current.ry);
+        if (curves->request.model == Model::dahl) {
+            ImGui::TextUnformatted("periods to steady");
+            ImGui::SameLine(130);
+            ImGui::Text("%d (%s)", curves->current.periods,
+                        curves->current.status == SteadyStatus::converged ? "reached" : "NOT reached");
+            readout("error est.", "%.1e", curves->current.error_estimate);
+        }
+    }
+    ImGui::Separator();
+    if (ImGui::Button("Export trace CSV")) e.export_csv = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Screenshot [S]")) e.screenshot = true;
+    if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
+    ImGui::PopItemWidth();
+    ImGui::End();
+    return e;
+}
+
+UiEdits keyboard_edits(const UiState& ui) {
+    UiEdits e;
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return e;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) e.playing = !ui.playing;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) e.step = true;
+    if (ImGui::IsKeyPressed('R', false)) e.reset = true;
+    if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;
+    return e;
+}
+
+} // namespace fv::app

@@ -1,0 +1,21 @@
+// The control panel (Dear ImGui): sliders for zeta, theta, r_disp, i, the model, playback, presets, readouts.
+#pragma once
+
+#include "ratio_worker.hpp"
+#include "ui_state.hpp"
+
+#include "fv/live_sim.hpp"
+
+namespace fv::app {
+
+// Draws the panel at the left edge (width in logical pixels) and returns what the user changed.
+UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                      bool busy, float width, float height);
+
+// Space, Right, R, S, Esc (ignored while a text field has the keyboard).
+UiEdits keyboard_edits(const UiState& ui);
+
+// The paper's top-view figures as presets: fig9, fig14a, fig14b, fig17.
+std::vector<const FigureSpec*> presets();
+
+} // namespace fv::app

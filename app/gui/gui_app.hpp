@@ -1,0 +1,24 @@
+// The interactive app: one loop for the window and for headless runs (scripted tests, benchmarks).
+#pragma once
+
+#include "fv/params.hpp"
+
+#include <string>
+
+namespace fv::app {
+
+struct GuiOptions {
+    bool headless = false; // draw into an OSMesa buffer instead of a window (same pixels)
+    int width = 1280, height = 800;
+    Model model = Model::dahl;
+    Params params{0.15, kPi / 2, 2, 1};
+    int frames = 0;         // > 0: stop after this many frames (scripted runs)
+    std::string script;     // scripted slider changes, see script.hpp
+    std::string screenshot; // write the last frame here (PNG)
+    int bench_frames = 0;   // > 0: change the sliders every frame and print frame-time percentiles
+};
+
+// Returns the process exit code. Throws std::runtime_error (one line) when no context can be made.
+int run_gui(const GuiOptions& options);
+
+} // namespace fv::app

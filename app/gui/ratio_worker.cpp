@@ -1,0 +1,86 @@
+#include "ratio_worker.hpp"
+
+#include "fv/figures.hpp"
+#include "fv/rigid.hpp"
+
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
+namespace fv::app {
+
+RatioWorker::RatioWorker() : thread_([this] { run(); }) {}
+
+RatioWorker::~RatioWorker() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stop_ = true;
+    }
+    cv_.notify_all();
+    thread_.join();
+}
+
+void RatioWorker::request(const RatioRequest& r) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (last_requested_ && *last_requested_ == r) return;
+        last_requested_ = r;
+        pending_ = r;
+        busy_ = true;
+        ++generation_;
+    }
+    cv_.notify_all();
+}
+
+std::optional<RatioCurves> RatioWorker::latest() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return result_;
+}
+
+void RatioWorker::wait_idle() const {
+    std::unique_lock<std::mutex> lock(mutex_);
+    cv_.wait(lock, [this] { return !busy_; });
+}
+
+void RatioWorker::run() {
+    // Lowest CPU priority: on two cores the renderer (llvmpipe's threads) must win, the curves can wait a
+    // frame. (On Linux, setpriority on a thread id applies to that thread alone.)
+    ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+    for (;;) {
+        RatioRequest req;
+        std::uint64_t gen = 0;
+        {
+            std::unique_lock<std::mutex> lock(mutex_);
+            cv_.wait(lock, [this] { return stop_ || pending_.has_value(); });
+            if (stop_) return;
+            req = *pending_;
+            pending_.reset();
+            gen = generation_;
+        }
+        // A newer request makes this one moot: check between points and give up early.
+        auto outdated = [&] { return generation_ != gen; };
+        RatioCurves out;
+        out.request = req;
+        out.current = steady_ratio(req.model, req.params);
+        out.zetas = ratio_zeta_grid();
+        bool aborted = false;
+        for (double z : out.zetas) {
+            if (outdated()) {
+                aborted = true;
+                break;
+            }
+            out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
+            if (req.model == Model::dahl) {
+                Params q = req.params;
+                q.zeta = z;
+                out.model_rx.push_back(dahl_steady(q).rx);
+            }
+        }
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!aborted) result_ = std::move(out);
+        if (!pending_) busy_ = false;
+        cv_.notify_all();
+    }
+}
+
+} // namespace fv::app

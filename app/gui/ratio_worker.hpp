@@ -1,0 +1,63 @@
+// Recomputes the r_x(zeta) curves and the steady-state readouts on a background thread, so that the
+// window never waits for them. Requests supersede each other: a slider drag only ever costs the last one.
+#pragma once
+
+#include "fv/params.hpp"
+#include "fv/steady_state.hpp"
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <thread>
+#include <vector>
+
+namespace fv::app {
+
+struct RatioRequest {
+    Model model = Model::dahl;
+    Params params;
+    bool operator==(const RatioRequest& o) const {
+        return model == o.model && params.zeta == o.params.zeta && params.theta == o.params.theta &&
+               params.rdisp == o.params.rdisp && params.i == o.params.i;
+    }
+};
+
+struct RatioCurves {
+    RatioRequest request;
+    std::vector<double> zetas, model_rx, rigid_rx; // model_rx empty for the rigid model
+    SteadyResult current;                          // the steady state at request.params
+};
+
+class RatioWorker {
+  public:
+    RatioWorker();
+    ~RatioWorker();
+    RatioWorker(const RatioWorker&) = delete;
+    RatioWorker& operator=(const RatioWorker&) = delete;
+
+    // Asks for curves at these parameters; returns at once. Ignored if equal to the last request.
+    void request(const RatioRequest& r);
+    // The newest finished result, if any (copy; cheap enough at ~100 points).
+    std::optional<RatioCurves> latest() const;
+    // True while a request is being worked on or waiting.
+    bool busy() const { return busy_; }
+    // Blocks until the last request is finished (scripted runs and tests want the final picture).
+    void wait_idle() const;
+
+  private:
+    void run();
+
+    mutable std::mutex mutex_;
+    mutable std::condition_variable cv_;
+    std::optional<RatioRequest> pending_;
+    std::optional<RatioRequest> last_requested_;
+    std::optional<RatioCurves> result_;
+    std::atomic<std::uint64_t> generation_{0};
+    std::atomic<bool> busy_{false};
+    bool stop_ = false;
+    std::thread thread_;
+};
+
+} // namespace fv::app

@@ -1,0 +1,104 @@
+#include "script.hpp"
+
+#include "fv/figures.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace fv::app {
+namespace {
+
+bool needs_value(const std::string& a) {
+    return a == "zeta" || a == "theta" || a == "rdisp" || a == "i" || a == "speed" || a == "trail" ||
+           a == "model" || a == "preset";
+}
+bool known(const std::string& a) {
+    return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset";
+}
+
+} // namespace
+
+Script load_script(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error(path + ": cannot read the script");
+    Script s;
+    std::string line;
+    int no = 0;
+    while (std::getline(in, line)) {
+        ++no;
+        if (const auto h = line.find('#'); h != std::string::npos) line.erase(h);
+        std::istringstream ls(line);
+        int frame = 0;
+        std::string action, value, extra;
+        if (!(ls >> frame)) {
+            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+            throw std::runtime_error(path + ":" + std::to_string(no) + ": expected 'FRAME ACTION [VALUE]'");
+        }
+        const auto where = path + ":" + std::to_string(no) + ": ";
+        if (frame < 0) throw std::runtime_error(where + "frame must be >= 0");
+        if (!(ls >> action) || !known(action))
+            throw std::runtime_error(
+                where + "unknown action '" + action +
+                "'; allowed: zeta theta rdisp i model play pause step reset speed trail preset");
+        if (needs_value(action)) {
+            if (!(ls >> value)) throw std::runtime_error(where + "'" + action + "' needs a value");
+            if (action == "model" && value != "dahl" && value != "rigid")
+                throw std::runtime_error(where + "model must be dahl or rigid");
+            if (action == "preset" && !find_figure(value))
+                throw std::runtime_error(where + "unknown preset '" + value + "'; allowed: " + figure_ids());
+            if (action != "model" && action != "preset") {
+                char* end = nullptr;
+                const double v = std::strtod(value.c_str(), &end);
+                if (*end != '\0' || !std::isfinite(v))
+                    throw std::runtime_error(where + "'" + value + "' is not a number");
+            }
+        }
+        if (ls >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
+        s.lines[frame].push_back(action + " " + value);
+    }
+    return s;
+}
+
+UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
+    UiEdits e;
+    const auto it = s.lines.find(frame);
+    if (it == s.lines.end()) return e;
+    Params p = ui.params;
+    bool params_changed = false;
+    for (const std::string& entry : it->second) {
+        std::istringstream ls(entry);
+        std::string a, v;
+        ls >> a >> v;
+        const double x = (a == "model" || a == "preset" || v.empty()) ? 0 : std::stod(v);
+        if (a == "zeta")
+            p.zeta = x, params_changed = true;
+        else if (a == "theta")
+            p.theta = x * kPi / 180, params_changed = true;
+        else if (a == "rdisp")
+            p.rdisp = x, params_changed = true;
+        else if (a == "i")
+            p.i = x, params_changed = true;
+        else if (a == "model")
+            e.model = v == "rigid" ? Model::rigid : Model::dahl;
+        else if (a == "play")
+            e.playing = true;
+        else if (a == "pause")
+            e.playing = false;
+        else if (a == "step")
+            e.step = true;
+        else if (a == "reset")
+            e.reset = true;
+        else if (a == "speed")
+            e.speed = x;
+        else if (a == "trail")
+            e.trail_periods = x;
+        else if (a == "preset")
+            e.preset = v;
+    }
+    if (params_changed) e.params = p;
+    return e;
+}
+
+} // namespace fv::app

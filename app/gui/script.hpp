@@ -1,0 +1,23 @@
+// Scripted input for tests and demos: "FRAME ACTION [VALUE]" per line, '#' starts a comment.
+// Actions: zeta V, theta DEG, rdisp V, i V, model dahl|rigid, play, pause, step, reset, speed V, trail V,
+// preset ID. Edits of frame f are applied at the start of frame f, like edits from the panel.
+#pragma once
+
+#include "ui_state.hpp"
+
+#include <map>
+#include <string>
+
+namespace fv::app {
+
+struct Script {
+    std::map<int, std::vector<std::string>> lines; // frame -> "ACTION VALUE" entries, in file order
+};
+
+// Throws std::runtime_error "FILE:LINE: reason" on a malformed line.
+Script load_script(const std::string& path);
+
+// The edits of `frame`, given the state they modify.
+UiEdits script_edits(const Script& s, int frame, const UiState& ui);
+
+} // namespace fv::app
