@@ -1,11 +1,15 @@
 #!/usr/bin/env bash
-# The main job: builds, then renders every figure of the paper (PNG + CSV) into screenshots/, headless.
-# (The interactive window, where there is a display, arrives with the app; see README.)
+# The main job: builds, then opens the interactive window where there is a display; where there is none,
+# renders every figure of the paper (PNG + CSV) into screenshots/, headless.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
 FV=build/app/frictionviz
+if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
+  exec $FV gui
+fi
 mkdir -p screenshots
 $FV render --figure all --out screenshots
 $FV render --figure scene --zeta 0.3 --theta 30 --rdisp 2 --i 1 --out screenshots
-echo "Figures are in screenshots/ (PNG with the data behind each one as CSV)."
+$FV gui --headless --frames 150 --script tests/gui_script.txt --screenshot screenshots/app.png
+echo "No display: figures rendered into screenshots/ (PNG with the data behind each one as CSV)."
