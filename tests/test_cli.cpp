@@ -232,3 +232,16 @@ TEST_CASE("CLI: a malformed gui script is a usage error naming file and line", "
     CHECK(lines(r.err) == 1);
     CHECK(r.err.find(script + ":2") != std::string::npos);
 }
+
+TEST_CASE("CLI: render is deterministic: the same command gives byte-identical PNGs", "[cli][render]") {
+    const std::string a = scratch_dir() + "/det-a", b = scratch_dir() + "/det-b";
+    REQUIRE(std::system(("mkdir -p " + a + " " + b).c_str()) == 0);
+    REQUIRE(run("render --figure fig14b,fig15 --size 480x320 --out " + a).code == 0);
+    REQUIRE(run("render --figure fig14b,fig15 --size 480x320 --out " + b).code == 0);
+    for (const char* f : {"/fig14b.png", "/fig15.png", "/fig15.csv"}) {
+        const std::string x = slurp(a + f), y = slurp(b + f);
+        CAPTURE(f);
+        CHECK(!x.empty());
+        CHECK(x == y);
+    }
+}
