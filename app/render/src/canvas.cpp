@@ -276,19 +276,36 @@ const Rect& Canvas::clip() const {
 void Canvas::fill_rect(const Rect& r, Color c) {
     const float ratio = impl_->ratio;
     auto on_pixel = [ratio](float v) { return std::floor(v * ratio) == v * ratio; };
-    if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
-        // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
+    auto clear = [this](const Rect& area, Color col) {
         if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
         const Rect& cur = impl_->clips.back();
         Batch b;
         b.clear = true;
-        b.clear_color = c;
-        b.clip = {std::max(r.x0, cur.x0), std::max(r.y0, cur.y0), std::min(r.x1, cur.x1),
-                  std::min(r.y1, cur.y1)};
+        b.clear_color = col;
+        b.clip = {std::max(area.x0, cur.x0), std::max(area.y0, cur.y0), std::min(area.x1, cur.x1),
+                  std::min(area.y1, cur.y1)};
         impl_->batches.push_back(b);
+    };
+    if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
+        // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
+        clear(r, c);
         return;
     }
     const float e = 2;
+    // Opaque and large: the pixels fully inside (with a pixel to spare) get the same colour from a
+    // scissored clear as from the SDF; only the border bands need the shader. llvmpipe pays per shaded
+    // pixel, and plot backgrounds are large.
+    const float ix0 = (std::ceil(r.x0 * ratio) + 1) / ratio, iy0 = (std::ceil(r.y0 * ratio) + 1) / ratio;
+    const float ix1 = (std::floor(r.x1 * ratio) - 1) / ratio, iy1 = (std::floor(r.y1 * ratio) - 1) / ratio;
+    if (c.a >= 1.0f && ix1 - ix0 > 4 && iy1 - iy0 > 4) {
+        clear({ix0, iy0, ix1, iy1}, c);
+        const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {0, 1, 0, 0};
+        impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, iy0, detail::kRect, a, b, c); // top
+        impl_->box_quad(r.x0 - e, iy1, r.x1 + e, r.y1 + e, detail::kRect, a, b, c); // bottom
+        impl_->box_quad(r.x0 - e, iy0, ix0, iy1, detail::kRect, a, b, c);           // left
+        impl_->box_quad(ix1, iy0, r.x1 + e, iy1, detail::kRect, a, b, c);           // right
+        return;
+    }
     impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
                     {0, 1, 0, 0}, c);
 }
@@ -300,8 +317,17 @@ void Canvas::stroke_rect(const Rect& r, const Stroke& s) {
         return;
     }
     const float hw = 0.5f * s.width, e = hw + 2;
-    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
-                    {hw, 0, 0, 0}, s.color);
+    const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {hw, 0, 0, 0};
+    if (r.width() > 2 * e + 2 && r.height() > 2 * e + 2) {
+        // The outline's SDF evaluated only on four bands along the edges (same pixels as one quad over
+        // the whole rectangle, whose inside would all be discarded, at a fraction of the cost).
+        impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y0 + e, detail::kRect, a, b, s.color);
+        impl_->box_quad(r.x0 - e, r.y1 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
+        impl_->box_quad(r.x0 - e, r.y0 + e, r.x0 + e, r.y1 - e, detail::kRect, a, b, s.color);
+        impl_->box_quad(r.x1 - e, r.y0 + e, r.x1 + e, r.y1 - e, detail::kRect, a, b, s.color);
+        return;
+    }
+    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
 }
 
 void Canvas::line(Vec2 a, Vec2 b, const Stroke& s) {
