@@ -1,0 +1,52 @@
+#include "fv/units.hpp"
+
+#include "fv/params.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace fv::units {
+
+namespace {
+
+// 1 kHz * 1 um = 1e3 /s * 1e-6 m = 1e-3 m/s.
+constexpr double kKhzUmToMps = 1e-3;
+
+void require(const char* name, double v, bool zero_allowed) {
+    if (std::isfinite(v) && (zero_allowed ? v >= 0 : v > 0)) return;
+    std::ostringstream os;
+    os << name << " = " << v << " is not allowed: need a finite number " << (zero_allowed ? ">= 0" : "> 0");
+    throw UnitError(os.str());
+}
+
+} // namespace
+
+double vibration_velocity(double amplitude_um, double frequency_khz) {
+    require("amplitude (um)", amplitude_um, false);
+    require("frequency (kHz)", frequency_khz, false);
+    return 2 * kPi * frequency_khz * amplitude_um * kKhzUmToMps;
+}
+
+double zeta_from_vb(double vb_m_s, double amplitude_um, double frequency_khz) {
+    require("v_b (m/s)", vb_m_s, true);
+    return vb_m_s / vibration_velocity(amplitude_um, frequency_khz);
+}
+
+double vb_from_zeta(double zeta, double amplitude_um, double frequency_khz) {
+    require("zeta", zeta, true);
+    return zeta * vibration_velocity(amplitude_um, frequency_khz);
+}
+
+double rdisp_from_zss(double amplitude_um, double zss_um) {
+    require("amplitude (um)", amplitude_um, false);
+    require("z_ss (um)", zss_um, false);
+    return amplitude_um / zss_um;
+}
+
+double zss_from_rdisp(double rdisp, double amplitude_um) {
+    require("rdisp", rdisp, false);
+    require("amplitude (um)", amplitude_um, false);
+    return amplitude_um / rdisp;
+}
+
+} // namespace fv::units
