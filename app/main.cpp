@@ -20,8 +20,8 @@ int main(int argc, char** argv) {
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
     app.require_subcommand(0, 1);
     const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app),
-                                        add_trace_command(app),
-                                        add_render_command(app), add_gui_command(app)};
+                                        add_trace_command(app), add_render_command(app),
+                                        add_gui_command(app),   add_fit_command(app)};
     // CLI11 would report an unknown subcommand as a missing one; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;

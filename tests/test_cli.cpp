@@ -245,3 +245,47 @@ TEST_CASE("CLI: render is deterministic: the same command gives byte-identical P
         CHECK(x == y);
     }
 }
+
+TEST_CASE("CLI: fit recovers r_disp and i of the synthetic data, as JSON", "[cli][fit]") {
+    const std::string out = scratch_dir() + "/fit.json";
+    const Run r = run(std::string("fit --data ") + FV_TEST_DATA_DIR +
+                      "/synthetic_theta90_rdisp3_i0.csv --amplitude 0.7 --format json --out " + out);
+    REQUIRE(r.code == 0);
+    CHECK(r.err.empty());
+    const auto j = nlohmann::json::parse(slurp(out));
+    CHECK(j["best"]["i"] == 0);
+    CHECK(j["best"]["rdisp"].get<double>() == Approx(3).epsilon(0.02));
+    CHECK(j["best"]["zss_um"].get<double>() == Approx(0.7 / j["best"]["rdisp"].get<double>()));
+    CHECK(j["best"]["points"].size() == 16);
+    CHECK(j["candidates"].size() == 2);
+}
+
+TEST_CASE("CLI: fit of a malformed file exits 2 with FILE:LINE:COL: message", "[cli][fit]") {
+    const std::string bad = scratch_dir() + "/bad-data.csv", out = scratch_dir() + "/fit-out.txt";
+    std::ofstream(bad) << "# comment\nzeta,r_x\n0.1,0.5\n0.2, nan\n";
+    std::ofstream(out) << "keep\n";
+    Run r = run("fit --data " + bad + " --theta 90 --i 0 --out " + out);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find(bad + ":4:6: 'r_x' 'nan' is not finite") != std::string::npos);
+    CHECK(slurp(out) == "keep\n");
+
+    std::ofstream(bad) << "vb,r_x\n0.1,0.5\n";
+    r = run("fit --data " + bad + " --theta 90");
+    CHECK(r.code == 2);
+    CHECK(r.err.find(bad + ":1:1: column 'vb' (m/s) needs the vibration amplitude") != std::string::npos);
+
+    r = run("fit --data " + scratch_dir() + "/no-such.csv --theta 90");
+    CHECK(r.code == 2);
+    CHECK(r.err.find("cannot open") != std::string::npos);
+
+    std::ofstream(bad) << "zeta,r_x\n0.1,0.5\n";
+    for (const char* args :
+         {" --i 2", " --theta 200", " --amplitude 0", " --frequency -1", " --format csv", ""}) {
+        CAPTURE(args);
+        r = run("fit --data " + bad + args);
+        CHECK(r.code == 2);
+        CHECK(lines(r.err) == 1);
+    }
+    CHECK(run("fit --theta 90").code == 2); // --data is required
+}
