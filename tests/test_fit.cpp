@@ -68,7 +68,7 @@ TEST_CASE("fit: recovers r_disp = 1, i = 1 of the synthetic theta = 0 v_b data (
                          << ", RSS = " << r.candidates[0].chi2);
 }
 
-TEST_CASE("fit: a fixed exponent fits only that one; exact model data give the exact r_disp", "[fit]") {
+TEST_CASE("fit: a fixed exponent fits only that one, and exact model data give the exact r_disp", "[fit]") {
     // Noise-free data from the model itself: the fit must land on the generating value (model noise 1e-5).
     fv::MeasurementSet data;
     for (double z : {0.1, 0.3, 0.6, 1.0}) {
