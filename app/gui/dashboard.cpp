@@ -1,4 +1,5 @@
 #include "dashboard.hpp"
+#include "fv/format.hpp"
 
 #include "figures/figure_painter.hpp"
 
@@ -8,12 +9,6 @@
 
 namespace fv::app {
 namespace {
-
-std::string fmt(const char* f, double v) {
-    char buf[96];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
 
 // Every k-th sample so that a history never costs more than ~max points to draw.
 std::size_t stride_for(std::size_t n, std::size_t max) {
@@ -134,10 +129,10 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     panel.series = {std::move(fm), std::move(fx), std::move(fy)};
     const Vec2 mean = sim.last_period_mean();
     if (std::isfinite(mean.x()))
-        panel.series.push_back(hline("period mean of F_{x} = " + fmt("%.4f", mean.x()), t0, t1, mean.x(),
-                                     Ink::black, Dash::dashed));
+        panel.series.push_back(hline("period mean of F_{x} = " + format_number("%.4f", mean.x()), t0, t1,
+                                     mean.x(), Ink::black, Dash::dashed));
     if (curves && curves->request.params.zeta == sim.params().zeta)
-        panel.series.push_back(hline("steady r_{x} = " + fmt("%.4f", curves->current.rx), t0, t1,
+        panel.series.push_back(hline("steady r_{x} = " + format_number("%.4f", curves->current.rx), t0, t1,
                                      curves->current.rx, Ink::rigid, Dash::dotted));
     return panel;
 }
@@ -156,11 +151,13 @@ PanelData ratio_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         return panel;
     }
     const Params& p = curves->request.params;
-    panel.title = std::string(busy ? "updating…  " : "") + "r_{x} = " + fmt("%.4f", curves->current.rx) +
-                  ",  r_{y} = " + fmt("%.4f", curves->current.ry);
+    panel.title = std::string(busy ? "updating…  " : "") +
+                  "r_{x} = " + format_number("%.4f", curves->current.rx) +
+                  ",  r_{y} = " + format_number("%.4f", curves->current.ry);
     if (!curves->model_rx.empty())
-        panel.series.push_back({"Dahl, i = " + fmt("%g", p.i) + ", r_{disp} = " + fmt("%.3g", p.rdisp),
-                                curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
+        panel.series.push_back(
+            {"Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp),
+             curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(
         {"rigid", curves->zetas, curves->rigid_rx, Ink::rigid, Dash::dashed, Mark::none, 1.8f});
     panel.points.push_back({Vec2(p.zeta, curves->current.rx), Ink::tip, Mark::diamond, "", 12});

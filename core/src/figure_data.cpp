@@ -1,4 +1,5 @@
 #include "fv/figure_data.hpp"
+#include "fv/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,15 +8,10 @@
 namespace fv {
 namespace {
 
-std::string fmt(const char* f, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, a);
-    return buf;
-}
-
 std::string curve_label(const Curve& c, bool vary_theta) {
-    if (c.model == Model::rigid) return vary_theta ? "θ = " + fmt("%g", c.theta * 180 / kPi) + "°" : "rigid";
-    return "r_{disp} = " + fmt("%g", c.rdisp);
+    if (c.model == Model::rigid)
+        return vary_theta ? "θ = " + format_number("%g", c.theta * 180 / kPi) + "°" : "rigid";
+    return "r_{disp} = " + format_number("%g", c.rdisp);
 }
 
 const char* kZetaTitle = "velocity ratio ζ = v_{b}/v_{v}";
@@ -263,7 +259,7 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         force.title = "force over one period";
         TableData ratios{"-ratio", {}, {}};
         PanelData curve = ratio_panel(spec, ratios.ratios, threads);
-        curve.title = "r_{x} = " + fmt("%.4f", r.rx) + ", r_{y} = " + fmt("%.4f", r.ry);
+        curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
         fig.tables.push_back({"", {}, r.period});

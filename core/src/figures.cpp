@@ -1,4 +1,5 @@
 #include "fv/figures.hpp"
+#include "fv/format.hpp"
 
 #include "fv/sweep.hpp"
 
@@ -9,12 +10,6 @@ namespace {
 
 constexpr double kDeg = kPi / 180;
 
-std::string fmt(const char* f, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, a);
-    return buf;
-}
-
 // Figs. 10-13: the r_disp values are not given in the paper; this family runs from compliance-dominated
 // (0.5: the tip deflection at sliding is twice the vibration amplitude) to near-rigid (20).
 const double kRdispFamily[] = {0.5, 1, 2, 5, 20};
@@ -23,9 +18,10 @@ FigureSpec ratio_family(const char* id, double i, double theta_deg) {
     FigureSpec f;
     f.id = id;
     f.kind = FigureKind::ratio_curves;
-    f.title = std::string("Fig. ") + (id + 3) + ": friction ratio, i = " + fmt("%g", i) +
-              ", θ = " + fmt("%g", theta_deg) + "°";
-    f.caption = "r_x(ζ) of the Dahl model with i = " + fmt("%g", i) + " at θ = " + fmt("%g", theta_deg) +
+    f.title = std::string("Fig. ") + (id + 3) + ": friction ratio, i = " + format_number("%g", i) +
+              ", θ = " + format_number("%g", theta_deg) + "°";
+    f.caption = "r_x(ζ) of the Dahl model with i = " + format_number("%g", i) +
+                " at θ = " + format_number("%g", theta_deg) +
                 "° for r_disp = 0.5, 1, 2, 5, 20, and the rigid model (Eq. " +
                 (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve.";
     f.zetas = ratio_zeta_grid();
@@ -139,8 +135,8 @@ FigureSpec scene_figure(const Params& p) {
     f.id = "scene";
     f.kind = FigureKind::scene;
     f.params = p;
-    f.title = "ζ = " + fmt("%g", p.zeta) + ", θ = " + fmt("%.4g", p.theta / kDeg) +
-              "°, r_{disp} = " + fmt("%g", p.rdisp) + ", i = " + fmt("%g", p.i);
+    f.title = "ζ = " + format_number("%g", p.zeta) + ", θ = " + format_number("%.4g", p.theta / kDeg) +
+              "°, r_{disp} = " + format_number("%g", p.rdisp) + ", i = " + format_number("%g", p.i);
     f.caption = "Top view, friction force over one steady-state period and r_x(ζ) for one parameter set.";
     f.zetas = ratio_zeta_grid();
     f.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};
