@@ -25,7 +25,6 @@ struct OdeOptions {
     Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0) to start from (warm start); |lag| > z_ss is pulled back
     bool record_period = false;      // fill SteadyResult::period with samples of the steady period
     int record_samples = 1024;       // samples at tau = 2 pi k / n, k = 1..n (like Eq. (30))
-    bool estimate_integration_error = true; // re-run the final period at a 30x looser tolerance
 };
 
 // Instants where the right-hand side of the lag ODE is not smooth.
