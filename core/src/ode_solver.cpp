@@ -593,13 +593,13 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             break;
         }
         if (periods >= opt.max_periods) break;
-        // Progress is judged on the residual (dist is unreliable once the residual is down at the
-        // integration's noise: the step sequence, and so the rounding of a period, changes with the start,
-        // and the measured "contraction" becomes noise, even > 1).
+        // Near the noise floor progress is judged on the residual (dist is unreliable once the residual is at
+        // the integration's noise: the step sequence, and so the rounding of a period, changes with the
+        // start, and the measured "contraction" becomes noise, even > 1).
         if (rn < 0.5 * best_rn) {
             best_rn = rn;
             stagnant = 0;
-        } else if (!stuck_now(cur) && ++stagnant > 3) {
+        } else if (!stuck_now(cur) && p.rdisp * rn <= 1000 * tol && ++stagnant > 3) {
             // Accept the state if that noise is small; the error estimate says how small.
             const double r_good = std::isnan(last_good_rho) ? 0.5 : std::min(last_good_rho, 0.9);
             dist = std::min(dist, rn / (1 - r_good));
@@ -640,11 +640,15 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
                         d /= (1 - q); // Aitken: jump the geometric series of a linearly converging Newton
                 }
                 const Iter nx = eval(cur.L + d);
-                const double rn_new = nx.res().norm();
-                if (rn_new < rn) {
+                // Natural monotonicity test (Deuflhard): compare the Newton corrections, not the residuals.
+                // Phi is very anisotropic (the radial direction is wiped out while the tip slips, the
+                // angular one may contract only slowly), so a step that lands much closer to L* can still
+                // have a larger residual |Phi(L) - L|.
+                const double dn_old = delta.norm(), dn_new = (Ainv * nx.res()).norm();
+                if (dn_new < 0.9 * dn_old || nx.res().norm() < 0.5 * rn) {
                     // Keep the Jacobian (chord steps) while it works well; refresh it when it does not.
-                    trusted_inv = rn_new < 0.2 * rn;
-                    if (rn_new > 0.3 * rn) have_inv = trusted_inv = false;
+                    trusted_inv = dn_new < 0.2 * dn_old;
+                    if (dn_new > 0.3 * dn_old) have_inv = trusted_inv = false;
                     prev_delta = d;
                     have_prev_delta = true;
                     cur = nx;
