@@ -622,10 +622,10 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
 
         // i = 0 without slip: Phi(L) = L + (2 pi zeta, 0) (the tip sticks; P drifts), DPhi = I. Only
         // plain periods bring the tip to its first slip.
-        // Newton where plain steps contract slowly, but not down at the noise floor, where finite
-        // differences of Phi are noise.
+        // Newton where plain steps contract slowly. (At the noise floor its finite differences are poor,
+        // but the monotonicity test below rejects what does not help.)
         const bool stuck = stuck_now(cur);
-        if (!stuck && rho > 0.1 && p.rdisp * rn > 100 * tol) {
+        if (!stuck && rho > 0.1) {
             if (!have_inv) {
                 have_inv = jacobian(cur);
                 trusted_inv = false;
