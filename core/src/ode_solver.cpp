@@ -268,7 +268,11 @@ OdePeriod LagOde::period(Vec2 lag0, std::vector<OdeEvent>* events, std::vector<S
             const double ts = kTwoPi * next_sample / n_samples;
             if (ts > tau_end && !(last && next_sample == n_samples)) break;
             const double th = std::clamp((ts - dn.tau0) / dn.h, 0.0, 1.0);
-            const Vec2 L = dn.at(th).head<2>();
+            Vec2 L = dn.at(th).head<2>();
+            // The interpolant between steps leaves the disc |L| <= z_ss by up to the local tolerance
+            // (on the circle the steps themselves are projected); the model never does.
+            const double z = L.norm();
+            if (z > zss_) L *= zss_ / z;
             Sample s;
             s.tau = ts;
             s.P = body_point(p, ts);
