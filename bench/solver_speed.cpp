@@ -79,8 +79,8 @@ int main(int argc, char** argv) {
     std::printf("\nFig. 10 sweep (5 rdisp x 200 zeta, theta = 90 deg, i = 1), median of %d / %d runs\n", runs,
                 paper_runs);
     std::printf("  %-34s %10s %12s %12s %8s\n", "solver", "time [s]", "max err est", "periods", "not conv");
-    std::printf("  %-34s %10.4f %12.2e %12ld %8d\n", "ode (tolerance 1e-8, default)", t_ode, so.worst_err_est,
-                so.periods, so.not_converged);
+    std::printf("  %-34s %10.4f %12.2e %12ld %8d\n", "ode (tolerance 1e-8, the default)", t_ode,
+                so.worst_err_est, so.periods, so.not_converged);
     std::printf("  %-34s %10.4f %12.2e %12ld %8d\n", "ode (tolerance 1e-6)", t_loose, sl.worst_err_est,
                 sl.periods, sl.not_converged);
     std::printf("  %-34s %10.4f %12.2e %12ld %8d\n", "paper scheme (automatic, extrap.)", t_paper,
@@ -90,6 +90,41 @@ int main(int argc, char** argv) {
     std::printf("  max |r_x(ode) - r_x(paper)| = %.2e (the paper's automatic mode promises 1e-5)\n",
                 worst_diff);
     std::printf("  max |r_x(ode 1e-6) - r_x(ode 1e-8)| = %.2e\n", worst_loose);
+
+    // Equal accuracy: the paper's scheme run as the paper does it (one resolution, no extrapolation) needs
+    // n steps per period for |r - r(dtau -> 0)| <= 1e-6. Find the smallest power of two that gets there
+    // (against the ODE result at tolerance 1e-10) for a few zeta per rdisp, and time single points.
+    std::printf("\nEqual accuracy (1e-6), single points, one thread; paper = fixed n, no extrapolation\n");
+    std::printf("  %6s %6s %10s %12s %12s %12s %9s\n", "rdisp", "zeta", "n needed", "paper [ms]", "ode [ms]",
+                "ode 1e-6[ms]", "ratio");
+    std::vector<double> ratios;
+    for (double rd : rdisps)
+        for (double z : {0.1, 0.5, 2.0}) {
+            const fv::Params p{z, fv::kPi / 2, rd, 1};
+            fv::OdeOptions tight;
+            tight.tolerance = 1e-10;
+            const double exact = fv::ode_steady(p, tight).rx;
+            fv::SteadyOptions fixed;
+            fixed.tolerance = 1e-9;
+            int n = 1024;
+            double t_p = 0;
+            for (; n <= (1 << 22); n *= 2) {
+                fixed.steps_per_period = n;
+                double rx = 0;
+                t_p = median_seconds(1, [&] { rx = fv::dahl_steady(p, fixed).rx; });
+                if (std::abs(rx - exact) <= 1e-6) break;
+            }
+            const double t_o = median_seconds(5, [&] { (void)fv::ode_steady(p); });
+            const double t_l = median_seconds(5, [&] { (void)fv::ode_steady(p, loose); });
+            const bool found = n <= (1 << 22);
+            std::printf("  %6g %6g %10s %12.3f %12.3f %12.3f %8.0fx%s\n", rd, z,
+                        found ? std::to_string(n).c_str() : "> 4194304", 1e3 * t_p, 1e3 * t_o, 1e3 * t_l,
+                        t_p / t_l, found ? "" : " (lower bound)");
+            ratios.push_back(t_p / t_l);
+        }
+    std::sort(ratios.begin(), ratios.end());
+    std::printf("  ratio paper(n for 1e-6) / ode(tolerance 1e-6): min %.0fx, median %.0fx\n", ratios.front(),
+                ratios[ratios.size() / 2]);
 
     // (zeta, theta) map at rdisp = 2, i = 1: 200 x 91 points, theta = 0, 2, ..., 180 deg.
     std::vector<double> thetas;
