@@ -131,7 +131,8 @@ class LagOde {
         // Eq. (16); base clamped >= 0 so that a stage that strays past z_ss cannot make pow() NaN. For
         // i > 0, pow(0, i) = 0: no pow(0, 0) here (i = 0 is handled above).
         const double base = std::max(0.0, 1 - s * z / zss_);
-        const double keep = i_ == 1 ? base : std::pow(base, i_);
+        const double keep =
+            i_ == 1 ? base : (i_ == 2 ? base * base : (i_ == 3 ? base * base * base : std::pow(base, i_)));
         return dp - (v * (1 - keep)) * e; // T moves along e at v - dz/dtau = v (1 - base^i)
     }
 
