@@ -539,12 +539,16 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     // converges slowly there (the radial direction of Phi is degenerate); but on the circle the problem is
     // a 1-D fixed point in the angle, found by secant steps. Valid only if no period leaves the circle.
     auto try_circle = [&](const Iter& from, Iter& result, double& dist_out) -> bool {
-        double phi0 = std::atan2(from.out.lag_end.y(), from.out.lag_end.x());
         auto on_circle = [&](double a) { return Vec2(zss * std::cos(a), zss * std::sin(a)); };
         auto residual = [&](const Iter& it, double a) {
             return wrap_angle(std::atan2(it.out.lag_end.y(), it.out.lag_end.x()) - a);
         };
-        Iter i0 = eval(on_circle(phi0));
+        // A period that already started on the circle (warm start from a pinned neighbour) is the first
+        // secant point; otherwise start from where the last period ended.
+        const bool on = from.L.norm() >= zss * (1 - 1e-12);
+        double phi0 =
+            on ? std::atan2(from.L.y(), from.L.x()) : std::atan2(from.out.lag_end.y(), from.out.lag_end.x());
+        Iter i0 = on ? from : eval(on_circle(phi0));
         if (i0.out.v_negative || !i0.out.saturated) return false;
         double r0 = residual(i0, phi0);
         double phi1 = phi0 + r0;
