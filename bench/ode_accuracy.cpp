@@ -29,7 +29,10 @@ Limit limit(const fv::Params& p) {
     o.tolerance = 1e-11;
     o.max_steps = 4e9;
     // i > 1: an algebraic approach would use the whole step budget; cap it and report the error.
-    if (p.i > 1) o.max_periods = 400;
+    if (p.i > 1) {
+        o.max_periods = 400;
+        o.max_steps = 3e8;
+    }
     double rx[3], ry[3], steady = 0;
     Limit out;
     for (int l = 0; l < 3; ++l) {
@@ -69,7 +72,12 @@ int main(int argc, char** argv) {
     for (double i : is)
         for (double th : thetas)
             for (double rd : rdisps)
-                for (double z : zetas) rows.push_back({{z, th * fv::kPi / 180, rd, i}, {}, {}});
+                for (double z : zetas) {
+                    // i > 1 at rdisp = 100: the reference needs ~1e6 steps per period and still only creeps
+                    // towards its steady state; those points would take minutes and prove nothing.
+                    if (i > 1 && rd > 20) continue;
+                    rows.push_back({{z, th * fv::kPi / 180, rd, i}, {}, {}});
+                }
     fv::parallel_for(static_cast<int>(rows.size()), [&](int k) {
         Row& r = rows[static_cast<std::size_t>(k)];
         r.ode = fv::ode_steady(r.p);

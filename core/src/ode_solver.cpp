@@ -167,8 +167,9 @@ int sign_of(double x) {
 }
 
 // Root of g on the dense output in [lo, hi] (g(lo) on the side `old_sign`, or ~0 right after an event;
-// g(hi) on the other side). Illinois variant of regula falsi; returns a theta on the new-sign side, so that
-// the restarted integration begins with g already on its new side and cannot find the same root again.
+// g(hi) strictly on the other side). Illinois variant of regula falsi; returns a theta on the new-sign side,
+// so that the restarted integration begins with g already on its new side and cannot find the same root
+// again.
 template <class G>
 double locate(const G& g, double lo, double hi, double flo, double fhi, int old_sign, double h, double tau0) {
     if (sign_of(flo) != old_sign) flo = old_sign * std::numeric_limits<double>::min();
@@ -178,7 +179,9 @@ double locate(const G& g, double lo, double hi, double flo, double fhi, int old_
         double c = (lo * fhi - hi * flo) / (fhi - flo);
         if (!(c > lo && c < hi)) c = 0.5 * (lo + hi);
         const double fc = g(c);
-        if (sign_of(fc) == old_sign) {
+        // g = 0 exactly counts as the old side: the point returned must be strictly on the new side, or
+        // the restarted piece would begin with g = 0 and find this root once more.
+        if (sign_of(fc) != -old_sign) {
             lo = c;
             flo = fc;
             if (side == -1) fhi *= 0.5;
