@@ -74,8 +74,12 @@ struct OdeSolution {
 };
 
 // The periodic steady state. Throws std::invalid_argument for inadmissible parameters (fv::validate).
-// SteadyResult fields: periods = total_periods = periods integrated; steps_per_period = accepted steps of
-// the last period; levels = 1; error_estimate = steady_error + integration error.
+// SteadyResult fields: rx, ry from the last period integrated (it starts at OdeSolution::lag);
+// periods = total_periods = periods integrated by the fixed-point search, Newton's probes included (not
+// the re-run at 10x looser tolerance that estimates the integration error, nor the recording run);
+// steps_per_period = accepted steps of the last period; levels = 1; steady_error = rdisp x estimated
+// |lag - L*|; error_estimate = steady_error + integration error; period = record_samples samples of the
+// steady period when record_period is set.
 OdeSolution ode_solve(const Params& p, const OdeOptions& opt = {});
 SteadyResult ode_steady(const Params& p, const OdeOptions& opt = {});
 
