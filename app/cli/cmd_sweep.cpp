@@ -15,7 +15,7 @@ Command add_sweep_command(CLI::App& root) {
         std::string model = "dahl";
         std::string zeta;
         std::vector<double> theta_deg, rdisp, i;
-        int steps_per_period = 0;
+        SolverArgs solver;
         int threads = 0;
         std::string format = "csv";
         std::string out;
@@ -39,8 +39,7 @@ Command add_sweep_command(CLI::App& root) {
     cmd->add_option("--model", a->model, "friction model")
         ->check(CLI::IsMember({"dahl", "rigid"}))
         ->capture_default_str();
-    cmd->add_option("--steps-per-period", a->steps_per_period, "run the paper's scheme with exactly N steps")
-        ->check(integer_in(kMinSteps, kMaxSteps));
+    add_solver_options(*cmd, a->solver);
     cmd->add_option("--threads", a->threads, "worker threads (default: all cores)")
         ->check(integer_in(1, 256));
     cmd->add_option("--format", a->format, "output format")
@@ -59,8 +58,7 @@ Command add_sweep_command(CLI::App& root) {
                 const RangeSpec z = parse_range_spec(a->zeta);
                 std::vector<double> thetas;
                 for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
-                SteadyOptions o;
-                o.steps_per_period = a->steps_per_period;
+                const SteadyOptions o = solver_options(a->solver);
                 const auto rows =
                     sweep(model, linspace(z.from, z.to, z.count), thetas, a->rdisp, a->i, o, a->threads);
                 deliver(ratio_table(rows, parse_format(a->format)), a->out);

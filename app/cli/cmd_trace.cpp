@@ -1,4 +1,5 @@
-// frictionviz trace: P, T, z and F over one steady-state period of the paper's scheme.
+// frictionviz trace: P, T, z and F over one steady-state period (continuous-time solver: 1024 samples at
+// tau = 2 pi k/1024; --scheme paper: every step of the paper's scheme).
 #include "commands.hpp"
 #include "errors.hpp"
 #include "model_options.hpp"
@@ -28,7 +29,7 @@ Command add_trace_command(CLI::App& root) {
                 row.params = to_params(a->model);
                 SteadyOptions o = steady_options(a->model);
                 o.record_period = true;
-                row.result = dahl_steady(row.params, o);
+                row.result = steady_ratio(Model::dahl, row.params, o);
                 deliver(trace_table(row, parse_format(a->format)), a->out);
                 warn_if_unsteady(row);
             }};

@@ -21,10 +21,7 @@ void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
         cmd.add_option("--model", a.model, "friction model")
             ->check(CLI::IsMember({"dahl", "rigid"}))
             ->capture_default_str();
-    cmd.add_option("--steps-per-period", a.steps_per_period,
-                   "run the paper's scheme with exactly N steps per period (default: automatic, "
-                   "extrapolated to dtau -> 0, accurate to 1e-5)")
-        ->check(integer_in(kMinSteps, kMaxSteps));
+    add_solver_options(cmd, a.solver);
 }
 
 Model model_of(const ModelArgs& a) {
@@ -47,10 +44,32 @@ Params to_params(const ModelArgs& a) {
     return p;
 }
 
-SteadyOptions steady_options(const ModelArgs& a) {
+void add_solver_options(CLI::App& cmd, SolverArgs& s) {
+    s.scheme_opt =
+        cmd.add_option("--scheme", s.scheme,
+                       "Dahl solver: ode (continuous-time limit, event location, Newton; within 1e-6 of "
+                       "the dtau -> 0 limit) or paper (the paper's stepping scheme, Eqs. (17)-(27), "
+                       "extrapolated to dtau -> 0 within 1e-5)")
+            ->check(CLI::IsMember({"ode", "paper"}))
+            ->capture_default_str();
+    cmd.add_option(
+           "--steps-per-period", s.steps_per_period,
+           "run the paper's scheme exactly as printed with N steps per period (implies --scheme paper)")
+        ->check(integer_in(kMinSteps, kMaxSteps));
+}
+
+SteadyOptions solver_options(const SolverArgs& s) {
+    if (s.steps_per_period > 0 && s.scheme_opt && s.scheme_opt->count() > 0 && s.scheme == "ode")
+        throw UsageError(
+            "--steps-per-period belongs to --scheme paper; allowed: drop it, or use --scheme paper");
     SteadyOptions o;
-    o.steps_per_period = a.steps_per_period;
+    o.scheme = s.scheme == "paper" || s.steps_per_period > 0 ? Scheme::paper : Scheme::ode;
+    o.steps_per_period = s.steps_per_period;
     return o;
+}
+
+SteadyOptions steady_options(const ModelArgs& a) {
+    return solver_options(a.solver);
 }
 
 } // namespace fv::cli

@@ -19,17 +19,27 @@ inline constexpr Range kRdispRange{0, 1e4, true};
 inline constexpr Range kIRange{0, 10};
 inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
 
+// --scheme ode|paper and --steps-per-period N (which means the paper's scheme as printed).
+struct SolverArgs {
+    std::string scheme = "ode";
+    int steps_per_period = 0;
+    CLI::Option* scheme_opt = nullptr;
+};
+void add_solver_options(CLI::App& cmd, SolverArgs& s);
+// Throws UsageError for --scheme ode together with --steps-per-period.
+SteadyOptions solver_options(const SolverArgs& s);
+
 struct ModelArgs {
     std::string model = "dahl";
     double zeta = 0, theta_deg = 0, rdisp = 0, i = 0;
-    int steps_per_period = 0; // 0: automatic (accuracy contract), else the paper's scheme as is
+    SolverArgs solver;
     CLI::Option* zeta_opt = nullptr;
     CLI::Option* rdisp_opt = nullptr;
     CLI::Option* i_opt = nullptr;
 };
 
-// Adds --zeta --theta --rdisp --i (all required for the Dahl model), optionally --model, and
-// --steps-per-period.
+// Adds --zeta --theta --rdisp --i (all required for the Dahl model), optionally --model, and the solver
+// options.
 void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice);
 
 // Checks the combination (e.g. --rdisp is required for the Dahl model); throws UsageError.

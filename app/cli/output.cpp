@@ -46,6 +46,7 @@ nlohmann::json json_of(const SweepPoint& r) {
             {"periods", r.result.periods},
             {"error_estimate", jnum(r.result.error_estimate)},
             {"status", to_string(r.result.status)},
+            {"scheme", r.model == Model::dahl ? to_string(r.result.scheme) : "quadrature"},
             {"steps_per_period", r.result.steps_per_period},
             {"extrapolated_levels", r.result.levels}};
 }
@@ -93,9 +94,18 @@ std::string ratio_text(const SweepPoint& r) {
                       num(theta_deg(p)).c_str(), num(p.rdisp).c_str(), num(1 / p.rdisp).c_str());
         s = buf;
     }
-    std::snprintf(buf, sizeof buf, "r_x           %.9f\nr_y           %.9f\n", res.rx, res.ry);
+    // Values below the printed precision are shown as 0, not as "-0.000000000".
+    auto shown = [](double v) { return std::abs(v) < 5e-10 ? 0.0 : v; };
+    std::snprintf(buf, sizeof buf, "r_x           %.9f\nr_y           %.9f\n", shown(res.rx), shown(res.ry));
     s += buf;
-    if (r.model == Model::dahl) {
+    if (r.model == Model::dahl && res.scheme == Scheme::ode) {
+        std::snprintf(
+            buf, sizeof buf,
+            "steady state  %s after %d periods (continuous-time solver: dtau -> 0 limit of the scheme, "
+            "events located, Newton)\n",
+            res.status == SteadyStatus::converged ? "reached" : "NOT reached", res.periods);
+        s += buf;
+    } else if (r.model == Model::dahl) {
         if (res.levels > 1)
             std::snprintf(buf, sizeof buf,
                           "steady state  %s after %d periods (up to %d steps per period, %d resolutions "

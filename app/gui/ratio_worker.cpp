@@ -2,6 +2,7 @@
 
 #include "fv/figures.hpp"
 #include "fv/rigid.hpp"
+#include "fv/sweep.hpp"
 
 #include <sys/resource.h>
 #include <sys/syscall.h>
@@ -63,18 +64,17 @@ void RatioWorker::run() {
         out.request = req;
         out.current = steady_ratio(req.model, req.params);
         out.zetas = ratio_zeta_grid();
-        bool aborted = false;
-        for (double z : out.zetas) {
-            if (outdated()) {
-                aborted = true;
-                break;
-            }
-            out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
+        bool aborted = outdated();
+        if (!aborted) {
+            for (double z : out.zetas) out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
+            // One warm-started sweep along zeta with the continuous-time solver: a whole curve in a few
+            // tens of milliseconds, so a dragged slider redraws it within a frame or two.
             if (req.model == Model::dahl) {
-                Params q = req.params;
-                q.zeta = z;
-                out.model_rx.push_back(dahl_steady(q).rx);
+                const auto rows = sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp},
+                                        {req.params.i}, {}, 1);
+                for (const auto& r : rows) out.model_rx.push_back(r.result.rx);
             }
+            aborted = outdated();
         }
         std::lock_guard<std::mutex> lock(mutex_);
         if (!aborted) result_ = std::move(out);

@@ -66,11 +66,13 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
     return panel;
 }
 
+// One steady period with samples: the continuous-time solver (1024 samples) unless the spec asks for the
+// paper's scheme at a given resolution.
 SteadyResult steady_trace(const Params& p, int steps) {
     SteadyOptions o;
     o.record_period = true;
     o.steps_per_period = steps;
-    return dahl_steady(p, o);
+    return steady_ratio(Model::dahl, p, o);
 }
 
 // P and T over one steady period with the spring drawn at 24 regular instants.

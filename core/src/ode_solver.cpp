@@ -696,6 +696,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     r.status = converged ? SteadyStatus::converged : SteadyStatus::not_converged;
     r.steps_per_period = cur.out.steps;
     r.levels = 1;
+    r.scheme = Scheme::ode;
     sol.lag = cur.L;
     r.error_estimate = r.steady_error + sol.integration_error;
     r.periods = r.total_periods = periods;

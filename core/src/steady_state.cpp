@@ -1,10 +1,16 @@
 #include "fv/steady_state.hpp"
 
+#include "fv/ode_solver.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 namespace fv {
+
+const char* to_string(Scheme s) {
+    return s == Scheme::ode ? "ode" : "paper";
+}
 
 const char* to_string(SteadyStatus s) {
     return s == SteadyStatus::converged ? "converged" : "not_converged";
@@ -172,8 +178,17 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt) {
     return res;
 }
 
+OdeOptions ode_options(const SteadyOptions& opt) {
+    OdeOptions o;
+    o.tolerance = opt.ode_tolerance;
+    o.initial_lag = opt.initial_lag;
+    o.record_period = opt.record_period;
+    return o;
+}
+
 SteadyResult steady_ratio(Model m, const Params& p, const SteadyOptions& opt) {
-    if (m == Model::dahl) return dahl_steady(p, opt);
+    if (m == Model::dahl)
+        return uses_paper_scheme(opt) ? dahl_steady(p, opt) : ode_steady(p, ode_options(opt));
     SteadyResult res;
     const Ratio r = rigid_ratio(p.zeta, p.theta);
     res.rx = r.rx;

@@ -1,5 +1,7 @@
 #include "fv/sweep.hpp"
 
+#include "fv/ode_solver.hpp"
+
 #include <limits>
 
 namespace fv {
@@ -17,6 +19,9 @@ std::vector<double> linspace(double from, double to, int count) {
 std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
                               const std::vector<double>& thetas, const std::vector<double>& rdisps,
                               const std::vector<double>& is, const SteadyOptions& opt, int threads) {
+    if (model == Model::dahl && !uses_paper_scheme(opt))
+        return ode_sweep_zeta(zetas, thetas, rdisps, is, ode_options(opt),
+                              threads); // warm-started along zeta
     std::vector<SweepPoint> pts;
     // The rigid model has no rdisp or i: one curve per angle.
     const std::vector<double> one{0};

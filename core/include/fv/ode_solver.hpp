@@ -83,6 +83,9 @@ struct OdeSolution {
 OdeSolution ode_solve(const Params& p, const OdeOptions& opt = {});
 SteadyResult ode_steady(const Params& p, const OdeOptions& opt = {});
 
+// The ODE options that carry out SteadyOptions (tolerance, warm start, recording).
+OdeOptions ode_options(const SteadyOptions& opt);
+
 // Sweep over zeta for every theta x rdisp x i (zeta fastest, like fv::sweep): each family (theta, rdisp, i)
 // runs on one thread, its zeta values in the given order, each warm-started from its neighbour's L*.
 std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const std::vector<double>& thetas,

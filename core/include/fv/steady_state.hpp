@@ -16,7 +16,18 @@ enum class SteadyStatus {
 };
 const char* to_string(SteadyStatus s);
 
+// How the Dahl model's steady state is computed.
+enum class Scheme {
+    ode,   // default: the scheme's dtau -> 0 limit as an ODE with event location, fixed point by Newton
+           // (ode_solver.hpp); within 1e-6 of the limit, ~10-500x faster than `paper` at equal accuracy
+    paper, // the paper's stepping scheme, Eqs. (17)-(27), as printed (extrapolated unless N is given)
+};
+const char* to_string(Scheme s);
+
 struct SteadyOptions {
+    Scheme scheme = Scheme::ode;
+    double ode_tolerance = 1e-8; // Scheme::ode: target for |r - r(dtau -> 0)|
+
     // 0: choose automatically: runs at n0/2, n0, 2 n0, 4 n0 steps (n0 = default_steps_per_period)
     // extrapolated to dtau -> 0, so the result meets the accuracy contract |r - r(dtau -> 0)| <= 1e-5 on zeta
     // in [0.02, 3], theta in [0, 90 deg], rdisp in [0.2, 100], i in {0, 1}. > 0: run exactly the paper's
@@ -30,7 +41,8 @@ struct SteadyOptions {
 };
 
 struct SteadyResult {
-    double rx = 0, ry = 0; // Eq. (33) and its y-twin (31)
+    Scheme scheme = Scheme::paper; // which solver produced it (for reports)
+    double rx = 0, ry = 0;         // Eq. (33) and its y-twin (31)
     SteadyStatus status = SteadyStatus::converged;
     int periods = 0;            // periods run until the steady state was accepted (finest resolution)
     int total_periods = 0;      // summed over all resolutions
@@ -48,7 +60,13 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt = {});
 // Default steps per period of the coarsest resolution (see steady_state.cpp for why).
 int default_steps_per_period(const Params& p);
 
-// Either model through one door: rigid -> Eq. (9) quadrature (periods = 0, error ~1e-12).
+// Either model through one door: rigid -> Eq. (9) quadrature (periods = 0, error ~1e-12); Dahl -> the
+// continuous-time solver, or the paper's scheme when opt.scheme is Scheme::paper or steps_per_period > 0.
 SteadyResult steady_ratio(Model m, const Params& p, const SteadyOptions& opt = {});
+
+// True when these options run the paper's stepping scheme.
+inline bool uses_paper_scheme(const SteadyOptions& o) {
+    return o.scheme == Scheme::paper || o.steps_per_period > 0;
+}
 
 } // namespace fv
