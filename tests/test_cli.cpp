@@ -289,3 +289,15 @@ TEST_CASE("CLI: fit of a malformed file exits 2 with FILE:LINE:COL: message", "[
     }
     CHECK(run("fit --theta 90").code == 2); // --data is required
 }
+
+TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "[cli][render][map]") {
+    const std::string dir = scratch_dir() + "/map";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const Run r = run("render --figure map --rdisp 1 --i 0 --size 640x400 --out " + dir);
+    REQUIRE(r.code == 0);
+    const std::string grid = slurp(dir + "/map.csv"), best = slurp(dir + "/map-best-angle.csv");
+    CHECK(grid.rfind("model,i,theta_deg,rdisp,zeta,r_x", 0) == 0);
+    CHECK(lines(grid) == 1 + 200 * 91);
+    CHECK(best.rfind("zeta,theta_star_deg,r_x_min,theta_star_rigid_deg,r_x_rigid_min", 0) == 0);
+    CHECK(lines(best) == 1 + 200);
+}

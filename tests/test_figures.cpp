@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -84,4 +85,28 @@ TEST_CASE("A scene has a top view, a force plot and a ratio plot marking the cur
     REQUIRE(d.panels[2].points.size() == 1);
     CHECK(d.panels[2].points[0].at.x() == 0.4);
     CHECK(d.tables.size() == 2);
+}
+
+TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zeta = 1 (Section 2)",
+          "[figures][map]") {
+    // Independent of the code under test: by Eq. (10) r_x(zeta > 1, 0) = 1 while Eq. (11) < 1, so theta = 90
+    // wins above zeta = 1; the paper states that theta = 0 wins below zeta ~ 0.95.
+    fv::FigureSpec spec = fv::map_figure(2, 1);
+    spec.zetas = {0.3, 0.6, 0.9, 1.2, 2.0};
+    spec.theta_count = 19; // every 5 degrees
+    const auto d = fv::compute_figure(spec);
+    const auto& panel = d.panels.at(0);
+    REQUIRE(panel.heatmap);
+    CHECK(panel.heatmap->values.size() == 5 * 19);
+    const auto& rigid_best = panel.series.at(1);
+    CHECK(rigid_best.y[0] == Approx(0).margin(1e-9));
+    CHECK(rigid_best.y[1] == Approx(0).margin(1e-9));
+    CHECK(rigid_best.y[3] == Approx(90).margin(1e-9));
+    CHECK(rigid_best.y[4] == Approx(90).margin(1e-9));
+    // Grid cells hold the Dahl r_x at (zeta, theta): spot-check one against a direct call.
+    const double direct = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}).rx;
+    CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(direct).margin(1e-6));
+    // The best-angle table: a header and one row per zeta.
+    REQUIRE(d.tables.size() == 2);
+    CHECK(std::count(d.tables[1].text.begin(), d.tables[1].text.end(), '\n') == 6);
 }

@@ -80,6 +80,7 @@ TEST_CASE("Snapshot: every paper figure matches its baseline", "[snapshot]") {
     fv::app::RenderSession session(o);
     for (const auto& spec : fv::paper_figures()) check_snapshot(session, spec);
     check_snapshot(session, fv::scene_figure({0.3, fv::kPi / 6, 2, 1}));
+    check_snapshot(session, fv::map_figure(2, 1));
 }
 
 TEST_CASE("Snapshot comparison catches a changed picture", "[snapshot]") {

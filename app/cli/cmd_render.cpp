@@ -42,6 +42,7 @@ CLI::Validator size_spec() {
 }
 
 std::string csv_of(const TableData& t) {
+    if (!t.text.empty()) return t.text;
     if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
     SweepPoint row;
     row.result.period = t.trace;
@@ -61,7 +62,8 @@ Command add_render_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "render", "render figures headless (OSMesa) as PNG, with the data behind each one as CSV beside it");
     cmd->add_option("--figure", a->figure,
-                    "figure id: all, scene, or one of " + figure_ids() + " (comma-separate several)")
+                    "figure id: all (every figure of the paper), scene, map, or one of " + figure_ids() +
+                        " (comma-separate several)")
         ->required();
     cmd->add_option("--out", a->out, "output directory (must exist)")->required();
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
@@ -69,9 +71,10 @@ Command add_render_command(CLI::App& root) {
     cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")
         ->check(number_in(kThetaRange));
-    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene: displacement ratio")
+    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene, map: displacement ratio")
                              ->check(number_in(kRdispRange));
-    a->model.i_opt = cmd->add_option("--i", a->model.i, "scene: Dahl exponent")->check(number_in(kIRange));
+    a->model.i_opt =
+        cmd->add_option("--i", a->model.i, "scene, map: Dahl exponent")->check(number_in(kIRange));
     return {cmd, [a, cmd] {
                 // Resolve the list of figures first: an unknown id lists the valid ones.
                 std::vector<FigureSpec> specs;
@@ -86,6 +89,11 @@ Command add_render_command(CLI::App& root) {
                                 throw UsageError(std::string("--figure scene needs ") + flag +
                                                  " (the same flags as `ratio`)");
                         specs.push_back(scene_figure(to_params(a->model)));
+                    } else if (id == "map") {
+                        // Beyond the paper: r_x over (zeta, theta) for one r_disp and i (default 2 and 1).
+                        const double rdisp = cmd->get_option("--rdisp")->count() ? a->model.rdisp : 2.0;
+                        const double i = cmd->get_option("--i")->count() ? a->model.i : 1.0;
+                        specs.push_back(map_figure(rdisp, i));
                     } else if (const FigureSpec* f = find_figure(id)) {
                         specs.push_back(*f);
                     } else {
@@ -94,7 +102,7 @@ Command add_render_command(CLI::App& root) {
                     }
                 }
                 if (specs.empty())
-                    throw UsageError("--figure: no figure named; allowed: all, scene, " + figure_ids());
+                    throw UsageError("--figure: no figure named; allowed: all, scene, map, " + figure_ids());
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
                 check_out(dir + "/" + specs.front().id + ".png");

@@ -99,6 +99,15 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         plot.legend = gfx::LegendPosition::BottomLeft;
     else if (panel.legend == "bottom-right")
         plot.legend = gfx::LegendPosition::BottomRight;
+    if (panel.heatmap) {
+        const HeatmapData& h = *panel.heatmap;
+        gfx::HeatMap m;
+        m.values = h.values;
+        m.nx = h.nx, m.ny = h.ny;
+        m.x0 = h.x0, m.x1 = h.x1, m.y0 = h.y0, m.y1 = h.y1;
+        m.label = h.label;
+        plot.set_heatmap(std::move(m));
+    }
     for (std::size_t k = 0; k < panel.series.size(); ++k) {
         const SeriesData& s = panel.series[k];
         gfx::SeriesStyle st;

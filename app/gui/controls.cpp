@@ -13,6 +13,7 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.model) model = o.model;
     if (o.params) params = o.params;
     if (o.playing) playing = o.playing;
+    if (o.show_map) show_map = o.show_map;
     if (o.speed) speed = o.speed;
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
@@ -39,7 +40,7 @@ bool slider_double(const char* label, double* v, double lo, double hi, const cha
 
 void readout(const char* name, const char* fmt, double v) {
     ImGui::TextUnformatted(name);
-    ImGui::SameLine(130);
+    ImGui::SameLine(165);
     ImGui::Text(fmt, v);
 }
 
@@ -115,10 +116,12 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     readout("τ / 2π", "%.2f", sim.tau() / (2 * kPi));
     readout("z / z_ss", "%.3f", sim.model() == Model::rigid ? 1.0 : sim.z() / sim.params().zss());
     ImGui::TextUnformatted("tip");
-    ImGui::SameLine(130);
-    ImGui::TextUnformatted(sim.model() == Model::rigid ? "rigid" : (sim.slipping() ? "slips" : "sticks"));
+    ImGui::SameLine(165);
+    ImGui::TextUnformatted(sim.model() == Model::rigid
+                               ? "rigid"
+                               : (sim.slipping() ? "slips" : (sim.params().i == 0 ? "sticks" : "creeps")));
     if (std::isfinite(sim.last_period_mean().x()))
-        readout("mean F_x, last period", "%.4f", sim.last_period_mean().x());
+        readout("F_x, last period mean", "%.4f", sim.last_period_mean().x());
     ImGui::Separator();
     ImGui::TextUnformatted(busy ? "Steady state (updating…)" : "Steady state");
     if (curves) {
@@ -126,13 +129,18 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         readout("r_y", "%.5f", curves->current.ry);
         if (curves->request.model == Model::dahl) {
             ImGui::TextUnformatted("periods to steady");
-            ImGui::SameLine(130);
+            ImGui::SameLine(165);
             ImGui::Text("%d (%s)", curves->current.periods,
                         curves->current.status == SteadyStatus::converged ? "reached" : "NOT reached");
             readout("error est.", "%.1e", curves->current.error_estimate);
         }
     }
     ImGui::Separator();
+    bool show_map = ui.show_map;
+    if (ImGui::Checkbox("(ζ, θ) map instead of r_x(ζ)", &show_map)) e.show_map = show_map;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
     if (ImGui::Button("Export trace CSV")) e.export_csv = true;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot [S]")) e.screenshot = true;

@@ -165,14 +165,35 @@ PanelData ratio_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     return panel;
 }
 
+PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy) {
+    if (!curves || !curves->map) {
+        PanelData p;
+        p.title = sim.model() == Model::rigid ? "(ζ, θ) map: Dahl model only" : "(ζ, θ) map: computing…";
+        p.x_title = "velocity ratio ζ = v_{b}/v_{v}";
+        p.y_title = "vibration angle θ [°]";
+        p.x_min = 0, p.x_max = 3, p.y_min = 0, p.y_max = 90;
+        return p;
+    }
+    PanelData p = *curves->map;
+    const Params& q = curves->request.params;
+    p.title = std::string(busy ? "updating…  " : "") +
+              "r_{x}(ζ, θ), r_{disp} = " + format_number("%.3g", q.rdisp) +
+              ", i = " + format_number("%g", q.i);
+    p.legend = "none";
+    const double theta_deg = std::min(90.0, std::abs(90 - std::abs(q.theta * 180 / kPi - 90)));
+    p.points.push_back({Vec2(std::min(q.zeta, 3.0), theta_deg), Ink::tip, Mark::diamond, "", 12});
+    return p;
+}
+
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy) {
+                                    bool busy, bool show_map) {
     const DashboardLayout l = layout_dashboard(area);
     DashboardTransforms t;
     t.top_view = paint_panel(canvas, top_view_panel(sim, view), l.top_view);
     t.force = paint_panel(canvas, force_panel_live(sim, curves), l.force);
-    t.ratio = paint_panel(canvas, ratio_panel_live(sim, curves, busy), l.ratio);
+    t.ratio = paint_panel(
+        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(sim, curves, busy), l.ratio);
     return t;
 }
 

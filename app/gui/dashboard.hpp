@@ -35,8 +35,12 @@ struct DashboardTransforms {
     gfx::PlotTransform top_view, force, ratio;
 };
 
+// The map panel with the current (zeta, theta) marked.
+PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy);
+
+// show_map: the lower-right panel shows the (zeta, theta) map instead of the r_x(zeta) curves.
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy);
+                                    bool busy, bool show_map = false);
 
 } // namespace fv::app

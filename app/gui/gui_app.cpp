@@ -155,15 +155,16 @@ int run_gui(const GuiOptions& o) {
         if (queued.params && validate(*queued.params).empty())
             ui.params = *queued.params, model_changed = true;
         if (queued.playing) ui.playing = *queued.playing;
+        bool ask_worker = false;
+        if (queued.show_map && *queued.show_map != ui.show_map)
+            ui.show_map = *queued.show_map, ask_worker = true;
         if (queued.speed) ui.speed = std::clamp(*queued.speed, 0.01, 10.0);
         if (queued.trail_periods) {
             ui.view.trail_periods = std::clamp(*queued.trail_periods, 0.1, 10.0);
             sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
         }
-        if (model_changed) {
-            sim.apply(ui.model, ui.params);
-            worker.request({ui.model, ui.params});
-        }
+        if (model_changed) sim.apply(ui.model, ui.params);
+        if (model_changed || ask_worker) worker.request({ui.model, ui.params, ui.show_map});
         if (queued.reset) sim.reset(), step_carry = 0;
         if (queued.quit) break;
 
@@ -206,7 +207,7 @@ int run_gui(const GuiOptions& o) {
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, ratio, gfx::colors::white);
         transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view,
-                                     curves, worker.busy());
+                                     curves, worker.busy(), ui.show_map);
         const auto t_build = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());

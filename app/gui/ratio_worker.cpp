@@ -1,5 +1,6 @@
 #include "ratio_worker.hpp"
 
+#include "fv/figure_data.hpp"
 #include "fv/figures.hpp"
 #include "fv/rigid.hpp"
 #include "fv/sweep.hpp"
@@ -73,6 +74,20 @@ void RatioWorker::run() {
                 const auto rows = sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp},
                                         {req.params.i}, {}, 1);
                 for (const auto& r : rows) out.model_rx.push_back(r.result.rx);
+            }
+            aborted = outdated();
+        }
+        // The map only changes with r_disp and i: keep the previous one when those did not move.
+        if (!aborted && req.map && req.model == Model::dahl) {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
+                    result_->request.params.i == req.params.i)
+                    out.map = result_->map;
+            }
+            if (!out.map) {
+                FigureData f = compute_figure(map_figure(req.params.rdisp, req.params.i), 1);
+                out.map = std::move(f.panels.front());
             }
             aborted = outdated();
         }

@@ -2,6 +2,7 @@
 // window never waits for them. Requests supersede each other: a slider drag only ever costs the last one.
 #pragma once
 
+#include "fv/figure_data.hpp"
 #include "fv/params.hpp"
 #include "fv/steady_state.hpp"
 
@@ -18,9 +19,10 @@ namespace fv::app {
 struct RatioRequest {
     Model model = Model::dahl;
     Params params;
+    bool map = false; // also the (zeta, theta) map for params.rdisp, params.i (Dahl only; ~1-3 s)
     bool operator==(const RatioRequest& o) const {
         return model == o.model && params.zeta == o.params.zeta && params.theta == o.params.theta &&
-               params.rdisp == o.params.rdisp && params.i == o.params.i;
+               params.rdisp == o.params.rdisp && params.i == o.params.i && map == o.map;
     }
 };
 
@@ -28,6 +30,7 @@ struct RatioCurves {
     RatioRequest request;
     std::vector<double> zetas, model_rx, rigid_rx; // model_rx empty for the rigid model
     SteadyResult current;                          // the steady state at request.params
+    std::optional<PanelData> map;                  // the map panel when asked for
 };
 
 class RatioWorker {

@@ -15,7 +15,8 @@ bool needs_value(const std::string& a) {
            a == "model" || a == "preset";
 }
 bool known(const std::string& a) {
-    return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset";
+    return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset" || a == "map" ||
+           a == "curves";
 }
 
 } // namespace
@@ -41,7 +42,7 @@ Script load_script(const std::string& path) {
         if (!(ls >> action) || !known(action))
             throw std::runtime_error(
                 where + "unknown action '" + action +
-                "'; allowed: zeta theta rdisp i model play pause step reset speed trail preset");
+                "'; allowed: zeta theta rdisp i model play pause step reset speed trail preset map curves");
         if (needs_value(action)) {
             if (!(ls >> value)) throw std::runtime_error(where + "'" + action + "' needs a value");
             if (action == "model" && value != "dahl" && value != "rigid")
@@ -90,6 +91,10 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             e.step = true;
         else if (a == "reset")
             e.reset = true;
+        else if (a == "map")
+            e.show_map = true;
+        else if (a == "curves")
+            e.show_map = false;
         else if (a == "speed")
             e.speed = x;
         else if (a == "trail")

@@ -1,6 +1,7 @@
 // Scripted input for tests and demos: "FRAME ACTION [VALUE]" per line, '#' starts a comment.
 // Actions: zeta V, theta DEG, rdisp V, i V, model dahl|rigid, play, pause, step, reset, speed V, trail V,
-// preset ID. Edits of frame f are applied at the start of frame f, like edits from the panel.
+// preset ID, map (show the (zeta, theta) map), curves (show the r_x(zeta) curves). Edits of frame f are
+// applied at the start of frame f, like edits from the panel.
 #pragma once
 
 #include "ui_state.hpp"

@@ -15,7 +15,8 @@ struct UiState {
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
     bool playing = true;
-    double speed = 0.25; // vibration periods per second of wall time
+    bool show_map = false; // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
+    double speed = 0.25;   // vibration periods per second of wall time
     ViewState view;
     std::string status; // last message (file written, ...)
 };
@@ -23,7 +24,7 @@ struct UiState {
 struct UiEdits {
     std::optional<Model> model;
     std::optional<Params> params;
-    std::optional<bool> playing;
+    std::optional<bool> playing, show_map;
     std::optional<double> speed, trail_periods;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;
     std::optional<std::string> preset;

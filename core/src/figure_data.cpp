@@ -1,5 +1,7 @@
 #include "fv/figure_data.hpp"
+
 #include "fv/format.hpp"
+#include "fv/rigid.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -217,6 +219,82 @@ PanelData step_panel(const Params& p, int n, std::vector<Sample>& rows) {
     return panel;
 }
 
+// Index and sub-grid position of the smallest value in a row, refined by a parabola through the minimum
+// and its neighbours (the curve theta*(zeta) would otherwise move in 1-degree stairs).
+double refined_argmin(const std::vector<double>& row, double x0, double dx) {
+    std::size_t k = 0;
+    for (std::size_t j = 1; j < row.size(); ++j)
+        if (row[j] < row[k]) k = j;
+    double x = x0 + dx * static_cast<double>(k);
+    if (k > 0 && k + 1 < row.size()) {
+        const double a = row[k - 1], b = row[k], c = row[k + 1], den = a - 2 * b + c;
+        if (den > 0) x += 0.5 * dx * (a - c) / den;
+    }
+    return x;
+}
+
+PanelData map_panel(const FigureSpec& spec, std::string& table, int threads) {
+    const std::vector<double>& zetas = spec.zetas;
+    const int nth = spec.theta_count;
+    const double dth = spec.theta_max_deg / (nth - 1);
+    std::vector<double> thetas;
+    for (int j = 0; j < nth; ++j) thetas.push_back(j * dth * kPi / 180);
+    // One warm-started zeta sweep per angle, angles spread over the cores.
+    const auto rows = sweep(Model::dahl, zetas, thetas, {spec.params.rdisp}, {spec.params.i}, {}, threads);
+    const std::size_t nz = zetas.size();
+    HeatmapData h;
+    h.nx = static_cast<int>(nz);
+    h.ny = nth;
+    // Cells centred on the grid values.
+    const double dz = (zetas.back() - zetas.front()) / static_cast<double>(nz - 1);
+    h.x0 = zetas.front() - dz / 2, h.x1 = zetas.back() + dz / 2;
+    h.y0 = -dth / 2, h.y1 = spec.theta_max_deg + dth / 2;
+    h.label = "r_{x}";
+    h.values.assign(nz * static_cast<std::size_t>(nth), 0);
+    for (int j = 0; j < nth; ++j)
+        for (std::size_t k = 0; k < nz; ++k)
+            h.values[static_cast<std::size_t>(j) * nz + k] =
+                rows[static_cast<std::size_t>(j) * nz + k].result.rx;
+
+    // theta*(zeta): the angle of the smallest r_x, for the Dahl model and for the rigid one.
+    SeriesData best{"best angle θ*, Dahl", {}, {}, Ink::black, Dash::solid, Mark::none, 2.5f};
+    SeriesData best_rigid{"best angle θ*, rigid", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.8f};
+    table = "zeta,theta_star_deg,r_x_min,theta_star_rigid_deg,r_x_rigid_min\n";
+    std::vector<double> col(static_cast<std::size_t>(nth)), col_rigid(static_cast<std::size_t>(nth));
+    std::vector<double> rigid(nz * static_cast<std::size_t>(nth));
+    parallel_for(
+        static_cast<int>(rigid.size()),
+        [&](int k) {
+            const std::size_t u = static_cast<std::size_t>(k);
+            rigid[u] = rigid_ratio(zetas[u % nz], thetas[u / nz]).rx;
+        },
+        threads);
+    for (std::size_t k = 0; k < nz; ++k) {
+        double rmin = 1e9, rrmin = 1e9;
+        for (int j = 0; j < nth; ++j) {
+            const std::size_t u = static_cast<std::size_t>(j) * nz + k;
+            col[static_cast<std::size_t>(j)] = h.values[u];
+            col_rigid[static_cast<std::size_t>(j)] = rigid[u];
+            rmin = std::min(rmin, h.values[u]);
+            rrmin = std::min(rrmin, rigid[u]);
+        }
+        const double t = refined_argmin(col, 0, dth), tr = refined_argmin(col_rigid, 0, dth);
+        best.x.push_back(zetas[k]), best.y.push_back(t);
+        best_rigid.x.push_back(zetas[k]), best_rigid.y.push_back(tr);
+        table += format_number("%.6g", zetas[k]) + "," + format_number("%.4f", t) + "," +
+                 format_number("%.8f", rmin) + "," + format_number("%.4f", tr) + "," +
+                 format_number("%.8f", rrmin) + "\n";
+    }
+    PanelData panel;
+    panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
+    panel.y_title = "vibration angle θ [°]";
+    panel.x_min = h.x0, panel.x_max = h.x1, panel.y_min = h.y0, panel.y_max = h.y1;
+    panel.heatmap = std::move(h);
+    panel.series = {std::move(best), std::move(best_rigid)};
+    panel.legend = "bottom-right";
+    return panel;
+}
+
 } // namespace
 
 FigureData compute_figure(const FigureSpec& spec, int threads) {
@@ -250,7 +328,27 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         } else {
             fig.panels.push_back(top_view(p, r.period, nullptr));
         }
-        fig.tables.push_back({"", {}, r.period});
+        fig.tables.push_back({"", {}, r.period, ""});
+        break;
+    }
+    case FigureKind::map: {
+        TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
+        fig.panels.push_back(map_panel(spec, best.text, threads));
+        // The grid itself as ratio rows (model,i,theta_deg,rdisp,zeta,r_x,...), like a sweep.
+        const auto& h = *fig.panels.back().heatmap;
+        const double dth = spec.theta_max_deg / (spec.theta_count - 1);
+        for (int j = 0; j < h.ny; ++j)
+            for (int k = 0; k < h.nx; ++k) {
+                SweepPoint sp;
+                sp.params = {spec.zetas[static_cast<std::size_t>(k)], j * dth * kPi / 180, spec.params.rdisp,
+                             spec.params.i};
+                sp.result.rx = h.values[static_cast<std::size_t>(j * h.nx + k)];
+                sp.result.ry = std::nan("");
+                sp.result.error_estimate = std::nan("");
+                grid.ratios.push_back(sp);
+            }
+        fig.tables.push_back(std::move(grid));
+        fig.tables.push_back(std::move(best));
         break;
     }
     case FigureKind::scene: {
@@ -259,12 +357,12 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         view.title = "top view";
         PanelData force = force_panel(r.period);
         force.title = "force over one period";
-        TableData ratios{"-ratio", {}, {}};
+        TableData ratios{"-ratio", {}, {}, ""};
         PanelData curve = ratio_panel(spec, ratios.ratios, threads);
         curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
-        fig.tables.push_back({"", {}, r.period});
+        fig.tables.push_back({"", {}, r.period, ""});
         fig.tables.push_back(std::move(ratios));
         break;
     }

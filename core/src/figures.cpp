@@ -130,6 +130,23 @@ std::string figure_ids() {
     return s;
 }
 
+FigureSpec map_figure(double rdisp, double i) {
+    FigureSpec f;
+    f.id = "map";
+    f.kind = FigureKind::map;
+    f.params = {0, 0, rdisp, i};
+    f.zetas = linspace(0.02, 3, 200);
+    f.theta_count = 91;
+    f.theta_max_deg = 90;
+    f.title = "friction ratio r_{x}(ζ, θ), Dahl model, r_{disp} = " + format_number("%g", rdisp) +
+              ", i = " + format_number("%g", i);
+    f.caption =
+        "r_x over velocity ratio and vibration angle, with the angle of strongest friction reduction "
+        "theta*(zeta) (solid) and that of the rigid model (dashed): the question the paper's conclusion "
+        "answers only for 0 vs 90 degrees.";
+    return f;
+}
+
 FigureSpec scene_figure(const Params& p) {
     FigureSpec f;
     f.id = "scene";

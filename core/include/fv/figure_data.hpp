@@ -63,6 +63,14 @@ struct CircleData {
     float width = 1.2f;
 };
 
+// Values on a regular grid, drawn as a colour map with a colour bar.
+struct HeatmapData {
+    std::vector<double> values; // nx * ny, row-major, row 0 at y0
+    int nx = 0, ny = 0;
+    double x0 = 0, x1 = 1, y0 = 0, y1 = 1; // outer cell edges
+    std::string label;                     // colour bar title
+};
+
 struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
     bool equal_aspect = false;
@@ -72,6 +80,7 @@ struct PanelData {
     std::vector<PointData> points;
     std::vector<CircleData> circles;
     std::vector<ArrowData> arrows;
+    std::optional<HeatmapData> heatmap;
     std::string legend = "best"; // best, none, top-left, top-right, bottom-left, bottom-right
 };
 
@@ -79,7 +88,8 @@ struct PanelData {
 struct TableData {
     std::string suffix;             // "" for the main table
     std::vector<SweepPoint> ratios; // ratio rows (model,i,theta_deg,...), or
-    std::vector<Sample> trace;      // trace rows (tau,Px,...)
+    std::vector<Sample> trace;      // trace rows (tau,Px,...), or
+    std::string text;               // a ready-made table (the map's theta*(zeta) curve)
 };
 
 struct FigureData {

@@ -15,6 +15,7 @@ enum class FigureKind {
     period_view,  // P and T over one steady-state period, top view (Figs. 9, 14, 17)
     period_force, // F_x, F_y, |F| over one steady-state period (Figs. 15, 16, 18)
     scene,        // top view + force + ratio curve of one parameter set (any parameters)
+    map,          // r_x over a (zeta, theta) grid with the best angle theta*(zeta) (beyond the paper)
 };
 
 // One r_x(zeta) curve.
@@ -37,6 +38,9 @@ struct FigureSpec {
     Params params;
     int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
     bool overlay_other_i = false; // Fig. 17: draw i = 0 over i = 1 to show that they coincide
+    // map: theta from 0 to theta_max_deg in theta_count steps (zetas as above; params.rdisp, params.i)
+    int theta_count = 91;
+    double theta_max_deg = 90;
 };
 
 // Every figure of the paper, in paper order: fig5, fig8, fig9, fig10..fig13, fig14a, fig14b, fig15..fig18.
@@ -48,6 +52,9 @@ const FigureSpec* find_figure(const std::string& id);
 // zeta grid of the r_x(zeta) figures: 0.02 apart up to 0.5 (where compliant curves turn sharply), 0.025 up
 // to 1 (which is on the grid: the rigid curve has its corner there at theta = 0), then 0.1 up to 3.
 std::vector<double> ratio_zeta_grid();
+
+// The (zeta, theta) map of r_x for one r_disp and i: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg].
+FigureSpec map_figure(double rdisp, double i);
 
 // Comma-separated list of the valid ids (for error messages).
 std::string figure_ids();
