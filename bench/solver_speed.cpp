@@ -49,10 +49,12 @@ Summary summarize(const std::vector<fv::SweepPoint>& pts) {
 
 int main(int argc, char** argv) {
     int runs = 5, paper_runs = 3;
-    for (int a = 1; a + 1 < argc; a += 2) {
+    bool full = false;
+    for (int a = 1; a < argc; ++a) {
         const std::string k = argv[a];
-        if (k == "--runs") runs = std::atoi(argv[a + 1]);
-        if (k == "--paper-runs") paper_runs = std::atoi(argv[a + 1]);
+        if (k == "--full") full = true;
+        if (k == "--runs" && a + 1 < argc) runs = std::atoi(argv[++a]);
+        if (k == "--paper-runs" && a + 1 < argc) paper_runs = std::atoi(argv[++a]);
     }
     const auto zetas = fv::linspace(0.02, 3, 200);
     const std::vector<double> rdisps{0.5, 1, 2, 5, 20};
@@ -67,8 +69,10 @@ int main(int argc, char** argv) {
     const double t_ode = median_seconds(runs, [&] { ode = fv::ode_sweep_zeta(zetas, theta, rdisps, i1); });
     const double t_loose =
         median_seconds(runs, [&] { ode_loose = fv::ode_sweep_zeta(zetas, theta, rdisps, i1, loose); });
-    const double t_paper =
-        median_seconds(paper_runs, [&] { paper = fv::sweep(fv::Model::dahl, zetas, theta, rdisps, i1); });
+    fv::SteadyOptions paper_opt;
+    paper_opt.scheme = fv::Scheme::paper; // the sweep's default is the ODE solver
+    const double t_paper = median_seconds(
+        paper_runs, [&] { paper = fv::sweep(fv::Model::dahl, zetas, theta, rdisps, i1, paper_opt); });
 
     double worst_diff = 0, worst_loose = 0;
     for (std::size_t k = 0; k < ode.size(); ++k) {
@@ -98,6 +102,7 @@ int main(int argc, char** argv) {
     std::printf("  %6s %6s %10s %12s %12s %12s %9s\n", "rdisp", "zeta", "n needed", "paper [ms]", "ode [ms]",
                 "ode 1e-6[ms]", "ratio");
     std::vector<double> ratios;
+    double sum_paper = 0, sum_ode = 0, sum_loose = 0; // the 15 points as one small sweep
     for (double rd : rdisps)
         for (double z : {0.1, 0.5, 2.0}) {
             const fv::Params p{z, fv::kPi / 2, rd, 1};
@@ -121,10 +126,30 @@ int main(int argc, char** argv) {
                         found ? std::to_string(n).c_str() : "> 4194304", 1e3 * t_p, 1e3 * t_o, 1e3 * t_l,
                         t_p / t_l, found ? "" : " (lower bound)");
             ratios.push_back(t_p / t_l);
+            sum_paper += t_p, sum_ode += t_o, sum_loose += t_l;
         }
     std::sort(ratios.begin(), ratios.end());
     std::printf("  ratio paper(n for 1e-6) / ode(tolerance 1e-6): min %.0fx, median %.0fx\n", ratios.front(),
                 ratios[ratios.size() / 2]);
+    std::printf("  all 15 points as one sweep: paper %.1f ms, ode default %.2f ms (%.0fx), ode 1e-6 %.2f ms (%.0fx)\n",
+                1e3 * sum_paper, 1e3 * sum_ode, sum_paper / sum_ode, 1e3 * sum_loose, sum_paper / sum_loose);
+
+    // The whole Fig. 10 sweep with the paper's scheme as printed at one step count that reaches 1e-6 at
+    // every point (the table above needs up to 2^20): slow (about a minute), so only with --full.
+    if (full) {
+        fv::SteadyOptions fixed;
+        fixed.scheme = fv::Scheme::paper;
+        fixed.steps_per_period = 1 << 20;
+        std::vector<fv::SweepPoint> slow;
+        const double t_slow =
+            median_seconds(1, [&] { slow = fv::sweep(fv::Model::dahl, zetas, theta, rdisps, i1, fixed); });
+        double worst = 0;
+        for (std::size_t k = 0; k < slow.size(); ++k)
+            worst = std::max(worst, std::abs(slow[k].result.rx - ode[k].result.rx));
+        std::printf("\nFig. 10 sweep, paper's scheme at n = 2^20 for every point: %.1f s, max |r_x - ode| = %.2e; "
+                    "ratio to the default solver (%.3f s): %.0fx\n",
+                    t_slow, worst, t_ode, t_slow / t_ode);
+    }
 
     // (zeta, theta) map at rdisp = 2, i = 1: 200 x 91 points, theta = 0, 2, ..., 180 deg.
     std::vector<double> thetas;
