@@ -301,3 +301,20 @@ TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "
     CHECK(best.rfind("zeta,theta_star_deg,r_x_min,theta_star_rigid_deg,r_x_rigid_min", 0) == 0);
     CHECK(lines(best) == 1 + 200);
 }
+
+TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad data is a usage error",
+          "[cli][render][fit]") {
+    const std::string dir = scratch_dir() + "/fig19";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
+    const Run r = run("render --figure fig19 --data " + data + " --size 480x320 --out " + dir);
+    REQUIRE(r.code == 0);
+    const std::string csv = slurp(dir + "/fig19.csv");
+    CHECK(csv.rfind("line,zeta,r_x,sigma,model_i0,residual_i0,model_i1,residual_i1\n", 0) == 0);
+    CHECK(lines(csv) == 1 + 16);
+    CHECK(run("render --figure fig19 --out " + dir).code == 2);
+    std::ofstream(dir + "/bad.csv") << "zeta,r_x\n0.1,oops\n";
+    const Run bad = run("render --figure fig19 --theta 90 --data " + dir + "/bad.csv --out " + dir);
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find("bad.csv:2:") != std::string::npos);
+}

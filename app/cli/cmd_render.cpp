@@ -9,7 +9,11 @@
 #include "fv/atomic_file.hpp"
 #include "fv/figure_data.hpp"
 #include "fv/figures.hpp"
+#include "fv/fit_figure.hpp"
+#include "fv/measurements.hpp"
+
 #include "fv/gfx/png.hpp"
+#include <optional>
 
 #include <cstdio>
 #include <memory>
@@ -57,6 +61,8 @@ Command add_render_command(CLI::App& root) {
         std::string out;
         std::string size = "1280x800";
         ModelArgs model;
+        std::string data;
+        double amplitude = 0, frequency = 0;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand(
@@ -66,6 +72,12 @@ Command add_render_command(CLI::App& root) {
                         " (comma-separate several)")
         ->required();
     cmd->add_option("--out", a->out, "output directory (must exist)")->required();
+    cmd->add_option("--data", a->data,
+                    "fig19: CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)");
+    cmd->add_option("--amplitude", a->amplitude, "fig19: vibration amplitude in um (for vb columns and z_ss)")
+        ->check(number_in({0, 1e6, true}));
+    cmd->add_option("--frequency", a->frequency, "fig19: vibration frequency in kHz (for vb columns)")
+        ->check(number_in({0, 1e6, true}));
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
     cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
@@ -78,6 +90,7 @@ Command add_render_command(CLI::App& root) {
     return {cmd, [a, cmd] {
                 // Resolve the list of figures first: an unknown id lists the valid ones.
                 std::vector<FigureSpec> specs;
+                bool data_fig = false;
                 std::stringstream ids(a->figure);
                 std::string id;
                 while (std::getline(ids, id, ',')) {
@@ -89,6 +102,11 @@ Command add_render_command(CLI::App& root) {
                                 throw UsageError(std::string("--figure scene needs ") + flag +
                                                  " (the same flags as `ratio`)");
                         specs.push_back(scene_figure(to_params(a->model)));
+                    } else if (id == "fig19") {
+                        if (a->data.empty())
+                            throw UsageError("--figure fig19 needs --data FILE (measured r_x; see README, "
+                                             "Fitting measured data)");
+                        data_fig = true;
                     } else if (id == "map") {
                         // Beyond the paper: r_x over (zeta, theta) for one r_disp and i (default 2 and 1).
                         const double rdisp = cmd->get_option("--rdisp")->count() ? a->model.rdisp : 2.0;
@@ -101,11 +119,29 @@ Command add_render_command(CLI::App& root) {
                                          figure_ids());
                     }
                 }
-                if (specs.empty())
-                    throw UsageError("--figure: no figure named; allowed: all, scene, map, " + figure_ids());
+                if (specs.empty() && !data_fig)
+                    throw UsageError("--figure: no figure named; allowed: all, scene, map, fig19, " +
+                                     figure_ids());
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
-                check_out(dir + "/" + specs.front().id + ".png");
+                check_out(dir + "/" + (specs.empty() ? std::string("fig19") : specs.front().id) + ".png");
+                // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
+                std::optional<FigureData> fig19;
+                if (data_fig) {
+                    ReadOptions ro;
+                    if (a->amplitude > 0) ro.amplitude_um = a->amplitude;
+                    if (a->frequency > 0) ro.frequency_khz = a->frequency;
+                    FitOptions fo;
+                    if (cmd->get_option("--theta")->count()) fo.theta_deg = a->model.theta_deg;
+                    if (a->amplitude > 0) fo.amplitude_um = a->amplitude;
+                    try {
+                        fig19 = measurement_figure(read_measurements(a->data, ro), fo);
+                    } catch (const DataError& e) {
+                        throw UsageError(e.what());
+                    } catch (const FitError& e) {
+                        throw UsageError(std::string("--data: ") + e.what());
+                    }
+                }
                 Size sz;
                 std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
 
@@ -127,11 +163,13 @@ Command add_render_command(CLI::App& root) {
                     std::vector<std::pair<std::string, std::string>> csv; // file, content
                 };
                 std::vector<Output> outs;
-                for (const FigureSpec& spec : specs) {
-                    const FigureData data = compute_figure(spec);
-                    Output o{spec.id, session->render_figure(data), {}};
+                std::vector<FigureData> figures;
+                for (const FigureSpec& spec : specs) figures.push_back(compute_figure(spec));
+                if (fig19) figures.push_back(std::move(*fig19));
+                for (const FigureData& data : figures) {
+                    Output o{data.id, session->render_figure(data), {}};
                     for (const TableData& t : data.tables)
-                        o.csv.push_back({dir + "/" + spec.id + t.suffix + ".csv", csv_of(t)});
+                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t)});
                     outs.push_back(std::move(o));
                 }
                 std::vector<std::string> errors(outs.size());

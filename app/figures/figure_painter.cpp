@@ -115,7 +115,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         st.line_width = s.width;
         st.line = line_style(s.dash);
         st.marker = marker_shape(s.mark);
-        plot.add_series(s.label, s.x, s.y, st);
+        st.draw_line = s.width > 0;
+        plot.add_series(s.label, s.x, s.y, st).y_err = s.y_err;
     }
     const PanelData* pd = &panel;
     plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {

@@ -1,0 +1,102 @@
+#include "fv/fit_figure.hpp"
+
+#include "fv/format.hpp"
+#include "fv/rigid.hpp"
+#include "fv/sweep.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fv {
+
+FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt, FitResult* fit_out) {
+    if (data.points.empty()) throw FitError("no measured points");
+    // One angle for the whole figure: the paper's Fig. 19 has one panel per angle.
+    double theta_deg = opt.theta_deg.value_or(data.points.front().theta_deg.value_or(std::nan("")));
+    for (const auto& m : data.points)
+        if (m.theta_deg && std::abs(*m.theta_deg - theta_deg) > 1e-9)
+            throw FitError(
+                "the figure needs one vibration angle; the data have several (plot one angle per file)");
+    if (!std::isfinite(theta_deg)) throw FitError("no vibration angle: give --theta or a theta_deg column");
+
+    FitOptions o = opt;
+    o.theta_deg = theta_deg;
+    o.shape = ShapeChoice::automatic;
+    const FitResult fit = fit_rdisp(data, o);
+    if (fit_out) *fit_out = fit;
+
+    double zmax = 0;
+    for (const auto& m : data.points) zmax = std::max(zmax, m.zeta);
+    const std::vector<double> zetas = linspace(0.01, std::max(0.5, 1.1 * zmax), 120);
+    const double theta = theta_deg * kPi / 180;
+
+    PanelData panel;
+    panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
+    panel.y_title = "friction ratio r_{x}";
+    panel.x_min = 0;
+    panel.x_max = zetas.back();
+    panel.y_min = 0;
+    panel.y_max = 1.05;
+    panel.legend = "bottom-right";
+    SeriesData rigid{"rigid (Eq. " + std::string(theta_deg == 0 ? "10" : (theta_deg == 90 ? "11" : "9")) +
+                         ")",
+                     zetas,
+                     {},
+                     Ink::rigid,
+                     Dash::dashed,
+                     Mark::none,
+                     1.8f};
+    for (double z : zetas) rigid.y.push_back(rigid_ratio(z, theta).rx);
+    panel.series.push_back(std::move(rigid));
+    for (const FitCandidate& c : fit.candidates) {
+        const auto rows = sweep(Model::dahl, zetas, {theta}, {c.rdisp}, {c.i});
+        SeriesData s;
+        s.label = "Dahl, i = " + format_number("%g", c.i) +
+                  ", fitted r_{disp} = " + format_number("%.3g", c.rdisp) + " ± " +
+                  format_number("%.2g", c.rdisp_sigma) + (c.i == fit.best.i ? " (best)" : "");
+        s.x = zetas;
+        for (const auto& r : rows) s.y.push_back(r.result.rx);
+        s.ink = c.i == 0 ? Ink::tip : Ink::body;
+        s.dash = c.i == fit.best.i ? Dash::solid : Dash::dotted;
+        s.width = c.i == fit.best.i ? 2.4f : 1.8f;
+        panel.series.push_back(std::move(s));
+    }
+    SeriesData pts;
+    pts.label = "measured" + std::string(data.has_sigma ? " (± σ)" : "");
+    pts.ink = Ink::black;
+    pts.mark = Mark::circle;
+    pts.width = 0; // markers only
+    for (const auto& m : data.points) {
+        pts.x.push_back(m.zeta);
+        pts.y.push_back(m.rx);
+        if (data.has_sigma) pts.y_err.push_back(m.sigma.value_or(0));
+    }
+    panel.series.push_back(std::move(pts));
+
+    FigureData fig;
+    fig.id = "fig19";
+    fig.title = "Fig. 19: model vs. measurements, θ = " + format_number("%g", theta_deg) + "°";
+    fig.panels.push_back(std::move(panel));
+
+    // Table: each measured point with both models and residuals.
+    TableData t;
+    t.text = "line,zeta,r_x,sigma";
+    for (const FitCandidate& c : fit.candidates) {
+        const std::string i = format_number("%g", c.i);
+        t.text += ",model_i" + i + ",residual_i" + i;
+    }
+    t.text += "\n";
+    for (std::size_t k = 0; k < data.points.size(); ++k) {
+        const Measurement& m = data.points[k];
+        t.text += std::to_string(m.line) + "," + format_number("%.10g", m.zeta) + "," +
+                  format_number("%.10g", m.rx) + "," +
+                  (m.sigma ? format_number("%.10g", *m.sigma) : std::string());
+        for (const FitCandidate& c : fit.candidates)
+            t.text += "," + format_number("%.10g", c.model[k]) + "," + format_number("%.10g", c.residuals[k]);
+        t.text += "\n";
+    }
+    fig.tables.push_back(std::move(t));
+    return fig;
+}
+
+} // namespace fv
