@@ -15,4 +15,4 @@ export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DFV_SANITIZE=address,undefined >/dev/null
 cmake --build build-sanitize -j"$(nproc)"
 cd build-sanitize
-ctest --output-on-failure -j"$(nproc)" -LE no-sanitize "$@"
+ctest --output-on-failure -j"$(nproc)" "$@"
