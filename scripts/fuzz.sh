@@ -25,7 +25,7 @@ for target in fuzz_measurements fuzz_cli; do
   if build-fuzz/tests/fuzz/$target "$corpus" tests/fuzz/corpus/$target -max_total_time="$seconds" \
       -max_len=4096 -timeout=10 -rss_limit_mb=2048 -close_fd_mask=3 -print_final_stats=1 \
       -artifact_prefix="$artifacts/" >"$log" 2>&1; then
-    runs=$(sed -n 's/^stat::number_of_executed_runs: *//p' "$log")
+    runs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log")
     cov=$(grep -Eo 'cov: [0-9]+' "$log" | tail -n 1)
     echo "fuzz: $target OK: $runs runs, $cov, corpus $(ls "$corpus" | wc -l) files, no crash"
   else
