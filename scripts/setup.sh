@@ -10,6 +10,7 @@ PACKAGES=(
   libimgui-dev libglfw3-dev libgl-dev libosmesa6-dev libstb-dev fonts-dejavu-core  # drawing
   xvfb xauth                                # window tests without a display (xvfb-run needs xauth)
   bc                                        # scripts/bench.sh arithmetic
+  clang libclang-rt-14-dev                  # scripts/fuzz.sh (libFuzzer, ASan/UBSan runtimes for clang 14)
 )
 
 missing=()

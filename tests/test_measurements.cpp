@@ -145,6 +145,20 @@ TEST_CASE("measurements: row and size limits, bad conversion constants", "[measu
     e = error_of("r_x,vb\n0.5,100\n", units); // zeta = 379
     CHECK(e.line == 2);
     CHECK_THAT(e.message, Catch::Contains("allowed: zeta in [0, 100]"));
+
+    // Found by fuzzing: v_v = 2 pi f A underflowed to 0, so vb = 0 gave zeta = NaN and the row was accepted.
+    units.amplitude_um = 1e-300;
+    units.frequency_khz = 1e-300;
+    e = error_of("vb,r_x\n0,0.06\n", units);
+    CHECK(e.line == 1);
+    CHECK(e.column == 1);
+    CHECK_THAT(e.message, Catch::Contains("column 'vb' cannot be converted"));
+    // v_v representable but vb / v_v beyond the doubles: out of the zeta range, not infinity or NaN.
+    units.amplitude_um = 1e-150;
+    units.frequency_khz = 1e-150;
+    e = error_of("vb,r_x\n1e300,0.06\n", units);
+    CHECK(e.line == 2);
+    CHECK_THAT(e.message, Catch::Contains("allowed: zeta in [0, 100]"));
 }
 
 TEST_CASE("measurements: files, missing files and directories", "[measurements]") {

@@ -40,3 +40,17 @@ TEST_CASE("units: non-finite or out-of-range arguments throw UnitError naming th
     CHECK_THROWS_AS(zss_from_rdisp(inf, 0.7), UnitError);
     CHECK_THROWS_AS(zss_from_rdisp(2, -0.7), std::invalid_argument);
 }
+
+// Found by fuzzing (tests/fuzz/fuzz_measurements): 1e-300 um at 1e-300 kHz passed the argument checks, v_v
+// underflowed to 0, and vb = 0 became zeta = NaN, which the CSV reader then accepted.
+TEST_CASE("units: results beyond the doubles throw UnitError instead of giving 0, NaN or infinity",
+          "[units]") {
+    CHECK_THROWS_WITH(vibration_velocity(1e-300, 1e-300), Catch::Contains("v_v"));
+    CHECK_THROWS_AS(vibration_velocity(1e300, 1e300), UnitError);
+    CHECK_THROWS_AS(zeta_from_vb(0, 1e-300, 1e-300), UnitError);
+    CHECK_THROWS_WITH(zeta_from_vb(1e300, 1e-10, 1e-10), Catch::Contains("zeta"));
+    CHECK_THROWS_AS(vb_from_zeta(1e300, 1e10, 1e10), UnitError);
+    CHECK_THROWS_AS(rdisp_from_zss(1e300, 1e-300), UnitError);
+    CHECK_THROWS_AS(zss_from_rdisp(1e300, 1e-300), UnitError);
+    CHECK(zeta_from_vb(0, 0.7, 60) == 0);
+}

@@ -171,8 +171,12 @@ void Parser::row(std::string_view line) {
         m.zeta = number(*f, Col::zeta, 0, kMaxZeta, false, "a number in [0, 100]");
     if (const Field* f = field(Col::vb)) {
         const double vb = number(*f, Col::vb, 0, inf, false, "a finite number >= 0 (m/s)");
-        m.zeta = units::zeta_from_vb(vb, *opt_.amplitude_um, *opt_.frequency_khz);
-        if (m.zeta > kMaxZeta)
+        try {
+            m.zeta = units::zeta_from_vb(vb, *opt_.amplitude_um, *opt_.frequency_khz);
+        } catch (const units::UnitError&) {
+            m.zeta = HUGE_VAL; // vb / v_v beyond the doubles: reported as out of the zeta range below
+        }
+        if (!(m.zeta <= kMaxZeta)) // also NaN
             fail(f->column, "'vb' " + quote(f->text) + " gives zeta = " + std::to_string(m.zeta) +
                                 "; allowed: zeta in [0, 100]");
     }

@@ -19,34 +19,44 @@ void require(const char* name, double v, bool zero_allowed) {
     throw UnitError(os.str());
 }
 
+// Valid arguments can still give a result outside the doubles (1e-300 um at 1e-300 kHz underflows to 0; a
+// division by that gives NaN or infinity): reject it rather than pass it on.
+double checked(const char* name, double v, bool zero_allowed) {
+    if (std::isfinite(v) && (zero_allowed ? v >= 0 : v > 0)) return v;
+    std::ostringstream os;
+    os << name << " = " << v << " is outside the range of doubles; allowed: arguments that give a finite "
+       << (zero_allowed ? "result >= 0" : "result > 0");
+    throw UnitError(os.str());
+}
+
 } // namespace
 
 double vibration_velocity(double amplitude_um, double frequency_khz) {
     require("amplitude (um)", amplitude_um, false);
     require("frequency (kHz)", frequency_khz, false);
-    return 2 * kPi * frequency_khz * amplitude_um * kKhzUmToMps;
+    return checked("v_v (m/s)", 2 * kPi * frequency_khz * amplitude_um * kKhzUmToMps, false);
 }
 
 double zeta_from_vb(double vb_m_s, double amplitude_um, double frequency_khz) {
     require("v_b (m/s)", vb_m_s, true);
-    return vb_m_s / vibration_velocity(amplitude_um, frequency_khz);
+    return checked("zeta", vb_m_s / vibration_velocity(amplitude_um, frequency_khz), true);
 }
 
 double vb_from_zeta(double zeta, double amplitude_um, double frequency_khz) {
     require("zeta", zeta, true);
-    return zeta * vibration_velocity(amplitude_um, frequency_khz);
+    return checked("v_b (m/s)", zeta * vibration_velocity(amplitude_um, frequency_khz), true);
 }
 
 double rdisp_from_zss(double amplitude_um, double zss_um) {
     require("amplitude (um)", amplitude_um, false);
     require("z_ss (um)", zss_um, false);
-    return amplitude_um / zss_um;
+    return checked("rdisp", amplitude_um / zss_um, false);
 }
 
 double zss_from_rdisp(double rdisp, double amplitude_um) {
     require("rdisp", rdisp, false);
     require("amplitude (um)", amplitude_um, false);
-    return amplitude_um / rdisp;
+    return checked("z_ss (um)", amplitude_um / rdisp, false);
 }
 
 } // namespace fv::units
