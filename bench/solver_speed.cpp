@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
     std::sort(ratios.begin(), ratios.end());
     std::printf("  ratio paper(n for 1e-6) / ode(tolerance 1e-6): min %.0fx, median %.0fx\n", ratios.front(),
                 ratios[ratios.size() / 2]);
-    std::printf("  all 15 points as one sweep: paper %.1f ms, ode default %.2f ms (%.0fx), ode 1e-6 %.2f ms (%.0fx)\n",
+    std::printf("  all 15 points as one sweep: paper %.1f ms, ode default %.2f ms (%.0fx), ode 1e-6 %.2f ms "
+                "(%.0fx)\n",
                 1e3 * sum_paper, 1e3 * sum_ode, sum_paper / sum_ode, 1e3 * sum_loose, sum_paper / sum_loose);
 
     // The whole Fig. 10 sweep with the paper's scheme as printed at one step count that reaches 1e-6 at
@@ -146,9 +147,10 @@ int main(int argc, char** argv) {
         double worst = 0;
         for (std::size_t k = 0; k < slow.size(); ++k)
             worst = std::max(worst, std::abs(slow[k].result.rx - ode[k].result.rx));
-        std::printf("\nFig. 10 sweep, paper's scheme at n = 2^20 for every point: %.1f s, max |r_x - ode| = %.2e; "
-                    "ratio to the default solver (%.3f s): %.0fx\n",
-                    t_slow, worst, t_ode, t_slow / t_ode);
+        std::printf(
+            "\nFig. 10 sweep, paper's scheme at n = 2^20 for every point: %.1f s, max |r_x - ode| = %.2e; "
+            "ratio to the default solver (%.3f s): %.0fx\n",
+            t_slow, worst, t_ode, t_slow / t_ode);
     }
 
     // (zeta, theta) map at rdisp = 2, i = 1: 200 x 91 points, theta = 0, 2, ..., 180 deg.

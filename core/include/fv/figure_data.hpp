@@ -25,7 +25,7 @@ struct SeriesData {
     Dash dash = Dash::solid;
     Mark mark = Mark::none;
     float width = 2;
-    float opacity = 1; // < 1: faded (older parts of a trail)
+    float opacity = 1;         // < 1: faded (older parts of a trail)
     std::vector<double> y_err; // symmetric error bars (measured data); width 0 draws markers only
 };
 
