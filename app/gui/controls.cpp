@@ -17,6 +17,11 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.speed) speed = o.speed;
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
+    if (o.amplitude_um) amplitude_um = o.amplitude_um;
+    if (o.frequency_khz) frequency_khz = o.frequency_khz;
+    if (o.load_data) load_data = o.load_data, clear_data = false;
+    if (o.clear_data) clear_data = true, load_data.reset();
+    fit_data |= o.fit_data;
     step |= o.step;
     reset |= o.reset;
     screenshot |= o.screenshot;
@@ -47,13 +52,15 @@ void readout(const char* name, const char* fmt, double v) {
 } // namespace
 
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height) {
+                      bool busy, float width, float height, OpenDataDialog& dialog) {
     UiEdits e;
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
     ImGui::Begin("frictionviz", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    ImGui::PushItemWidth(-64);
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_MenuBar);
+    e.merge(draw_menu(ui, dialog));
+    ImGui::PushItemWidth(-72);
 
     Params p = ui.params;
     double theta_deg = p.theta * 180 / kPi;
@@ -92,6 +99,9 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     }
 
     ImGui::Separator();
+    e.merge(draw_vibration_controls(ui));
+
+    ImGui::Separator();
     ImGui::TextUnformatted("Paper figures");
     for (const FigureSpec* f : presets()) {
         if (ImGui::Button(f->id.c_str())) e.preset = f->id;
@@ -112,28 +122,25 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (slider_double("trail", &trail, 0.25, 4, "%.2f periods")) e.trail_periods = trail;
 
     ImGui::Separator();
-    ImGui::TextUnformatted("Now");
-    readout("τ / 2π", "%.2f", sim.tau() / (2 * kPi));
-    readout("z / z_ss", "%.3f", sim.model() == Model::rigid ? 1.0 : sim.z() / sim.params().zss());
-    ImGui::TextUnformatted("tip");
-    ImGui::SameLine(165);
-    ImGui::TextUnformatted(sim.model() == Model::rigid
-                               ? "rigid"
-                               : (sim.slipping() ? "slips" : (sim.params().i == 0 ? "sticks" : "creeps")));
+    // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
+    ImGui::Text("Now  τ/2π %.2f   z/z_ss %.3f   %s", sim.tau() / (2 * kPi),
+                sim.model() == Model::rigid ? 1.0 : sim.z() / sim.params().zss(),
+                sim.model() == Model::rigid
+                    ? "rigid"
+                    : (sim.slipping() ? "slips" : (sim.params().i == 0 ? "sticks" : "creeps")));
     if (std::isfinite(sim.last_period_mean().x()))
         readout("F_x, last period mean", "%.4f", sim.last_period_mean().x());
     ImGui::Separator();
-    ImGui::TextUnformatted(busy ? "Steady state (updating…)" : "Steady state");
     if (curves) {
-        readout("r_x", "%.5f", curves->current.rx);
-        readout("r_y", "%.5f", curves->current.ry);
-        if (curves->request.model == Model::dahl) {
-            ImGui::TextUnformatted("periods to steady");
-            ImGui::SameLine(165);
-            ImGui::Text("%d (%s)", curves->current.periods,
-                        curves->current.status == SteadyStatus::converged ? "reached" : "NOT reached");
-            readout("error est.", "%.1e", curves->current.error_estimate);
-        }
+        ImGui::Text("Steady state%s  r_x %.5f   r_y %.5f", busy ? "…" : "", curves->current.rx,
+                    curves->current.ry);
+        if (curves->request.model == Model::dahl)
+            ImGui::Text(curves->current.status == SteadyStatus::converged
+                            ? "reached in %d periods, error est. %.1e"
+                            : "NOT reached in %d periods, error est. %.1e",
+                        curves->current.periods, curves->current.error_estimate);
+    } else {
+        ImGui::TextUnformatted("Steady state (computing…)");
     }
     ImGui::Separator();
     bool show_map = ui.show_map;
@@ -141,11 +148,15 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
+    ImGui::Separator();
+    e.merge(draw_data_controls(ui, dialog));
+    ImGui::Separator();
     if (ImGui::Button("Export trace CSV")) e.export_csv = true;
     ImGui::SameLine();
     if (ImGui::Button("Screenshot [S]")) e.screenshot = true;
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::PopItemWidth();
+    e.merge(draw_open_dialog(dialog));
     ImGui::End();
     return e;
 }
@@ -153,7 +164,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
 UiEdits keyboard_edits(const UiState& ui) {
     UiEdits e;
     const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput) return e;
+    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return e;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) e.playing = !ui.playing;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) e.step = true;
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;

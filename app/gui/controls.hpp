@@ -1,6 +1,7 @@
 // The control panel (Dear ImGui): sliders for zeta, theta, r_disp, i, the model, playback, presets, readouts.
 #pragma once
 
+#include "data_controls.hpp"
 #include "ratio_worker.hpp"
 #include "ui_state.hpp"
 
@@ -10,9 +11,9 @@ namespace fv::app {
 
 // Draws the panel at the left edge (width in logical pixels) and returns what the user changed.
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height);
+                      bool busy, float width, float height, OpenDataDialog& dialog);
 
-// Space, Right, R, S, Esc (ignored while a text field has the keyboard).
+// Space, Right, R, S, Esc (ignored while a text field has the keyboard or a dialog is open).
 UiEdits keyboard_edits(const UiState& ui);
 
 // The paper's top-view figures as presets: fig9, fig14a, fig14b, fig17.

@@ -1,4 +1,5 @@
 #include "dashboard.hpp"
+#include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
 
 #include "figures/figure_painter.hpp"
@@ -137,17 +138,40 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     return panel;
 }
 
-PanelData ratio_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy) {
+double ratio_zeta_max(const MeasurementSet* data) {
+    double zmax = 3;
+    if (data)
+        for (const Measurement& m : data->points) zmax = std::max(zmax, 1.05 * m.zeta);
+    return std::min(zmax, kMaxZeta);
+}
+
+PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, const RatioOverlay& overlay) {
     PanelData panel;
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
+    if (overlay.vv_m_s > 0)
+        panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
     panel.y_title = "friction ratio r_{x}";
     panel.legend = "bottom-right";
     panel.x_min = 0;
-    panel.x_max = 3;
+    panel.x_max = ratio_zeta_max(overlay.data);
     panel.y_min = 0;
     panel.y_max = 1.05;
+    // Measured points above the curves: they are what the curves are held against.
+    auto add_data = [&](std::optional<double> theta_deg) {
+        if (!overlay.data) return;
+        for (SeriesData& s : measured_series(*overlay.data, theta_deg)) {
+            // Points outside [0, 1.05] would be clipped silently: widen the axis to show them.
+            for (std::size_t k = 0; k < s.y.size(); ++k) {
+                const double e = k < s.y_err.size() ? s.y_err[k] : 0;
+                panel.y_min = std::min(*panel.y_min, s.y[k] - e - 0.03);
+                panel.y_max = std::max(*panel.y_max, s.y[k] + e + 0.03);
+            }
+            panel.series.push_back(std::move(s));
+        }
+    };
     if (!curves) {
         panel.title = "r_{x}(ζ): computing…";
+        add_data(std::nullopt);
         return panel;
     }
     const Params& p = curves->request.params;
@@ -160,8 +184,8 @@ PanelData ratio_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
              curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(
         {"rigid", curves->zetas, curves->rigid_rx, Ink::rigid, Dash::dashed, Mark::none, 1.8f});
+    add_data(p.theta * 180 / kPi);
     panel.points.push_back({Vec2(p.zeta, curves->current.rx), Ink::tip, Mark::diamond, "", 12});
-    (void)sim;
     return panel;
 }
 
@@ -187,13 +211,13 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
 
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, bool show_map) {
+                                    bool busy, bool show_map, const RatioOverlay& overlay) {
     const DashboardLayout l = layout_dashboard(area);
     DashboardTransforms t;
     t.top_view = paint_panel(canvas, top_view_panel(sim, view), l.top_view);
     t.force = paint_panel(canvas, force_panel_live(sim, curves), l.force);
     t.ratio = paint_panel(
-        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(sim, curves, busy), l.ratio);
+        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(curves, busy, overlay), l.ratio);
     return t;
 }
 

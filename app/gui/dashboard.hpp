@@ -9,6 +9,7 @@
 #include "fv/gfx/canvas.hpp"
 #include "fv/gfx/plot.hpp"
 #include "fv/live_sim.hpp"
+#include "fv/measurements.hpp"
 
 #include <optional>
 
@@ -29,7 +30,17 @@ DashboardLayout layout_dashboard(const gfx::Rect& area);
 
 PanelData top_view_panel(const LiveSim& sim, const ViewState& view);
 PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves);
-PanelData ratio_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy);
+// What the ratio plot shows besides the model: measured points and the physical scale of zeta.
+struct RatioOverlay {
+    const MeasurementSet* data = nullptr; // measured r_x(zeta), or none
+    double vv_m_s = 0;                    // v_v = 2 pi f A; > 0 adds the v_b scale to the axis title
+};
+
+// The zeta range the ratio plot spans: [0, 3], wider when measured points lie further out.
+double ratio_zeta_max(const MeasurementSet* data);
+
+PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy,
+                           const RatioOverlay& overlay = {});
 
 struct DashboardTransforms {
     gfx::PlotTransform top_view, force, ratio;
@@ -41,6 +52,6 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
 // show_map: the lower-right panel shows the (zeta, theta) map instead of the r_x(zeta) curves.
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, bool show_map = false);
+                                    bool busy, bool show_map = false, const RatioOverlay& overlay = {});
 
 } // namespace fv::app

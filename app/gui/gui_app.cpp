@@ -2,6 +2,7 @@
 
 #include "controls.hpp"
 #include "dashboard.hpp"
+#include "measured_data.hpp"
 #include "ratio_worker.hpp"
 #include "script.hpp"
 
@@ -11,6 +12,7 @@
 #include "fv/figures.hpp"
 #include "fv/gfx/png.hpp"
 #include "fv/live_sim.hpp"
+#include "fv/units.hpp"
 
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
@@ -27,7 +29,7 @@ namespace fv::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr float kPanelWidth = 330;
+constexpr float kPanelWidth = 340;
 
 std::string png_string(const gfx::Image& img) {
     const auto v = gfx::encode_png(img);
@@ -115,10 +117,19 @@ int run_gui(const GuiOptions& o) {
     UiState ui;
     ui.model = o.model;
     ui.params = o.params;
+    ui.amplitude_um = o.amplitude_um;
+    ui.frequency_khz = o.frequency_khz;
+    if (!o.data.empty()) {
+        ui.status = load_measured(ui, o.data);
+        if (!ui.data) throw std::runtime_error(ui.status); // the CLI checked it; the file changed since
+    }
     LiveSim sim(ui.model, ui.params);
     sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
     RatioWorker worker;
-    worker.request({ui.model, ui.params});
+    auto ratio_request = [&ui] { return RatioRequest{ui.model, ui.params, ui.show_map, ratio_zeta_max(ui.data ? &*ui.data : nullptr)}; };
+    worker.request(ratio_request());
+    OpenDataDialog dialog;
+    DataFit fit;
 
     UiEdits queued;
     DashboardTransforms transforms{};
@@ -134,6 +145,8 @@ int run_gui(const GuiOptions& o) {
         if (window) {
             window->poll_events();
             if (window->should_close()) break;
+            // Files dropped onto the window: the last one is shown (one data set at a time).
+            for (std::string& path : window->take_dropped_paths()) queued.load_data = std::move(path);
         }
         // 1. All edits of the previous frame (panel, keys, mouse) and of the script land here, at one point.
         queued.merge(script_edits(script, frame, ui));
@@ -150,10 +163,31 @@ int run_gui(const GuiOptions& o) {
                 queued.reset = true;
             }
         }
-        bool model_changed = false;
+        bool model_changed = false, data_changed = false;
         if (queued.model && *queued.model != ui.model) ui.model = *queued.model, model_changed = true;
-        if (queued.params && validate(*queued.params).empty())
-            ui.params = *queued.params, model_changed = true;
+        if (queued.params) {
+            if (const std::string err = range_error(*queued.params); err.empty())
+                ui.params = *queued.params, model_changed = true;
+            else
+                ui.status = err;
+        }
+        if (queued.amplitude_um || queued.frequency_khz) {
+            const std::string err = set_vibration(ui, queued.amplitude_um, queued.frequency_khz);
+            if (err.empty()) model_changed = data_changed = true;
+            else ui.status = err;
+        }
+        if (queued.load_data) ui.status = load_measured(ui, *queued.load_data), data_changed = true;
+        if (queued.clear_data && ui.data) ui.data.reset(), ui.status = "data cleared", data_changed = true;
+        if (queued.fit_data && ui.data && ui.model == Model::dahl) {
+            fit.start(ui);
+            ui.status = "fitting r_disp and i to " + std::to_string(ui.data->points.size()) + " points…";
+        }
+        // A finished fit sets r_disp and i (scripted runs wait for it, for reproducible pictures).
+        if (const auto done = fit.poll(ui, scripted)) {
+            ui.status = done->status;
+            if (done->params) ui.params = *done->params, model_changed = true;
+        }
+        ui.fitting = fit.running();
         if (queued.playing) ui.playing = *queued.playing;
         bool ask_worker = false;
         if (queued.show_map && *queued.show_map != ui.show_map)
@@ -164,7 +198,7 @@ int run_gui(const GuiOptions& o) {
             sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
         }
         if (model_changed) sim.apply(ui.model, ui.params);
-        if (model_changed || ask_worker) worker.request({ui.model, ui.params, ui.show_map});
+        if (model_changed || ask_worker || data_changed) worker.request(ratio_request());
         if (queued.reset) sim.reset(), step_carry = 0;
         if (queued.quit) break;
 
@@ -198,7 +232,7 @@ int run_gui(const GuiOptions& o) {
         }
         ImGui::NewFrame();
         const auto curves = worker.latest();
-        queued.merge(draw_controls(ui, sim, curves, worker.busy(), kPanelWidth, logical.y));
+        queued.merge(draw_controls(ui, sim, curves, worker.busy(), kPanelWidth, logical.y, dialog));
         queued.merge(keyboard_edits(ui));
         handle_mouse(ui, sim, transforms);
         ImGui::Render();
@@ -207,7 +241,9 @@ int run_gui(const GuiOptions& o) {
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, ratio, gfx::colors::white);
         transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view,
-                                     curves, worker.busy(), ui.show_map);
+                                     curves, worker.busy(), ui.show_map,
+                                     {ui.data ? &*ui.data : nullptr,
+                                      units::vibration_velocity(ui.amplitude_um, ui.frequency_khz)});
         const auto t_build = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());

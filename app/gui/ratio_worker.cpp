@@ -64,7 +64,7 @@ void RatioWorker::run() {
         RatioCurves out;
         out.request = req;
         out.current = steady_ratio(req.model, req.params);
-        out.zetas = ratio_zeta_grid();
+        out.zetas = ratio_zeta_grid(req.zeta_max);
         bool aborted = outdated();
         if (!aborted) {
             for (double z : out.zetas) out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);

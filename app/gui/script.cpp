@@ -1,6 +1,7 @@
 #include "script.hpp"
 
 #include "fv/figures.hpp"
+#include "fv/units.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -10,14 +11,19 @@
 namespace fv::app {
 namespace {
 
-bool needs_value(const std::string& a) {
+bool numeric(const std::string& a) {
     return a == "zeta" || a == "theta" || a == "rdisp" || a == "i" || a == "speed" || a == "trail" ||
-           a == "model" || a == "preset";
+           a == "amplitude" || a == "frequency" || a == "vb" || a == "zss";
+}
+bool needs_value(const std::string& a) {
+    return numeric(a) || a == "model" || a == "preset" || a == "load";
 }
 bool known(const std::string& a) {
     return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset" || a == "map" ||
-           a == "curves";
+           a == "curves" || a == "clear" || a == "fit";
 }
+constexpr const char* kActions = "zeta theta rdisp i model play pause step reset speed trail preset map curves "
+                                 "amplitude frequency vb zss load clear fit";
 
 } // namespace
 
@@ -41,19 +47,21 @@ Script load_script(const std::string& path) {
         if (frame < 0) throw std::runtime_error(where + "frame must be >= 0");
         if (!(ls >> action) || !known(action))
             throw std::runtime_error(
-                where + "unknown action '" + action +
-                "'; allowed: zeta theta rdisp i model play pause step reset speed trail preset map curves");
+                where + "unknown action '" + action + "'; allowed: " + kActions);
         if (needs_value(action)) {
             if (!(ls >> value)) throw std::runtime_error(where + "'" + action + "' needs a value");
             if (action == "model" && value != "dahl" && value != "rigid")
                 throw std::runtime_error(where + "model must be dahl or rigid");
             if (action == "preset" && !find_figure(value))
                 throw std::runtime_error(where + "unknown preset '" + value + "'; allowed: " + figure_ids());
-            if (action != "model" && action != "preset") {
+            if (numeric(action)) {
                 char* end = nullptr;
                 const double v = std::strtod(value.c_str(), &end);
                 if (*end != '\0' || !std::isfinite(v))
                     throw std::runtime_error(where + "'" + value + "' is not a number");
+                if ((action == "amplitude" || action == "frequency" || action == "zss") && !(v > 0))
+                    throw std::runtime_error(where + "'" + action + "' must be > 0");
+                if (action == "vb" && v < 0) throw std::runtime_error(where + "'vb' must be >= 0");
             }
         }
         if (ls >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
@@ -72,7 +80,7 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
         std::istringstream ls(entry);
         std::string a, v;
         ls >> a >> v;
-        const double x = (a == "model" || a == "preset" || v.empty()) ? 0 : std::stod(v);
+        const double x = numeric(a) ? std::stod(v) : 0;
         if (a == "zeta")
             p.zeta = x, params_changed = true;
         else if (a == "theta")
@@ -101,6 +109,29 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             e.trail_periods = x;
         else if (a == "preset")
             e.preset = v;
+        else if (a == "amplitude")
+            e.amplitude_um = x;
+        else if (a == "frequency")
+            e.frequency_khz = x;
+        else if (a == "vb" || a == "zss") {
+            // With the A and f in effect before this frame's edits, like the panel's inputs. A value beyond
+            // the doubles gives NaN: the loop rejects it with a status line, like any inadmissible edit.
+            try {
+                if (a == "vb")
+                    p.zeta = units::zeta_from_vb(x, ui.amplitude_um, ui.frequency_khz);
+                else
+                    p.rdisp = units::rdisp_from_zss(ui.amplitude_um, x);
+            } catch (const units::UnitError&) {
+                (a == "vb" ? p.zeta : p.rdisp) = std::nan("");
+            }
+            params_changed = true;
+        }
+        else if (a == "load")
+            e.load_data = v;
+        else if (a == "clear")
+            e.clear_data = true;
+        else if (a == "fit")
+            e.fit_data = true;
     }
     if (params_changed) e.params = p;
     return e;

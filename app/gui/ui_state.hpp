@@ -4,6 +4,7 @@
 
 #include "dashboard.hpp"
 
+#include "fv/measurements.hpp"
 #include "fv/params.hpp"
 
 #include <optional>
@@ -19,6 +20,15 @@ struct UiState {
     double speed = 0.25;   // vibration periods per second of wall time
     ViewState view;
     std::string status; // last message (file written, ...)
+
+    // The physical view of zeta and r_disp: v_b = zeta 2 pi f A, z_ss = A / r_disp (units.hpp). Default:
+    // the experiment of the paper's Fig. 19 (Littmann et al., Sec. 4: 0.7 um at 60 kHz).
+    double amplitude_um = 0.7, frequency_khz = 60;
+
+    // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`).
+    std::optional<MeasurementSet> data;
+    std::string data_path; // re-read when A or f change and the file gives v_b
+    bool fitting = false;  // a fit of r_disp and i to the data is running
 };
 
 struct UiEdits {
@@ -26,6 +36,10 @@ struct UiEdits {
     std::optional<Params> params;
     std::optional<bool> playing, show_map;
     std::optional<double> speed, trail_periods;
+    // A or f: v_b and z_ss stay, zeta and r_disp follow (as when an experimenter turns up the amplitude).
+    std::optional<double> amplitude_um, frequency_khz;
+    std::optional<std::string> load_data; // a CSV path to read (replaces the data shown)
+    bool clear_data = false, fit_data = false;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;
     std::optional<std::string> preset;
 

@@ -3,6 +3,8 @@
 
 #include "fv/sweep.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace fv {
@@ -105,11 +107,16 @@ std::vector<FigureSpec> make_figures() {
 
 } // namespace
 
-std::vector<double> ratio_zeta_grid() {
+std::vector<double> ratio_zeta_grid(double zeta_max) {
     std::vector<double> z;
     for (int k = 1; k <= 25; ++k) z.push_back(0.02 * k);
     for (int k = 1; k <= 20; ++k) z.push_back(0.5 + 0.025 * k);
     for (int k = 1; k <= 20; ++k) z.push_back(1 + 0.1 * k);
+    // Past 3 the curves are smooth and flat (r_x -> 1): at most 40 more points, no closer than 0.1.
+    if (zeta_max > 3) {
+        const int n = std::min(40, static_cast<int>(std::ceil((zeta_max - 3) / 0.1)));
+        for (int k = 1; k <= n; ++k) z.push_back(3 + (zeta_max - 3) * k / n);
+    }
     return z;
 }
 

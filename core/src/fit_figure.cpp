@@ -9,6 +9,29 @@
 
 namespace fv {
 
+std::vector<SeriesData> measured_series(const MeasurementSet& data, std::optional<double> theta_deg) {
+    SeriesData here, other;
+    here.label = "measured" + std::string(data.has_sigma ? " (± σ)" : "");
+    other.label = "measured at another θ";
+    for (SeriesData* s : {&here, &other}) {
+        s->ink = Ink::black;
+        s->mark = Mark::circle;
+        s->width = 0; // markers only
+    }
+    other.opacity = 0.3f;
+    for (const auto& m : data.points) {
+        const bool elsewhere = theta_deg && m.theta_deg && std::abs(*m.theta_deg - *theta_deg) > 0.5;
+        SeriesData& s = elsewhere ? other : here;
+        s.x.push_back(m.zeta);
+        s.y.push_back(m.rx);
+        if (data.has_sigma) s.y_err.push_back(m.sigma.value_or(0));
+    }
+    std::vector<SeriesData> out;
+    for (SeriesData* s : {&here, &other})
+        if (!s->x.empty()) out.push_back(std::move(*s));
+    return out;
+}
+
 FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt, FitResult* fit_out) {
     if (data.points.empty()) throw FitError("no measured points");
     // One angle for the whole figure: the paper's Fig. 19 has one panel per angle.
@@ -61,17 +84,7 @@ FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt,
         s.width = c.i == fit.best.i ? 2.4f : 1.8f;
         panel.series.push_back(std::move(s));
     }
-    SeriesData pts;
-    pts.label = "measured" + std::string(data.has_sigma ? " (± σ)" : "");
-    pts.ink = Ink::black;
-    pts.mark = Mark::circle;
-    pts.width = 0; // markers only
-    for (const auto& m : data.points) {
-        pts.x.push_back(m.zeta);
-        pts.y.push_back(m.rx);
-        if (data.has_sigma) pts.y_err.push_back(m.sigma.value_or(0));
-    }
-    panel.series.push_back(std::move(pts));
+    for (SeriesData& s : measured_series(data)) panel.series.push_back(std::move(s));
 
     FigureData fig;
     fig.id = "fig19";

@@ -6,6 +6,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace fv::gfx {
 namespace {
@@ -49,6 +50,12 @@ WindowContext::WindowContext(int width, int height, const std::string& title, bo
         if (--g_glfw_users == 0) glfwTerminate();
         throw std::runtime_error("could not open a GL 3.3 core window: " + g_last_glfw_error);
     }
+    // The ImGui GLFW backend (1.86) installs no drop callback and does not use the user pointer.
+    glfwSetWindowUserPointer(window_, this);
+    glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
+        auto* self = static_cast<WindowContext*>(glfwGetWindowUserPointer(w));
+        for (int k = 0; k < count; ++k) self->dropped_.emplace_back(paths[k]);
+    });
     glfwMakeContextCurrent(window_);
     glfwSwapInterval(1);
     gl_.load(&glfw_loader);
@@ -57,6 +64,10 @@ WindowContext::WindowContext(int width, int height, const std::string& title, bo
 WindowContext::~WindowContext() {
     glfwDestroyWindow(window_);
     if (--g_glfw_users == 0) glfwTerminate();
+}
+
+std::vector<std::string> WindowContext::take_dropped_paths() {
+    return std::exchange(dropped_, {});
 }
 
 Size WindowContext::framebuffer_size() const {

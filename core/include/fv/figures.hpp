@@ -50,8 +50,9 @@ const std::vector<FigureSpec>& paper_figures();
 const FigureSpec* find_figure(const std::string& id);
 
 // zeta grid of the r_x(zeta) figures: 0.02 apart up to 0.5 (where compliant curves turn sharply), 0.025 up
-// to 1 (which is on the grid: the rigid curve has its corner there at theta = 0), then 0.1 up to 3.
-std::vector<double> ratio_zeta_grid();
+// to 1 (which is on the grid: the rigid curve has its corner there at theta = 0), then 0.1 up to 3; past 3
+// up to zeta_max (when larger) in at most 40 steps.
+std::vector<double> ratio_zeta_grid(double zeta_max = 3);
 
 // The (zeta, theta) map of r_x for one r_disp and i: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg].
 FigureSpec map_figure(double rdisp, double i);

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -89,8 +90,13 @@ class WindowContext final : public GpuContext {
     void poll_events();
     GLFWwindow* native() const { return window_; } ///< For the ImGui GLFW input backend.
 
+    /// Paths of files dropped onto the window since the last call (GLFW's drop callback collects them
+    /// during poll_events()), oldest first.
+    std::vector<std::string> take_dropped_paths();
+
   private:
     GLFWwindow* window_ = nullptr;
+    std::vector<std::string> dropped_;
 };
 
 /// The one place that picks a backend.

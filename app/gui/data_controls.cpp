@@ -1,0 +1,170 @@
+#include "data_controls.hpp"
+
+#include "measured_data.hpp"
+
+#include "fv/units.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <system_error>
+#include <vector>
+
+namespace fv::app {
+namespace {
+
+// Commits every keystroke that parses to an admissible value; a half-typed "0." is simply not applied.
+bool input_positive(const char* label, double* v, const char* format) {
+    double x = *v;
+    if (!ImGui::InputDouble(label, &x, 0, 0, format)) return false;
+    if (!(x > 0) || !std::isfinite(x)) return false;
+    *v = x;
+    return true;
+}
+
+// The .csv files in `dir` (sorted), at most 200: enough to pick from, never a stall on a huge directory.
+std::vector<std::string> csv_files(const std::filesystem::path& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end && out.size() < 200;
+         it.increment(ec)) {
+        const auto& p = it->path();
+        if (p.extension() == ".csv" && it->is_regular_file(ec)) out.push_back(p.filename().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+} // namespace
+
+UiEdits draw_vibration_controls(const UiState& ui) {
+    UiEdits e;
+    const double vv = units::vibration_velocity(ui.amplitude_um, ui.frequency_khz);
+    ImGui::Text("Physical units  (v_v = 2π f A = %.4g m/s)", vv);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("ζ = v_b / (2π f A), Eq. (6); r_disp = A / z_ss, Eq. (34).\n"
+                          "Changing A or f keeps v_b and z_ss: ζ and r_disp follow.");
+    // Two inputs to a line, each label beside its field.
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float half = (ImGui::GetContentRegionAvail().x - st.ItemSpacing.x) / 2 -
+                       ImGui::CalcTextSize("z_ss [µm]").x - st.ItemInnerSpacing.x;
+    ImGui::PushItemWidth(half);
+    double a = ui.amplitude_um, f = ui.frequency_khz;
+    if (input_positive("A [µm]", &a, "%.4g")) e.amplitude_um = a;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("vibration amplitude x_v");
+    ImGui::SameLine();
+    if (input_positive("f [kHz]", &f, "%.4g")) e.frequency_khz = f;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("vibration frequency");
+    double vb = vb_of(ui), zss = zss_of(ui);
+    Params p = ui.params;
+    if (ImGui::InputDouble("v_b [m/s]", &vb, 0, 0, "%.4g") && std::isfinite(vb) && vb >= 0 &&
+        vb / vv <= kMaxZeta) {
+        p.zeta = vb / vv;
+        e.params = p;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sliding velocity of the body; sets ζ = v_b / v_v");
+    ImGui::SameLine();
+    if (ui.model == Model::rigid) ImGui::BeginDisabled();
+    if (input_positive("z_ss [µm]", &zss, "%.4g") && ui.amplitude_um / zss <= 1e4) {
+        p.rdisp = ui.amplitude_um / zss;
+        e.params = p;
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("steady deflection of the asperity F_c / σ₀, Eq. (15); sets r_disp = A / z_ss");
+    if (ui.model == Model::rigid) ImGui::EndDisabled();
+    ImGui::PopItemWidth();
+    return e;
+}
+
+UiEdits draw_data_controls(const UiState& ui, OpenDataDialog& dialog) {
+    UiEdits e;
+    ImGui::TextUnformatted("Measured data");
+    if (ui.data) {
+        const MeasurementSet& d = *ui.data;
+        ImGui::TextWrapped("%s", std::filesystem::path(d.file).filename().string().c_str());
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", d.file.c_str());
+        ImGui::Text("%zu points%s%s", d.points.size(), d.has_sigma ? ", ± σ" : "",
+                    d.has_theta ? ", θ per point" : ", at the θ shown");
+    } else {
+        ImGui::TextWrapped("none: File > Open, or drop a CSV file onto the window");
+    }
+    if (ImGui::Button("Open…")) dialog.open_requested = true;
+    if (ui.data) {
+        ImGui::SameLine();
+        const bool can_fit = !ui.fitting && ui.model == Model::dahl;
+        if (!can_fit) ImGui::BeginDisabled();
+        if (ImGui::Button(ui.fitting ? "Fitting…" : "Fit r_disp, i")) e.fit_data = true;
+        if (!can_fit) ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip("least-squares r_disp for i = 0 and i = 1, keeps the smaller AIC\n"
+                              "(as `frictionviz fit`); points without θ use the θ shown");
+        ImGui::SameLine();
+        if (ImGui::Button("Clear")) e.clear_data = true;
+    }
+    return e;
+}
+
+UiEdits draw_menu(const UiState& ui, OpenDataDialog& dialog) {
+    UiEdits e;
+    if (!ImGui::BeginMenuBar()) return e;
+    if (ImGui::BeginMenu("File")) {
+        if (ImGui::MenuItem("Open data file…")) dialog.open_requested = true;
+        if (ImGui::MenuItem("Clear data", nullptr, false, ui.data.has_value())) e.clear_data = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Export trace CSV")) e.export_csv = true;
+        if (ImGui::MenuItem("Screenshot", "S")) e.screenshot = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Esc")) e.quit = true;
+        ImGui::EndMenu();
+    }
+    ImGui::EndMenuBar();
+    return e;
+}
+
+UiEdits draw_open_dialog(OpenDataDialog& dialog) {
+    UiEdits e;
+    if (dialog.open_requested) {
+        ImGui::OpenPopup("Open data file");
+        dialog.open_requested = false;
+    }
+    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+    if (!ImGui::BeginPopupModal("Open data file", nullptr, ImGuiWindowFlags_NoSavedSettings)) return e;
+    ImGui::TextWrapped("CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f set in the "
+                       "panel); optional theta_deg, sigma, label.");
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::SetNextItemWidth(-1);
+    const bool enter = ImGui::InputText("##path", &dialog.path, ImGuiInputTextFlags_EnterReturnsTrue);
+    // The CSV files in the directory typed so far (or the working directory).
+    std::filesystem::path dir = std::filesystem::path(dialog.path).parent_path();
+    const bool is_dir = [&] {
+        std::error_code ec;
+        return std::filesystem::is_directory(dialog.path, ec);
+    }();
+    if (is_dir) dir = dialog.path;
+    const std::vector<std::string> files = csv_files(dir.empty() ? "." : dir);
+    bool open = enter;
+    if (ImGui::BeginListBox("##files", ImVec2(-1, 8 * ImGui::GetTextLineHeightWithSpacing()))) {
+        for (const std::string& name : files) {
+            const std::string full = (dir / name).string();
+            if (ImGui::Selectable(name.c_str(), full == dialog.path, ImGuiSelectableFlags_AllowDoubleClick)) {
+                dialog.path = full;
+                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) open = true;
+            }
+        }
+        if (files.empty()) ImGui::TextDisabled("no .csv files in %s", dir.empty() ? "." : dir.c_str());
+        ImGui::EndListBox();
+    }
+    if ((ImGui::Button("Open") || open) && !dialog.path.empty() && !is_dir) {
+        e.load_data = dialog.path;
+        ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
+        ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return e;
+}
+
+} // namespace fv::app

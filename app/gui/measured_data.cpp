@@ -1,0 +1,124 @@
+#include "measured_data.hpp"
+
+#include "fv/format.hpp"
+#include "fv/units.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+
+namespace fv::app {
+namespace {
+
+ReadOptions read_options(const UiState& ui) {
+    ReadOptions o;
+    o.amplitude_um = ui.amplitude_um;
+    o.frequency_khz = ui.frequency_khz;
+    return o;
+}
+
+std::string describe(const MeasurementSet& d, const UiState& ui) {
+    std::string s = "loaded " + std::filesystem::path(d.file).filename().string() + ": " +
+                    std::to_string(d.points.size()) + " point" + (d.points.size() == 1 ? "" : "s");
+    if (d.from_vb)
+        s += ", v_b converted with A = " + format_number("%g", ui.amplitude_um) +
+             " µm, f = " + format_number("%g", ui.frequency_khz) + " kHz";
+    return s;
+}
+
+} // namespace
+
+std::string load_measured(UiState& ui, const std::string& path) {
+    try {
+        MeasurementSet d = read_measurements(path, read_options(ui));
+        if (d.points.empty()) return path + ": no data rows; nothing to show";
+        const std::string msg = describe(d, ui);
+        ui.data = std::move(d);
+        ui.data_path = path;
+        return msg;
+    } catch (const DataError& e) {
+        return e.what();
+    }
+}
+
+std::string set_vibration(UiState& ui, std::optional<double> amplitude_um, std::optional<double> frequency_khz) {
+    UiState next = ui;
+    if (amplitude_um) next.amplitude_um = *amplitude_um;
+    if (frequency_khz) next.frequency_khz = *frequency_khz;
+    try {
+        // Same v_b and z_ss under the new vibration.
+        next.params.zeta = units::zeta_from_vb(vb_of(ui), next.amplitude_um, next.frequency_khz);
+        next.params.rdisp = units::rdisp_from_zss(next.amplitude_um, zss_of(ui));
+    } catch (const units::UnitError& e) {
+        return e.what();
+    }
+    if (const std::string why = range_error(next.params); !why.empty())
+        return "A = " + format_number("%g", next.amplitude_um) + " µm, f = " +
+               format_number("%g", next.frequency_khz) + " kHz at the same v_b and z_ss: " + why;
+    if (ui.data && ui.data->from_vb) {
+        try {
+            next.data = read_measurements(ui.data_path, read_options(next));
+        } catch (const DataError& e) {
+            return e.what();
+        }
+    }
+    ui = std::move(next);
+    return "";
+}
+
+void DataFit::start(const UiState& ui) {
+    if (running() || !ui.data) return;
+    FitOptions o;
+    o.theta_deg = ui.params.theta * 180 / kPi;
+    o.shape = ShapeChoice::automatic;
+    o.amplitude_um = ui.amplitude_um;
+    o.threads = 1; // the renderer keeps the other core
+    job_ = std::async(std::launch::async, [data = *ui.data, o] {
+        Job j;
+        try {
+            j.fit = fit_rdisp(data, o);
+        } catch (const FitError& e) {
+            j.error = e.what();
+        }
+        return j;
+    });
+}
+
+std::optional<DataFit::Outcome> DataFit::poll(const UiState& ui, bool wait) {
+    if (!running()) return std::nullopt;
+    if (!wait && job_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return std::nullopt;
+    const Job j = job_.get();
+    Outcome out;
+    if (!j.fit) {
+        out.status = "fit failed: " + j.error;
+        return out;
+    }
+    const FitCandidate& b = j.fit->best;
+    Params p = ui.params;
+    p.rdisp = b.rdisp;
+    p.i = b.i;
+    out.params = p;
+    out.status = "fit: r_disp = " + format_number("%.4g", b.rdisp) + " ± " + format_number("%.2g", b.rdisp_sigma) +
+                 " (z_ss = " + format_number("%.4g", b.zss_um.value_or(NAN)) + " µm), i = " + format_number("%g", b.i) + " (smaller AIC); " +
+                 (b.weighted ? "reduced χ² = " : "RSS/dof = ") + format_number("%.3g", b.reduced_chi2);
+    if (b.at_bound) out.status += "; r_disp is at the search bound: the data do not pin it";
+    return out;
+}
+
+std::string range_error(const Params& p) {
+    // The CLI's ranges (zeta in [0, 100], r_disp in (0, 1e4]); validate() alone would admit any size.
+    if (std::string why = validate(p); !why.empty()) return why;
+    if (p.zeta > kMaxZeta) return "zeta = " + format_number("%.4g", p.zeta) + "; allowed: zeta in [0, 100]";
+    if (p.rdisp > 1e4) return "r_disp = " + format_number("%.4g", p.rdisp) + "; allowed: r_disp in (0, 1e4]";
+    return "";
+}
+
+double vb_of(const UiState& ui) {
+    return units::vb_from_zeta(ui.params.zeta, ui.amplitude_um, ui.frequency_khz);
+}
+
+double zss_of(const UiState& ui) {
+    return units::zss_from_rdisp(ui.params.rdisp, ui.amplitude_um);
+}
+
+} // namespace fv::app
