@@ -148,8 +148,7 @@ double ratio_zeta_max(const MeasurementSet* data) {
 PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, const RatioOverlay& overlay) {
     PanelData panel;
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
-    if (overlay.vv_m_s > 0)
-        panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
+    if (overlay.vv_m_s > 0) panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
     panel.y_title = "friction ratio r_{x}";
     panel.legend = "bottom-right";
     panel.x_min = 0;
@@ -217,7 +216,8 @@ DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, 
     t.top_view = paint_panel(canvas, top_view_panel(sim, view), l.top_view);
     t.force = paint_panel(canvas, force_panel_live(sim, curves), l.force);
     t.ratio = paint_panel(
-        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(curves, busy, overlay), l.ratio);
+        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(curves, busy, overlay),
+        l.ratio);
     return t;
 }
 

@@ -126,7 +126,9 @@ int run_gui(const GuiOptions& o) {
     LiveSim sim(ui.model, ui.params);
     sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
     RatioWorker worker;
-    auto ratio_request = [&ui] { return RatioRequest{ui.model, ui.params, ui.show_map, ratio_zeta_max(ui.data ? &*ui.data : nullptr)}; };
+    auto ratio_request = [&ui] {
+        return RatioRequest{ui.model, ui.params, ui.show_map, ratio_zeta_max(ui.data ? &*ui.data : nullptr)};
+    };
     worker.request(ratio_request());
     OpenDataDialog dialog;
     DataFit fit;
@@ -173,8 +175,10 @@ int run_gui(const GuiOptions& o) {
         }
         if (queued.amplitude_um || queued.frequency_khz) {
             const std::string err = set_vibration(ui, queued.amplitude_um, queued.frequency_khz);
-            if (err.empty()) model_changed = data_changed = true;
-            else ui.status = err;
+            if (err.empty())
+                model_changed = data_changed = true;
+            else
+                ui.status = err;
         }
         if (queued.load_data) ui.status = load_measured(ui, *queued.load_data), data_changed = true;
         if (queued.clear_data && ui.data) ui.data.reset(), ui.status = "data cleared", data_changed = true;
@@ -240,10 +244,10 @@ int run_gui(const GuiOptions& o) {
         const auto t_ui = Clock::now();
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, ratio, gfx::colors::white);
-        transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view,
-                                     curves, worker.busy(), ui.show_map,
-                                     {ui.data ? &*ui.data : nullptr,
-                                      units::vibration_velocity(ui.amplitude_um, ui.frequency_khz)});
+        transforms = paint_dashboard(
+            canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view, curves, worker.busy(),
+            ui.show_map,
+            {ui.data ? &*ui.data : nullptr, units::vibration_velocity(ui.amplitude_um, ui.frequency_khz)});
         const auto t_build = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());

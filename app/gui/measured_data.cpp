@@ -41,7 +41,8 @@ std::string load_measured(UiState& ui, const std::string& path) {
     }
 }
 
-std::string set_vibration(UiState& ui, std::optional<double> amplitude_um, std::optional<double> frequency_khz) {
+std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
+                          std::optional<double> frequency_khz) {
     UiState next = ui;
     if (amplitude_um) next.amplitude_um = *amplitude_um;
     if (frequency_khz) next.frequency_khz = *frequency_khz;
@@ -53,8 +54,9 @@ std::string set_vibration(UiState& ui, std::optional<double> amplitude_um, std::
         return e.what();
     }
     if (const std::string why = range_error(next.params); !why.empty())
-        return "A = " + format_number("%g", next.amplitude_um) + " µm, f = " +
-               format_number("%g", next.frequency_khz) + " kHz at the same v_b and z_ss: " + why;
+        return "A = " + format_number("%g", next.amplitude_um) +
+               " µm, f = " + format_number("%g", next.frequency_khz) +
+               " kHz at the same v_b and z_ss: " + why;
     if (ui.data && ui.data->from_vb) {
         try {
             next.data = read_measurements(ui.data_path, read_options(next));
@@ -98,8 +100,10 @@ std::optional<DataFit::Outcome> DataFit::poll(const UiState& ui, bool wait) {
     p.rdisp = b.rdisp;
     p.i = b.i;
     out.params = p;
-    out.status = "fit: r_disp = " + format_number("%.4g", b.rdisp) + " ± " + format_number("%.2g", b.rdisp_sigma) +
-                 " (z_ss = " + format_number("%.4g", b.zss_um.value_or(NAN)) + " µm), i = " + format_number("%g", b.i) + " (smaller AIC); " +
+    out.status = "fit: r_disp = " + format_number("%.4g", b.rdisp) + " ± " +
+                 format_number("%.2g", b.rdisp_sigma) +
+                 " (z_ss = " + format_number("%.4g", b.zss_um.value_or(NAN)) +
+                 " µm), i = " + format_number("%g", b.i) + " (smaller AIC); " +
                  (b.weighted ? "reduced χ² = " : "RSS/dof = ") + format_number("%.3g", b.reduced_chi2);
     if (b.at_bound) out.status += "; r_disp is at the search bound: the data do not pin it";
     return out;

@@ -20,7 +20,8 @@ std::string load_measured(UiState& ui, const std::string& path);
 // New amplitude and/or frequency. v_b = zeta 2 pi f A and z_ss = A / r_disp stay what they were, so
 // zeta and r_disp follow (Eqs. (6), (34)); data read from a vb column are converted again. Returns an
 // error line (and changes nothing) when the result leaves the allowed ranges, else "".
-std::string set_vibration(UiState& ui, std::optional<double> amplitude_um, std::optional<double> frequency_khz);
+std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
+                          std::optional<double> frequency_khz);
 
 // Empty when p is inside the ranges the app (and the CLI) allow: validate() and zeta <= 100,
 // r_disp <= 1e4; else the one-line reason.

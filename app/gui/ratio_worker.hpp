@@ -19,8 +19,8 @@ namespace fv::app {
 struct RatioRequest {
     Model model = Model::dahl;
     Params params;
-    bool map = false;      // also the (zeta, theta) map for params.rdisp, params.i (Dahl only; ~1-3 s)
-    double zeta_max = 3;   // the curves reach this far (further when measured points do)
+    bool map = false;    // also the (zeta, theta) map for params.rdisp, params.i (Dahl only; ~1-3 s)
+    double zeta_max = 3; // the curves reach this far (further when measured points do)
     bool operator==(const RatioRequest& o) const {
         return model == o.model && params.zeta == o.params.zeta && params.theta == o.params.theta &&
                params.rdisp == o.params.rdisp && params.i == o.params.i && map == o.map &&

@@ -4,6 +4,7 @@
 #include "fv/units.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -22,8 +23,9 @@ bool known(const std::string& a) {
     return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset" || a == "map" ||
            a == "curves" || a == "clear" || a == "fit";
 }
-constexpr const char* kActions = "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-                                 "amplitude frequency vb zss load clear fit";
+constexpr const char* kActions =
+    "zeta theta rdisp i model play pause step reset speed trail preset map curves "
+    "amplitude frequency vb zss load clear fit";
 
 } // namespace
 
@@ -46,8 +48,7 @@ Script load_script(const std::string& path) {
         const auto where = path + ":" + std::to_string(no) + ": ";
         if (frame < 0) throw std::runtime_error(where + "frame must be >= 0");
         if (!(ls >> action) || !known(action))
-            throw std::runtime_error(
-                where + "unknown action '" + action + "'; allowed: " + kActions);
+            throw std::runtime_error(where + "unknown action '" + action + "'; allowed: " + kActions);
         if (needs_value(action)) {
             if (!(ls >> value)) throw std::runtime_error(where + "'" + action + "' needs a value");
             if (action == "model" && value != "dahl" && value != "rigid")
@@ -65,6 +66,9 @@ Script load_script(const std::string& path) {
             }
         }
         if (ls >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
+        // A data file is found next to the script, wherever the script is run from.
+        if (action == "load" && !value.empty() && value.front() != '/')
+            value = (std::filesystem::path(path).parent_path() / value).lexically_normal().string();
         s.lines[frame].push_back(action + " " + value);
     }
     return s;
@@ -125,8 +129,7 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
                 (a == "vb" ? p.zeta : p.rdisp) = std::nan("");
             }
             params_changed = true;
-        }
-        else if (a == "load")
+        } else if (a == "load")
             e.load_data = v;
         else if (a == "clear")
             e.clear_data = true;

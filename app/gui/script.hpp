@@ -2,8 +2,9 @@
 // Actions: zeta V, theta DEG, rdisp V, i V, model dahl|rigid, play, pause, step, reset, speed V, trail V,
 // preset ID, map (show the (zeta, theta) map), curves (show the r_x(zeta) curves), amplitude UM,
 // frequency KHZ, vb M_PER_S, zss UM (physical units, as the panel's inputs), load PATH (a data file, as
-// from the menu or a drop; no spaces in PATH), clear (the data), fit (r_disp and i to the data; waits for
-// it). Edits of frame f are applied at the start of frame f, like edits from the panel.
+// from the menu or a drop; no spaces in PATH; relative to the script's directory), clear (the data), fit
+// (r_disp and i to the data; waits for it). Edits of frame f are applied at the start of frame f, like edits
+// from the panel.
 #pragma once
 
 #include "ui_state.hpp"
