@@ -3,12 +3,16 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
+#include <dirent.h>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace {
 
@@ -317,4 +321,387 @@ TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad dat
     const Run bad = run("render --figure fig19 --theta 90 --data " + dir + "/bad.csv --out " + dir);
     CHECK(bad.code == 2);
     CHECK(bad.err.find("bad.csv:2:") != std::string::npos);
+}
+
+// ---- Physical units: --vb (m/s), --amplitude (um), --frequency (kHz), --zss (um)
+// ----------------------------
+
+namespace {
+
+constexpr double kTwoPi = 2 * 3.14159265358979323846;
+
+// Printed with all the digits a double has, so that the program reads back exactly this number.
+std::string exact(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+// The line of a text report that starts with `key` (e.g. "r_x "), or "" if there is none.
+std::string report_line(const std::string& text, const std::string& key) {
+    std::istringstream in(text);
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind(key, 0) == 0) return line;
+    return "";
+}
+
+// A CSV with a header: one map column -> field per row.
+std::vector<std::map<std::string, std::string>> parse_csv(const std::string& csv) {
+    std::istringstream in(csv);
+    std::string line;
+    std::vector<std::string> header;
+    auto split = [](const std::string& s) {
+        std::vector<std::string> f;
+        std::string cur;
+        std::istringstream ls(s);
+        while (std::getline(ls, cur, ',')) f.push_back(cur);
+        if (!s.empty() && s.back() == ',') f.push_back("");
+        return f;
+    };
+    std::getline(in, line);
+    header = split(line);
+    std::vector<std::map<std::string, std::string>> rows;
+    while (std::getline(in, line)) {
+        const auto f = split(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t k = 0; k < header.size(); ++k) row[header[k]] = k < f.size() ? f[k] : "";
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// True for an existing directory without entries.
+bool slurp_dir_empty(const std::string& dir) {
+    DIR* d = ::opendir(dir.c_str());
+    if (!d) return false;
+    int n = 0;
+    while (const dirent* e = ::readdir(d))
+        if (std::string(e->d_name) != "." && std::string(e->d_name) != "..") ++n;
+    ::closedir(d);
+    return n == 0;
+}
+
+// Exit code 2 and one line on stderr that contains each of `names`.
+void check_usage_error(const Run& r, const std::vector<std::string>& names) {
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(lines(r.err) == 1);
+    for (const std::string& n : names) {
+        CAPTURE(n, r.err);
+        CHECK(r.err.find(n) != std::string::npos);
+    }
+}
+
+double field(const std::map<std::string, std::string>& row, const std::string& col) {
+    const auto it = row.find(col);
+    REQUIRE(it != row.end());
+    return std::stod(it->second);
+}
+
+} // namespace
+
+TEST_CASE(
+    "CLI units: ratio with --vb/--amplitude/--frequency/--zss equals ratio with the converted zeta, rdisp",
+    "[cli][units]") {
+    // v_b = 0.1 m/s, A = 0.7 um at f = 60 kHz, z_ss = 0.35 um (the paper's Sec. 4 vibration).
+    const double vb = 0.1, amp = 0.7, freq = 60, zss = 0.35;
+    const double zeta = vb / (kTwoPi * freq * 1e3 * amp * 1e-6), rdisp = amp / zss;
+    const std::string units = "--vb 0.1 --amplitude 0.7 --frequency 60 --zss 0.35";
+    for (const char* rest : {"--theta 60 --i 1", "--theta 90 --i 0", "--theta 30 --i 1 --scheme paper"}) {
+        CAPTURE(rest);
+        const Run u = run(std::string("ratio ") + units + " " + rest);
+        const Run z = run("ratio --zeta " + exact(zeta) + " --rdisp " + exact(rdisp) + " " + rest);
+        REQUIRE(u.code == 0);
+        REQUIRE(z.code == 0);
+        CHECK(!report_line(u.out, "r_x ").empty());
+        CHECK(report_line(u.out, "r_x ") == report_line(z.out, "r_x "));
+        CHECK(report_line(u.out, "r_y ") == report_line(z.out, "r_y "));
+        // Both views: the dimensionless report plus the physical lines.
+        CHECK(report_line(u.out, "v_b ") == "v_b           0.1 m/s   (zeta v_v)");
+        CHECK(report_line(u.out, "z_ss ") == "z_ss          0.35 um   (A/rdisp)");
+        CHECK(report_line(u.out, "amplitude ") == "amplitude     0.7 um");
+        CHECK(report_line(u.out, "frequency ") == "frequency     60 kHz");
+        const std::string vv = report_line(u.out, "v_v ");
+        REQUIRE(vv.size() > 14);
+        CHECK(std::stod(vv.substr(14)) == Approx(kTwoPi * 60e3 * 0.7e-6).epsilon(1e-11));
+        CHECK(report_line(z.out, "v_b ").empty()); // no unit flags: no physical view
+    }
+    // CSV: the extra columns are the physical values of the printed zeta and rdisp.
+    const Run csv = run(std::string("ratio ") + units + " --theta 60 --i 1 --format csv");
+    REQUIRE(csv.code == 0);
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,vb_m_s,zss_um\n", 0) ==
+          0);
+    const auto rows = parse_csv(csv.out);
+    REQUIRE(rows.size() == 1);
+    CHECK(field(rows[0], "zeta") == Approx(zeta).epsilon(1e-11));
+    CHECK(field(rows[0], "rdisp") == Approx(rdisp).epsilon(1e-11));
+    CHECK(field(rows[0], "vb_m_s") ==
+          Approx(field(rows[0], "zeta") * kTwoPi * freq * amp * 1e-3).epsilon(1e-11));
+    CHECK(field(rows[0], "zss_um") == Approx(amp / field(rows[0], "rdisp")).epsilon(1e-11));
+    // JSON: the same keys.
+    const Run js = run(std::string("ratio ") + units + " --theta 60 --i 1 --format json");
+    REQUIRE(js.code == 0);
+    const auto j = nlohmann::json::parse(js.out);
+    CHECK(j["vb_m_s"].get<double>() == Approx(vb).epsilon(1e-12));
+    CHECK(j["zss_um"].get<double>() == Approx(zss).epsilon(1e-12));
+    CHECK(j["zeta"].get<double>() == Approx(zeta).epsilon(1e-12));
+}
+
+TEST_CASE("CLI units: --amplitude/--frequency with plain --zeta/--rdisp add the physical view",
+          "[cli][units]") {
+    const std::string base = "ratio --zeta 0.3 --theta 45 --rdisp 2 --i 1 --format csv";
+    // Amplitude and frequency: both columns.
+    Run r = run(base + " --amplitude 0.5 --frequency 40");
+    REQUIRE(r.code == 0);
+    auto rows = parse_csv(r.out);
+    REQUIRE(rows.size() == 1);
+    CHECK(field(rows[0], "vb_m_s") == Approx(0.3 * kTwoPi * 40 * 0.5 * 1e-3).epsilon(1e-11));
+    CHECK(field(rows[0], "zss_um") == Approx(0.5 / 2).epsilon(1e-11));
+    // Amplitude alone: z_ss only.
+    r = run(base + " --amplitude 0.5");
+    REQUIRE(r.code == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,zss_um\n", 0) == 0);
+    // Frequency alone is accepted and changes nothing (it needs the amplitude to say anything).
+    r = run(base + " --frequency 40");
+    REQUIRE(r.code == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n", 0) == 0);
+    // The rigid model has no z_ss: the column is there but empty (null in JSON).
+    r = run("ratio --model rigid --zeta 0.5 --theta 0 --amplitude 0.5 --frequency 40 --format csv");
+    REQUIRE(r.code == 0);
+    rows = parse_csv(r.out);
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0].at("zss_um").empty());
+    CHECK(field(rows[0], "vb_m_s") == Approx(0.5 * kTwoPi * 40 * 0.5 * 1e-3).epsilon(1e-11));
+    r = run("ratio --model rigid --zeta 0.5 --theta 0 --amplitude 0.5 --format json");
+    REQUIRE(r.code == 0);
+    CHECK(nlohmann::json::parse(r.out)["zss_um"].is_null());
+    CHECK(!nlohmann::json::parse(r.out).contains("vb_m_s"));
+    // The rigid model needs no --rdisp or --zss, with units as without.
+    r = run("ratio --model rigid --vb 0.05 --amplitude 0.5 --frequency 40 --theta 0 --format json");
+    REQUIRE(r.code == 0);
+    CHECK(nlohmann::json::parse(r.out)["zeta"].get<double>() ==
+          Approx(0.05 / (kTwoPi * 40e3 * 0.5e-6)).epsilon(1e-12));
+}
+
+TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "[cli][units]") {
+    const Run csv = run(std::string("ratio ") + kGood + " --format csv");
+    REQUIRE(csv.code == 0);
+    CHECK(csv.out.substr(0, csv.out.find('\n')) ==
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate");
+    const Run js = run(std::string("ratio ") + kGood + " --format json");
+    REQUIRE(js.code == 0);
+    const auto j = nlohmann::json::parse(js.out);
+    CHECK(!j.contains("vb_m_s"));
+    CHECK(!j.contains("zss_um"));
+    const Run txt = run(std::string("ratio ") + kGood);
+    CHECK(report_line(txt.out, "v_b ").empty());
+    CHECK(report_line(txt.out, "z_ss ").empty());
+    CHECK(report_line(txt.out, "amplitude ").empty());
+    const Run sw = run("sweep --zeta 0.1:0.5:3 --theta 90 --rdisp 2 --i 1");
+    REQUIRE(sw.code == 0);
+    CHECK(sw.out.substr(0, sw.out.find('\n')) ==
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate");
+}
+
+TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the converted zeta range and rdisp list",
+          "[cli][units]") {
+    const double amp = 0.7, freq = 60;
+    const double vv = kTwoPi * freq * 1e3 * amp * 1e-6;
+    const double z0 = 0.05 / vv, z1 = 0.25 / vv;
+    const std::string common = " --theta 0,90 --i 0,1 --steps-per-period 256";
+    const Run u = run("sweep --vb 0.05:0.25:5 --amplitude 0.7 --frequency 60 --zss 0.35,0.7" + common);
+    const Run z = run("sweep --zeta " + exact(z0) + ":" + exact(z1) + ":5 --rdisp " + exact(amp / 0.35) +
+                      "," + exact(amp / 0.7) + common);
+    REQUIRE(u.code == 0);
+    REQUIRE(z.code == 0);
+    CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,vb_m_s,zss_um\n", 0) == 0);
+    const auto ru = parse_csv(u.out), rz = parse_csv(z.out);
+    REQUIRE(ru.size() == 2 * 2 * 2 * 5);
+    REQUIRE(rz.size() == ru.size());
+    for (std::size_t k = 0; k < ru.size(); ++k) {
+        CAPTURE(k);
+        for (const char* col : {"i", "theta_deg", "rdisp", "zeta"})
+            CHECK(field(ru[k], col) == Approx(field(rz[k], col)).epsilon(1e-11));
+        CHECK(field(ru[k], "r_x") == Approx(field(rz[k], "r_x")).margin(1e-9));
+        CHECK(field(ru[k], "r_y") == Approx(field(rz[k], "r_y")).margin(1e-9));
+        CHECK(field(ru[k], "vb_m_s") ==
+              Approx(field(ru[k], "zeta") * kTwoPi * freq * amp * 1e-3).epsilon(1e-11));
+        CHECK(field(ru[k], "zss_um") == Approx(amp / field(ru[k], "rdisp")).epsilon(1e-11));
+    }
+    // The v_b grid is the evenly spaced one asked for: 0.05, 0.1, ..., 0.25 m/s.
+    const double grid[] = {0.05, 0.1, 0.15, 0.2, 0.25};
+    for (std::size_t k = 0; k < 5; ++k) CHECK(field(ru[k], "vb_m_s") == Approx(grid[k]).epsilon(1e-11));
+    CHECK(field(ru[0], "zss_um") == Approx(0.35).epsilon(1e-12));
+    CHECK(field(ru[5], "zss_um") == Approx(0.7).epsilon(1e-12));
+    // Rigid: zss_um empty, vb_m_s present; no --rdisp or --zss needed.
+    const Run rig =
+        run("sweep --model rigid --vb 0:0.2:3 --amplitude 0.7 --frequency 60 --theta 0 --format json");
+    REQUIRE(rig.code == 0);
+    const auto arr = nlohmann::json::parse(rig.out);
+    REQUIRE(arr.size() == 3);
+    CHECK(arr[2]["vb_m_s"].get<double>() == Approx(0.2).epsilon(1e-12));
+    CHECK(arr[2]["zeta"].get<double>() == Approx(0.2 / vv).epsilon(1e-12));
+    CHECK(arr[2]["zss_um"].is_null());
+}
+
+TEST_CASE("CLI units: trace with --vb/--zss equals trace with the converted zeta, rdisp", "[cli][units]") {
+    const double amp = 0.5, freq = 20, vb = 0.03, zss = 0.2;
+    const double zeta = vb / (kTwoPi * freq * 1e3 * amp * 1e-6), rdisp = amp / zss;
+    const Run u = run("trace --vb 0.03 --amplitude 0.5 --frequency 20 --zss 0.2 --theta 60 --i 1");
+    const Run z = run("trace --zeta " + exact(zeta) + " --rdisp " + exact(rdisp) + " --theta 60 --i 1");
+    REQUIRE(u.code == 0);
+    REQUIRE(z.code == 0);
+    const auto ru = parse_csv(u.out), rz = parse_csv(z.out);
+    REQUIRE(ru.size() == 1024);
+    REQUIRE(rz.size() == ru.size());
+    for (std::size_t k = 0; k < ru.size(); k += 37)
+        for (const char* col : {"tau", "Px", "Py", "Tx", "Ty", "z", "Fx", "Fy"}) {
+            CAPTURE(k, col);
+            CHECK(field(ru[k], col) == Approx(field(rz[k], col)).margin(1e-9));
+        }
+}
+
+TEST_CASE("CLI units: render scene and map with --vb/--zss give the bytes of the equivalent --zeta/--rdisp",
+          "[cli][units][render]") {
+    // Exact in floating point: v_b = v_v/2 with v_v = 2 pi f A computed as fv::units does, so that
+    // zeta = v_b/v_v = 1/2 exactly; r_disp = 0.75/0.25 = 3 exactly.
+    const double vv = 2 * 3.14159265358979323846 * 40 * 0.75 * 1e-3;
+    const std::string vb = exact(vv / 2);
+    const Run check = run("ratio --vb " + vb +
+                          " --amplitude 0.75 --frequency 40 --zss 0.25 --theta 30 --i 0 "
+                          "--format json");
+    REQUIRE(check.code == 0);
+    REQUIRE(nlohmann::json::parse(check.out)["zeta"].get<double>() == 0.5);
+    REQUIRE(nlohmann::json::parse(check.out)["rdisp"].get<double>() == 3);
+
+    const std::string a = scratch_dir() + "/units-scene-a", b = scratch_dir() + "/units-scene-b";
+    REQUIRE(std::system(("mkdir -p " + a + " " + b).c_str()) == 0);
+    const Run ru =
+        run("render --figure scene,map --vb " + vb +
+            " --amplitude 0.75 --frequency 40 --zss 0.25 --theta 30 --i 0 --size 400x300 --out " + a);
+    const Run rz =
+        run("render --figure scene,map --zeta 0.5 --rdisp 3 --theta 30 --i 0 --size 400x300 --out " + b);
+    REQUIRE(ru.code == 0);
+    REQUIRE(rz.code == 0);
+    for (const char* f : {"/scene.png", "/scene.csv", "/scene-ratio.csv", "/map.png", "/map.csv"}) {
+        CAPTURE(f);
+        const std::string x = slurp(a + f), y = slurp(b + f);
+        CHECK(!x.empty());
+        CHECK(x == y);
+    }
+}
+
+TEST_CASE(
+    "CLI units: conflicts, missing flags and out-of-range conversions are usage errors, nothing written",
+    "[cli][units]") {
+    struct Case {
+        std::string args;
+        std::vector<std::string> names; // each must appear in the message
+    };
+    const std::string m = " --theta 90 --i 1", vf = " --amplitude 0.7 --frequency 60";
+    const std::vector<Case> cases{
+        // --zeta / --vb
+        {"ratio --zeta 0.3 --vb 0.1" + vf + " --rdisp 2" + m, {"--zeta", "--vb", "not both"}},
+        {"ratio --vb 0.1 --frequency 60 --rdisp 2" + m, {"--vb", "--amplitude", "--frequency", "2 pi f A"}},
+        {"ratio --vb 0.1 --amplitude 0.7 --rdisp 2" + m, {"--vb", "--frequency"}},
+        {"ratio --rdisp 2" + vf + m, {"--zeta", "--vb", "required"}},
+        {"ratio --vb 30" + vf + " --rdisp 2" + m,
+         {"--vb 30 m/s", "--amplitude 0.7", "--frequency 60", "113.68", "[0, 100]"}},
+        {"ratio --vb -1" + vf + " --rdisp 2" + m, {"--vb"}},
+        {"ratio --vb nan" + vf + " --rdisp 2" + m, {"--vb"}},
+        {"ratio --vb 1e7" + vf + " --rdisp 2" + m, {"--vb"}},
+        {"ratio --vb 1 --amplitude 0 --frequency 60 --rdisp 2" + m, {"--amplitude"}},
+        {"ratio --vb 1 --amplitude 0.7 --frequency inf --rdisp 2" + m, {"--frequency"}},
+        // A conversion outside the doubles (v_v underflows): a usage error, with and without --vb.
+        {"ratio --vb 1 --amplitude 1e-300 --frequency 1e-300 --rdisp 2" + m,
+         {"--vb", "--amplitude", "--frequency"}},
+        {"ratio --zeta 1 --amplitude 1e-300 --frequency 1e-300 --rdisp 2" + m,
+         {"--amplitude", "--frequency"}},
+        // --rdisp / --zss
+        {"ratio --zeta 0.3 --rdisp 2 --zss 0.35 --amplitude 0.7" + m, {"--rdisp", "--zss", "not both"}},
+        {"ratio --zeta 0.3 --zss 0.35" + m, {"--zss", "--amplitude", "A/z_ss"}},
+        {"ratio --zeta 0.3 --amplitude 0.7" + m, {"--rdisp", "--zss", "Dahl"}},
+        {"ratio --zeta 0.3 --zss 0.00001 --amplitude 0.7" + m,
+         {"--zss", "--amplitude", "70000", "(0, 10000]"}},
+        {"ratio --zeta 0.3 --zss 0 --amplitude 0.7" + m, {"--zss"}},
+        {"ratio --model rigid --zeta 0.3 --rdisp 2 --zss 1 --amplitude 1 --theta 0", {"--rdisp", "--zss"}},
+        // sweep
+        {"sweep --zeta 0:1:3 --vb 0:0.1:3" + vf + " --rdisp 2" + m, {"--zeta", "--vb", "not both"}},
+        {"sweep --vb 0:30:3" + vf + " --rdisp 2" + m, {"--vb", "113.68", "[0, 100]"}},
+        {"sweep --vb 0:0.1:3 --amplitude 0.7 --rdisp 2" + m, {"--vb", "--frequency"}},
+        {"sweep --vb 0:0.1" + vf + " --rdisp 2" + m, {"--vb"}},
+        {"sweep --vb 0.2:0.1:3" + vf + " --rdisp 2" + m, {"--vb"}},
+        {"sweep --rdisp 2" + m, {"--zeta", "--vb"}},
+        {"sweep --zeta 0:1:3 --zss 0.35,abc --amplitude 0.7" + m, {"--zss"}},
+        {"sweep --zeta 0:1:3 --zss 0.35,1e-6 --amplitude 0.7" + m, {"--zss", "(0, 10000]"}},
+        {"sweep --zeta 0:1:3 --zss 0.35" + m, {"--zss", "--amplitude"}},
+        {"sweep --zeta 0:1:3 --rdisp 2 --zss 0.35 --amplitude 0.7" + m, {"--rdisp", "--zss"}},
+        {"sweep --zeta 0:1:3" + m, {"--rdisp", "--zss"}},
+        // trace
+        {"trace --zeta 0.3 --vb 0.1" + vf + " --rdisp 2" + m, {"--zeta", "--vb"}},
+        {"trace --vb 0.1 --amplitude 0.7 --rdisp 2" + m, {"--vb", "--frequency"}},
+        {"trace --zeta 0.3 --zss 0.35" + m, {"--zss", "--amplitude"}},
+    };
+    for (const Case& c : cases) {
+        const std::string out = scratch_dir() + "/units-never.csv";
+        CAPTURE(c.args);
+        const Run r = run(c.args + " --out " + out);
+        check_usage_error(r, c.names);
+        CHECK(::access(out.c_str(), F_OK) != 0);
+    }
+    // render: nothing in the output directory.
+    const std::string dir = scratch_dir() + "/units-render-never";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const std::vector<Case> render_cases{
+        {"--figure scene --vb 0.1 --theta 90 --zss 0.35 --i 1", {"--vb", "--amplitude"}},
+        {"--figure scene --theta 90 --zss 0.35 --amplitude 0.7 --i 1", {"--zeta or --vb"}},
+        {"--figure scene --vb 0.1" + vf + " --theta 90 --i 1", {"--rdisp or --zss"}},
+        {"--figure scene --zeta 0.3 --vb 0.1" + vf + " --theta 90 --rdisp 2 --i 1", {"--zeta", "--vb"}},
+        {"--figure scene --vb 30" + vf + " --theta 90 --rdisp 2 --i 1", {"--vb", "[0, 100]"}},
+        {"--figure map --rdisp 2 --zss 0.35 --amplitude 0.7", {"--rdisp", "--zss"}},
+        {"--figure map --zss 0.35", {"--zss", "--amplitude"}},
+        {"--figure map --zss 1e-6 --amplitude 0.7", {"--zss", "(0, 10000]"}},
+    };
+    for (const Case& c : render_cases) {
+        CAPTURE(c.args);
+        const Run r = run("render " + c.args + " --size 320x240 --out " + dir);
+        check_usage_error(r, c.names);
+    }
+    CHECK(slurp_dir_empty(dir));
+}
+
+TEST_CASE("CLI units: gui takes --vb/--amplitude/--frequency/--zss for its initial values",
+          "[cli][units][gui]") {
+    const std::string shot = scratch_dir() + "/units-gui.png";
+    const Run ok =
+        run("gui --headless --frames 2 --vb 0.1 --amplitude 0.7 --frequency 60 --zss 0.35 --theta 90");
+    CHECK(ok.code == 0);
+    struct Case {
+        const char* args;
+        std::vector<std::string> names;
+    };
+    for (const Case& c : {
+             Case{"--vb 0.1", {"--vb", "--amplitude", "--frequency"}},
+             Case{"--zeta 0.3 --vb 0.1 --amplitude 0.7 --frequency 60", {"--zeta", "--vb"}},
+             Case{"--vb 30 --amplitude 0.7 --frequency 60", {"--vb", "[0, 100]"}},
+             Case{"--zss 0.35", {"--zss", "--amplitude"}},
+             Case{"--rdisp 2 --zss 0.35 --amplitude 0.7", {"--rdisp", "--zss"}},
+             Case{"--amplitude 1e-300 --frequency 1e-300", {"--amplitude", "--frequency"}},
+         }) {
+        CAPTURE(c.args);
+        const Run r = run(std::string("gui --headless --frames 2 --screenshot ") + shot + " " + c.args);
+        check_usage_error(r, c.names);
+        CHECK(::access(shot.c_str(), F_OK) != 0);
+    }
+}
+
+TEST_CASE("CLI units: fit keeps --amplitude/--frequency for a vb column", "[cli][units][fit]") {
+    const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta0_rdisp1_i1_vb.csv";
+    const Run r = run("fit --data " + data + " --amplitude 0.7 --frequency 60 --format json");
+    REQUIRE(r.code == 0);
+    const auto j = nlohmann::json::parse(r.out);
+    CHECK(j["best"]["rdisp"].get<double>() == Approx(1).epsilon(0.02));
+    CHECK(j["best"]["zss_um"].get<double>() == Approx(0.7 / j["best"]["rdisp"].get<double>()));
+    check_usage_error(run("fit --data " + data + " --amplitude 0.7"), {"frequency"});
 }

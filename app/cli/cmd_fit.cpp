@@ -20,9 +20,6 @@ namespace fv::cli {
 
 namespace {
 
-inline constexpr Range kAmplitudeRange{0, 1e6, true}; // um
-inline constexpr Range kFrequencyRange{0, 1e6, true}; // kHz
-
 nlohmann::json jnum(double v) {
     return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
 }
@@ -88,8 +85,9 @@ std::string text_of(const FitResult& r, const MeasurementSet& data, const std::o
 Command add_fit_command(CLI::App& root) {
     struct Args {
         std::string data, shape = "auto", format = "text", out;
-        double theta = 0, amplitude = 0, frequency = 0;
-        CLI::Option *theta_opt = nullptr, *amplitude_opt = nullptr, *frequency_opt = nullptr;
+        double theta = 0;
+        CLI::Option* theta_opt = nullptr;
+        UnitArgs units; // --amplitude, --frequency
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
@@ -102,14 +100,7 @@ Command add_fit_command(CLI::App& root) {
     cmd->add_option("--i", a->shape, "Dahl exponent: 0, 1, or auto (both, smaller AIC)")
         ->check(CLI::IsMember({"0", "1", "auto"}))
         ->capture_default_str();
-    a->amplitude_opt =
-        cmd->add_option("--amplitude", a->amplitude,
-                        "vibration amplitude in um (converts vb, gives z_ss), " + describe(kAmplitudeRange))
-            ->check(number_in(kAmplitudeRange));
-    a->frequency_opt =
-        cmd->add_option("--frequency", a->frequency,
-                        "vibration frequency in kHz (converts vb), " + describe(kFrequencyRange))
-            ->check(number_in(kFrequencyRange));
+    add_vibration_options(*cmd, a->units, "for a vb column (A and f) and z_ss (A)");
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
@@ -118,8 +109,8 @@ Command add_fit_command(CLI::App& root) {
                 check_out(a->out);
                 ReadOptions ro;
                 FitOptions fo;
-                if (*a->amplitude_opt) ro.amplitude_um = fo.amplitude_um = a->amplitude;
-                if (*a->frequency_opt) ro.frequency_khz = a->frequency;
+                if (*a->units.amplitude_opt) ro.amplitude_um = fo.amplitude_um = a->units.amplitude;
+                if (*a->units.frequency_opt) ro.frequency_khz = a->units.frequency;
                 if (*a->theta_opt) fo.theta_deg = a->theta;
                 fo.shape = a->shape == "0"   ? ShapeChoice::i0
                            : a->shape == "1" ? ShapeChoice::i1

@@ -20,12 +20,16 @@ Command add_gui_command(CLI::App& root) {
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
-    cmd->add_option("--zeta", a->model.zeta, "initial velocity ratio")->check(number_in(kZetaRange));
+    a->model.zeta_opt = cmd->add_option("--zeta", a->model.zeta, "initial velocity ratio (or --vb)")
+                            ->check(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg, "initial vibration angle in degrees")
         ->check(number_in(kThetaRange));
-    cmd->add_option("--rdisp", a->model.rdisp, "initial displacement ratio")->check(number_in(kRdispRange));
+    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "initial displacement ratio (or --zss)")
+                             ->check(number_in(kRdispRange));
     cmd->add_option("--i", a->model.i, "initial Dahl exponent")->check(number_in(kIRange));
     cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
+    add_unit_options(*cmd, a->model.units, UnitShape::single,
+                     "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
     cmd->add_flag("--headless", a->headless,
                   "render into an OSMesa buffer instead of a window (same pixels)");
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
@@ -48,11 +52,18 @@ Command add_gui_command(CLI::App& root) {
                     check_out(o.screenshot, "--screenshot");
                 }
                 // Start from the given flags, the rest from Fig. 14a's parameters.
-                if (cmd->get_option("--zeta")->count()) o.params.zeta = a->model.zeta;
+                const UnitArgs& u = a->model.units;
+                if (auto zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false)) o.params.zeta = *zeta;
                 if (cmd->get_option("--theta")->count()) o.params.theta = a->model.theta_deg * kPi / 180;
-                if (cmd->get_option("--rdisp")->count()) o.params.rdisp = a->model.rdisp;
+                // r_disp from --zss whatever the model: the window can switch to the Dahl model.
+                if (auto rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false))
+                    o.params.rdisp = *rdisp;
                 if (cmd->get_option("--i")->count()) o.params.i = a->model.i;
                 if (cmd->get_option("--model")->count()) o.model = model_of(a->model);
+                if (*u.amplitude_opt) o.amplitude_um = u.amplitude;
+                if (*u.frequency_opt) o.frequency_khz = u.frequency;
+                // The window combines a given amplitude or frequency with the default of the other one.
+                check_vibration({o.amplitude_um, o.frequency_khz}, {o.params.rdisp});
                 try {
                     const int rc = app::run_gui(o);
                     if (rc != 0) throw RuntimeFailure("the window closed with an error");

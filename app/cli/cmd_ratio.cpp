@@ -18,6 +18,8 @@ Command add_ratio_command(CLI::App& root) {
     CLI::App* cmd =
         root.add_subcommand("ratio", "friction ratios r_x, r_y of one parameter set in steady state");
     add_model_options(*cmd, a->model, true);
+    add_unit_options(*cmd, a->model.units, UnitShape::single,
+                     "the output also shows v_b, v_v (A and f) and z_ss (A)");
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"text", "csv", "json"}))
         ->capture_default_str();
@@ -27,13 +29,16 @@ Command add_ratio_command(CLI::App& root) {
                 SweepPoint row;
                 row.model = model_of(a->model);
                 row.params = to_params(a->model);
+                const Vibration v = vibration_of(a->model.units, row.model == Model::dahl
+                                                                     ? std::vector<double>{row.params.rdisp}
+                                                                     : std::vector<double>{});
                 row.result = steady_ratio(row.model, row.params, steady_options(a->model));
                 if (row.model == Model::rigid) {
                     row.params.rdisp = std::numeric_limits<double>::quiet_NaN();
                     row.params.i = std::numeric_limits<double>::quiet_NaN();
                 }
                 const Format f = parse_format(a->format);
-                deliver(f == Format::text ? ratio_text(row) : ratio_table({row}, f), a->out);
+                deliver(f == Format::text ? ratio_text(row, v) : ratio_table({row}, f, v), a->out);
                 warn_if_unsteady(row);
             }};
 }

@@ -60,9 +60,8 @@ Command add_render_command(CLI::App& root) {
         std::string figure;
         std::string out;
         std::string size = "1280x800";
-        ModelArgs model;
+        ModelArgs model; // its units: --amplitude, --frequency (fig19, scene, map), --vb, --zss (scene, map)
         std::string data;
-        double amplitude = 0, frequency = 0;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand(
@@ -74,19 +73,19 @@ Command add_render_command(CLI::App& root) {
     cmd->add_option("--out", a->out, "output directory (must exist)")->required();
     cmd->add_option("--data", a->data,
                     "fig19: CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)");
-    cmd->add_option("--amplitude", a->amplitude, "fig19: vibration amplitude in um (for vb columns and z_ss)")
-        ->check(number_in({0, 1e6, true}));
-    cmd->add_option("--frequency", a->frequency, "fig19: vibration frequency in kHz (for vb columns)")
-        ->check(number_in({0, 1e6, true}));
+    add_vibration_options(*cmd, a->model.units,
+                          "fig19: for a vb column (A and f) and z_ss (A); scene, map: for --vb, --zss");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
-    cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
+    a->model.zeta_opt =
+        cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")
         ->check(number_in(kThetaRange));
     a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene, map: displacement ratio")
                              ->check(number_in(kRdispRange));
     a->model.i_opt =
         cmd->add_option("--i", a->model.i, "scene, map: Dahl exponent")->check(number_in(kIRange));
+    add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
     return {cmd, [a, cmd] {
                 // Resolve the list of figures first: an unknown id lists the valid ones.
                 std::vector<FigureSpec> specs;
@@ -97,9 +96,15 @@ Command add_render_command(CLI::App& root) {
                     if (id == "all") {
                         for (const auto& f : paper_figures()) specs.push_back(f);
                     } else if (id == "scene") {
-                        for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i"})
-                            if (cmd->get_option(flag)->count() == 0)
-                                throw UsageError(std::string("--figure scene needs ") + flag +
+                        struct Need {
+                            const char *flag, *alt;
+                        };
+                        for (const Need n : {Need{"--zeta", "--vb"}, Need{"--theta", nullptr},
+                                             Need{"--rdisp", "--zss"}, Need{"--i", nullptr}})
+                            if (cmd->get_option(n.flag)->count() == 0 &&
+                                !(n.alt && cmd->get_option(n.alt)->count() > 0))
+                                throw UsageError(std::string("--figure scene needs ") + n.flag +
+                                                 (n.alt ? std::string(" or ") + n.alt : "") +
                                                  " (the same flags as `ratio`)");
                         specs.push_back(scene_figure(to_params(a->model)));
                     } else if (id == "fig19") {
@@ -109,7 +114,8 @@ Command add_render_command(CLI::App& root) {
                         data_fig = true;
                     } else if (id == "map") {
                         // Beyond the paper: r_x over (zeta, theta) for one r_disp and i (default 2 and 1).
-                        const double rdisp = cmd->get_option("--rdisp")->count() ? a->model.rdisp : 2.0;
+                        const double rdisp =
+                            rdisp_of(a->model.rdisp_opt, a->model.rdisp, a->model.units, false).value_or(2.0);
                         const double i = cmd->get_option("--i")->count() ? a->model.i : 1.0;
                         specs.push_back(map_figure(rdisp, i));
                     } else if (const FigureSpec* f = find_figure(id)) {
@@ -128,12 +134,12 @@ Command add_render_command(CLI::App& root) {
                 // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
                 std::optional<FigureData> fig19;
                 if (data_fig) {
+                    const UnitArgs& u = a->model.units;
                     ReadOptions ro;
-                    if (a->amplitude > 0) ro.amplitude_um = a->amplitude;
-                    if (a->frequency > 0) ro.frequency_khz = a->frequency;
                     FitOptions fo;
+                    if (*u.amplitude_opt) ro.amplitude_um = fo.amplitude_um = u.amplitude;
+                    if (*u.frequency_opt) ro.frequency_khz = u.frequency;
                     if (cmd->get_option("--theta")->count()) fo.theta_deg = a->model.theta_deg;
-                    if (a->amplitude > 0) fo.amplitude_um = a->amplitude;
                     try {
                         fig19 = measurement_figure(read_measurements(a->data, ro), fo);
                     } catch (const DataError& e) {

@@ -16,6 +16,7 @@ Command add_sweep_command(CLI::App& root) {
         std::string zeta;
         std::vector<double> theta_deg, rdisp, i;
         SolverArgs solver;
+        UnitArgs units;
         int threads = 0;
         std::string format = "csv";
         std::string out;
@@ -23,16 +24,17 @@ Command add_sweep_command(CLI::App& root) {
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
         root.add_subcommand("sweep", "r_x, r_y over a grid of zeta for families of theta, rdisp, i");
-    cmd->add_option("--zeta", a->zeta, "zeta values FROM:TO:COUNT (evenly spaced, both ends included)")
-        ->required()
-        ->check(range_spec(kZetaRange, 100000));
+    auto* zo = cmd->add_option("--zeta", a->zeta,
+                               "zeta values FROM:TO:COUNT (evenly spaced, both ends included; or --vb)")
+                   ->check(range_spec(kZetaRange, kMaxSweepPoints));
     cmd->add_option("--theta", a->theta_deg, "vibration angles in degrees, comma separated")
         ->required()
         ->delimiter(',')
         ->check(number_in(kThetaRange));
-    auto* rd = cmd->add_option("--rdisp", a->rdisp, "displacement ratios, comma separated (Dahl only)")
-                   ->delimiter(',')
-                   ->check(number_in(kRdispRange));
+    auto* rd =
+        cmd->add_option("--rdisp", a->rdisp, "displacement ratios, comma separated (or --zss; Dahl only)")
+            ->delimiter(',')
+            ->check(number_in(kRdispRange));
     auto* ii = cmd->add_option("--i", a->i, "Dahl exponents, comma separated (Dahl only)")
                    ->delimiter(',')
                    ->check(number_in(kIRange));
@@ -40,28 +42,30 @@ Command add_sweep_command(CLI::App& root) {
         ->check(CLI::IsMember({"dahl", "rigid"}))
         ->capture_default_str();
     add_solver_options(*cmd, a->solver);
+    add_unit_options(*cmd, a->units, UnitShape::sweep, "the output also has vb_m_s (A and f) and zss_um (A)");
     cmd->add_option("--threads", a->threads, "worker threads (default: all cores)")
         ->check(integer_in(1, 256));
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"csv", "json"}))
         ->capture_default_str();
     cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
-    return {cmd, [a, rd, ii] {
+    return {cmd, [a, zo, rd, ii] {
                 const Model model = a->model == "rigid" ? Model::rigid : Model::dahl;
-                if (model == Model::dahl && rd->count() == 0)
-                    throw UsageError("--rdisp is required for the Dahl model; allowed: numbers in " +
-                                     describe(kRdispRange));
+                const RangeSpec z = zeta_range_of(zo, a->zeta, a->units);
+                // The rigid model ignores r_disp, but a given --zss is still checked like a given --rdisp.
+                const std::vector<double> rdisps = rdisps_of(rd, a->rdisp, a->units, model == Model::dahl);
                 if (model == Model::dahl && ii->count() == 0)
                     throw UsageError("--i is required for the Dahl model; allowed: numbers in " +
                                      describe(kIRange));
+                const Vibration v =
+                    vibration_of(a->units, model == Model::dahl ? rdisps : std::vector<double>{});
                 check_out(a->out);
-                const RangeSpec z = parse_range_spec(a->zeta);
                 std::vector<double> thetas;
                 for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
                 const SteadyOptions o = solver_options(a->solver);
                 const auto rows =
-                    sweep(model, linspace(z.from, z.to, z.count), thetas, a->rdisp, a->i, o, a->threads);
-                deliver(ratio_table(rows, parse_format(a->format)), a->out);
+                    sweep(model, linspace(z.from, z.to, z.count), thetas, rdisps, a->i, o, a->threads);
+                deliver(ratio_table(rows, parse_format(a->format), v), a->out);
                 for (const auto& r : rows) warn_if_unsteady(r);
             }};
 }

@@ -19,6 +19,7 @@ Command add_trace_command(CLI::App& root) {
     CLI::App* cmd = root.add_subcommand(
         "trace", "one steady-state period of the Dahl model: tau,Px,Py,Tx,Ty,z,Fx,Fy (dimensionless)");
     add_model_options(*cmd, a->model, false);
+    add_unit_options(*cmd, a->model.units, UnitShape::single, "");
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"csv", "json"}))
         ->capture_default_str();

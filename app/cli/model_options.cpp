@@ -5,15 +5,14 @@
 namespace fv::cli {
 
 void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
-    a.zeta_opt = cmd.add_option("--zeta", a.zeta, "velocity ratio zeta = v_b/v_v, Eq. (6)")
-                     ->required()
+    a.zeta_opt = cmd.add_option("--zeta", a.zeta, "velocity ratio zeta = v_b/v_v, Eq. (6) (or --vb)")
                      ->check(number_in(kZetaRange));
     cmd.add_option("--theta", a.theta_deg, "vibration angle to v_b in degrees, Eq. (1)")
         ->required()
         ->check(number_in(kThetaRange));
-    a.rdisp_opt =
-        cmd.add_option("--rdisp", a.rdisp, "displacement ratio r_disp = x_v/z_ss, Eq. (34) (Dahl model only)")
-            ->check(number_in(kRdispRange));
+    a.rdisp_opt = cmd.add_option("--rdisp", a.rdisp,
+                                 "displacement ratio r_disp = x_v/z_ss, Eq. (34) (or --zss; Dahl model only)")
+                      ->check(number_in(kRdispRange));
     a.i_opt =
         cmd.add_option("--i", a.i, "Dahl shape exponent i, Eq. (12); 0 = stiction, Eq. (27) (Dahl only)")
             ->check(number_in(kIRange));
@@ -29,17 +28,14 @@ Model model_of(const ModelArgs& a) {
 }
 
 Params to_params(const ModelArgs& a) {
-    if (model_of(a) == Model::dahl) {
-        if (a.rdisp_opt && a.rdisp_opt->count() == 0)
-            throw UsageError("--rdisp is required for the Dahl model; allowed: a number in " +
-                             describe(kRdispRange));
-        if (a.i_opt && a.i_opt->count() == 0)
-            throw UsageError("--i is required for the Dahl model; allowed: a number in " + describe(kIRange));
-    }
+    const bool dahl = model_of(a) == Model::dahl;
     Params p;
-    p.zeta = a.zeta;
+    p.zeta = *zeta_of(a.zeta_opt, a.zeta, a.units, true);
+    // The rigid model ignores r_disp, but a given --zss is still checked like a given --rdisp.
+    p.rdisp = rdisp_of(a.rdisp_opt, a.rdisp, a.units, dahl && a.rdisp_opt).value_or(a.rdisp);
+    if (dahl && a.i_opt && a.i_opt->count() == 0)
+        throw UsageError("--i is required for the Dahl model; allowed: a number in " + describe(kIRange));
     p.theta = a.theta_deg * kPi / 180;
-    p.rdisp = a.rdisp;
     p.i = a.i;
     return p;
 }

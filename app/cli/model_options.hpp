@@ -1,6 +1,7 @@
 // The model flags shared by every command that computes something (ratio, sweep, trace, render scene).
 #pragma once
 
+#include "unit_options.hpp"
 #include "validators.hpp"
 
 #include "fv/params.hpp"
@@ -18,6 +19,7 @@ inline constexpr Range kThetaRange{0, 180}; // degrees; other angles are mirror 
 inline constexpr Range kRdispRange{0, 1e4, true};
 inline constexpr Range kIRange{0, 10};
 inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
+inline constexpr int kMaxSweepPoints = 100000; // COUNT of a sweep's FROM:TO:COUNT
 
 // --scheme ode|paper and --steps-per-period N (which means the paper's scheme as printed).
 struct SolverArgs {
@@ -33,16 +35,18 @@ struct ModelArgs {
     std::string model = "dahl";
     double zeta = 0, theta_deg = 0, rdisp = 0, i = 0;
     SolverArgs solver;
+    UnitArgs units; // --vb, --zss, --amplitude, --frequency where the command registers them
     CLI::Option* zeta_opt = nullptr;
     CLI::Option* rdisp_opt = nullptr;
     CLI::Option* i_opt = nullptr;
 };
 
-// Adds --zeta --theta --rdisp --i (all required for the Dahl model), optionally --model, and the solver
-// options.
+// Adds --zeta --theta --rdisp --i (all required for the Dahl model; --vb and --zss of unit_options.hpp,
+// added by the command, stand in for --zeta and --rdisp), optionally --model, and the solver options.
 void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice);
 
-// Checks the combination (e.g. --rdisp is required for the Dahl model); throws UsageError.
+// Checks the combination (e.g. --rdisp or --zss is required for the Dahl model) and converts --vb and --zss;
+// throws UsageError.
 Params to_params(const ModelArgs& a);
 Model model_of(const ModelArgs& a);
 SteadyOptions steady_options(const ModelArgs& a);

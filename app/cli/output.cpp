@@ -3,6 +3,7 @@
 #include "errors.hpp"
 
 #include "fv/atomic_file.hpp"
+#include "fv/units.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <limits>
 
 namespace fv::cli {
 namespace {
@@ -51,6 +53,20 @@ nlohmann::json json_of(const SweepPoint& r) {
             {"extrapolated_levels", r.result.levels}};
 }
 
+bool has_vb(const Vibration& v) {
+    return v.amplitude_um && v.frequency_khz;
+}
+
+double vb_of(const SweepPoint& r, const Vibration& v) {
+    return units::vb_from_zeta(r.params.zeta, *v.amplitude_um, *v.frequency_khz);
+}
+
+// NaN (shown empty or null) for the rigid model, which has no z_ss.
+double zss_of(const SweepPoint& r, const Vibration& v) {
+    return r.model == Model::dahl ? units::zss_from_rdisp(r.params.rdisp, *v.amplitude_um)
+                                  : std::numeric_limits<double>::quiet_NaN();
+}
+
 } // namespace
 
 Format parse_format(const std::string& s) {
@@ -59,23 +75,31 @@ Format parse_format(const std::string& s) {
     return Format::text;
 }
 
-std::string ratio_table(const std::vector<SweepPoint>& rows, Format f) {
+std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& vib) {
     if (f == Format::json) {
         nlohmann::json arr = nlohmann::json::array();
-        for (const auto& r : rows) arr.push_back(json_of(r));
+        for (const auto& r : rows) {
+            nlohmann::json j = json_of(r);
+            if (has_vb(vib)) j["vb_m_s"] = jnum(vb_of(r, vib));
+            if (vib.amplitude_um) j["zss_um"] = jnum(zss_of(r, vib));
+            arr.push_back(j);
+        }
         return (rows.size() == 1 ? arr[0] : arr).dump(2) + "\n";
     }
-    std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n";
+    std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate";
+    s += std::string(has_vb(vib) ? ",vb_m_s" : "") + (vib.amplitude_um ? ",zss_um" : "") + "\n";
     for (const auto& r : rows) {
         s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
              num(r.params.rdisp) + "," + num(r.params.zeta) + "," + num(r.result.rx) + "," +
-             num(r.result.ry) + "," + std::to_string(r.result.periods) + "," + num(r.result.error_estimate) +
-             "\n";
+             num(r.result.ry) + "," + std::to_string(r.result.periods) + "," + num(r.result.error_estimate);
+        if (has_vb(vib)) s += "," + num(vb_of(r, vib));
+        if (vib.amplitude_um) s += "," + num(zss_of(r, vib));
+        s += "\n";
     }
     return s;
 }
 
-std::string ratio_text(const SweepPoint& r) {
+std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
     char buf[1024];
     const auto& p = r.params;
     const auto& res = r.result;
@@ -94,6 +118,16 @@ std::string ratio_text(const SweepPoint& r) {
                       num(theta_deg(p)).c_str(), num(p.rdisp).c_str(), num(1 / p.rdisp).c_str());
         s = buf;
     }
+    // The physical view, as far as the command line gave the vibration.
+    if (vib.amplitude_um) s += "amplitude     " + num(*vib.amplitude_um) + " um\n";
+    if (has_vb(vib)) {
+        s += "frequency     " + num(*vib.frequency_khz) + " kHz\n";
+        s += "v_v           " + num(units::vibration_velocity(*vib.amplitude_um, *vib.frequency_khz)) +
+             " m/s   (2 pi f A)\n";
+        s += "v_b           " + num(vb_of(r, vib)) + " m/s   (zeta v_v)\n";
+    }
+    if (vib.amplitude_um && r.model == Model::dahl)
+        s += "z_ss          " + num(zss_of(r, vib)) + " um   (A/rdisp)\n";
     // Values below the printed precision are shown as 0, not as "-0.000000000".
     auto shown = [](double v) { return std::abs(v) < 5e-10 ? 0.0 : v; };
     std::snprintf(buf, sizeof buf, "r_x           %.9f\nr_y           %.9f\n", shown(res.rx), shown(res.ry));

@@ -23,11 +23,11 @@ std::string describe(Range r) {
     return os.str();
 }
 
-namespace {
-
 bool inside(double v, Range r) {
     return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi;
 }
+
+namespace {
 
 std::string number_error(const std::string& s, Range r) {
     double v = 0;

@@ -34,4 +34,7 @@ RangeSpec parse_range_spec(const std::string& s);
 
 std::string describe(Range r);
 
+// v lies in r.
+bool inside(double v, Range r);
+
 } // namespace fv::cli

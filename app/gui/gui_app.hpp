@@ -12,6 +12,9 @@ struct GuiOptions {
     int width = 1280, height = 800;
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
+    // The vibration, for physical units beside zeta and r_disp: the paper's Littmann experiment (Sec. 4), 0.7
+    // um at 60 kHz, unless --amplitude / --frequency say otherwise. Both finite and > 0, v_v = 2 pi f A too.
+    double amplitude_um = 0.7, frequency_khz = 60;
     int frames = 0;         // > 0: stop after this many frames (scripted runs)
     std::string script;     // scripted slider changes, see script.hpp
     std::string screenshot; // write the last frame here (PNG)
