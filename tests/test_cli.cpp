@@ -228,6 +228,31 @@ TEST_CASE("CLI: gui without a display says what to run instead", "[cli][gui]") {
     CHECK(WEXITSTATUS(status2) == 1);
 }
 
+TEST_CASE("CLI: gui --data checks the file before any window opens", "[cli][gui][data]") {
+    const std::string bad = scratch_dir() + "/gui-bad.csv", shot = scratch_dir() + "/gui-data.png";
+    std::ofstream(bad) << "zeta,r_x\n0.1,0.5\n0.2,abc\n";
+    std::remove(shot.c_str());
+    Run r = run("gui --headless --frames 2 --screenshot " + shot + " --data " + bad);
+    CHECK(r.code == 2);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find(bad + ":3:5: ") != std::string::npos);
+    CHECK(!std::ifstream(shot)); // nothing rendered, nothing written
+    r = run("gui --headless --frames 2 --data " + scratch_dir() + "/no-such.csv");
+    CHECK(r.code == 2);
+    CHECK(r.err.find("no-such.csv") != std::string::npos);
+    // A vb column is converted with the window's vibration: 0.1 um at 1 kHz (v_v = 0.63 mm/s) puts these
+    // points (v_b up to 0.32 m/s) past zeta = 100.
+    r = run("gui --headless --frames 2 --amplitude 0.1 --frequency 1 --data " FV_TEST_DATA_DIR
+            "/synthetic_theta0_rdisp1_i1_vb.csv");
+    CHECK(r.code == 2);
+    CHECK(r.err.find("allowed: zeta in [0, 100]") != std::string::npos);
+    // A good file opens and the session runs.
+    r = run("gui --headless --frames 2 --screenshot " + shot + " --data " FV_TEST_DATA_DIR
+            "/synthetic_theta90_rdisp3_i0.csv");
+    CHECK(r.code == 0);
+    CHECK(std::ifstream(shot));
+}
+
 TEST_CASE("CLI: a malformed gui script is a usage error naming file and line", "[cli][gui]") {
     const std::string script = scratch_dir() + "/bad-script.txt";
     std::ofstream(script) << "0 zeta 0.3\n5 warp 9\n";

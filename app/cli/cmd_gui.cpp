@@ -7,6 +7,8 @@
 
 #include "gui/gui_app.hpp"
 
+#include "fv/measurements.hpp"
+
 #include <memory>
 
 namespace fv::cli {
@@ -16,7 +18,7 @@ Command add_gui_command(CLI::App& root) {
         ModelArgs model;
         bool headless = false;
         int frames = 0, bench = 0;
-        std::string script, screenshot;
+        std::string script, screenshot, data;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
@@ -30,6 +32,9 @@ Command add_gui_command(CLI::App& root) {
     cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
     add_unit_options(*cmd, a->model.units, UnitShape::single,
                      "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
+    cmd->add_option("--data", a->data,
+                    "measured r_x to show on the ratio plot: CSV zeta,r_x or vb,r_x [,theta_deg,sigma,label] "
+                    "(vb converted with the window's amplitude and frequency)");
     cmd->add_flag("--headless", a->headless,
                   "render into an OSMesa buffer instead of a window (same pixels)");
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
@@ -64,6 +69,19 @@ Command add_gui_command(CLI::App& root) {
                 if (*u.frequency_opt) o.frequency_khz = u.frequency;
                 // The window combines a given amplitude or frequency with the default of the other one.
                 check_vibration({o.amplitude_um, o.frequency_khz}, {o.params.rdisp});
+                // A malformed data file is a usage error before any window opens.
+                if (!a->data.empty()) {
+                    ReadOptions ro;
+                    ro.amplitude_um = o.amplitude_um;
+                    ro.frequency_khz = o.frequency_khz;
+                    try {
+                        if (read_measurements(a->data, ro).points.empty())
+                            throw UsageError("--data: " + a->data + " has no data rows");
+                    } catch (const DataError& e) {
+                        throw UsageError(e.what()); // FILE:LINE:COL: message
+                    }
+                    o.data = a->data;
+                }
                 try {
                     const int rc = app::run_gui(o);
                     if (rc != 0) throw RuntimeFailure("the window closed with an error");

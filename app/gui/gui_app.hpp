@@ -19,7 +19,6 @@ struct GuiOptions {
     std::string script;     // scripted slider changes, see script.hpp
     std::string screenshot; // write the last frame here (PNG)
     int bench_frames = 0;   // > 0: change the sliders every frame and print frame-time percentiles
-    double amplitude_um = 0.7, frequency_khz = 60;
     std::string data; // measured r_x(zeta) to show from the start (CSV, see measurements.hpp)
 };
 
