@@ -19,7 +19,7 @@ struct GuiOptions {
     std::string script;     // scripted slider changes, see script.hpp
     std::string screenshot; // write the last frame here (PNG)
     int bench_frames = 0;   // > 0: change the sliders every frame and print frame-time percentiles
-    std::string data; // measured r_x(zeta) to show from the start (CSV, see measurements.hpp)
+    std::string data;       // measured r_x(zeta) to show from the start (CSV, see measurements.hpp)
 };
 
 // Returns the process exit code. Throws std::runtime_error (one line) when no context can be made.
