@@ -247,8 +247,8 @@ TEST_CASE("CLI: gui --data checks the file before any window opens", "[cli][gui]
     CHECK(r.code == 2);
     CHECK(r.err.find("allowed: zeta in [0, 100]") != std::string::npos);
     // A good file opens and the session runs.
-    r = run("gui --headless --frames 2 --screenshot " + shot + " --data " FV_TEST_DATA_DIR
-            "/synthetic_theta90_rdisp3_i0.csv");
+    r = run("gui --headless --frames 2 --screenshot " + shot +
+            " --data " FV_TEST_DATA_DIR "/synthetic_theta90_rdisp3_i0.csv");
     CHECK(r.code == 0);
     CHECK(std::ifstream(shot));
 }
