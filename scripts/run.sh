@@ -12,6 +12,6 @@ mkdir -p screenshots
 $FV render --figure all --out screenshots
 $FV render --figure scene --zeta 0.3 --theta 30 --rdisp 2 --i 1 --out screenshots
 $FV render --figure map --rdisp 2 --i 1 --out screenshots
-$FV render --figure fig19 --data tests/data/synthetic_theta90_rdisp3_i0.csv --amplitude 0.7 --out screenshots
+$FV render --figure fig19 --data tests/data/synthetic_two_angles_rdisp2_i0.csv --amplitude 0.7 --out screenshots
 $FV gui --headless --frames 150 --script tests/gui_script.txt --screenshot screenshots/app.png
 echo "No display: figures rendered into screenshots/ (PNG with the data behind each one as CSV)."

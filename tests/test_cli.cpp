@@ -339,8 +339,22 @@ TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad dat
     const Run r = run("render --figure fig19 --data " + data + " --size 480x320 --out " + dir);
     REQUIRE(r.code == 0);
     const std::string csv = slurp(dir + "/fig19.csv");
-    CHECK(csv.rfind("line,zeta,r_x,sigma,model_i0,residual_i0,model_i1,residual_i1\n", 0) == 0);
+    CHECK(csv.rfind("line,theta_deg,zeta,r_x,sigma,model_i0,residual_i0,model_i1,residual_i1\n", 0) == 0);
     CHECK(lines(csv) == 1 + 16);
+    // Two angles: one panel each (the PNG is twice as busy), one fit, every point in the CSV with its angle.
+    const Run two = run("render --figure fig19 --data " + std::string(FV_TEST_DATA_DIR) +
+                        "/synthetic_two_angles_rdisp2_i0.csv --size 640x320 --out " + dir);
+    REQUIRE(two.code == 0);
+    const std::string csv2 = slurp(dir + "/fig19.csv");
+    CHECK(lines(csv2) == 1 + 24);
+    CHECK(csv2.find("\n12,90,") != std::string::npos);
+    CHECK(csv2.find("\n24,0,") != std::string::npos); // the first row of the second part
+    // Five angles are more panels than a figure holds: a usage error that says to split the file.
+    std::ofstream(dir + "/five.csv") << "zeta,r_x,theta_deg\n0.1,0.2,0\n0.1,0.2,10\n0.1,0.2,20\n0.1,0.2,30\n"
+                                        "0.1,0.2,40\n";
+    const Run five = run("render --figure fig19 --data " + dir + "/five.csv --out " + dir);
+    CHECK(five.code == 2);
+    CHECK(five.err.find("at most 4") != std::string::npos);
     CHECK(run("render --figure fig19 --out " + dir).code == 2);
     std::ofstream(dir + "/bad.csv") << "zeta,r_x\n0.1,oops\n";
     const Run bad = run("render --figure fig19 --theta 90 --data " + dir + "/bad.csv --out " + dir);

@@ -68,6 +68,21 @@ TEST_CASE("fit: recovers r_disp = 1, i = 1 of the synthetic theta = 0 v_b data (
                          << ", RSS = " << r.candidates[0].chi2);
 }
 
+TEST_CASE("fit: one r_disp and i for points at two angles (the layout of the paper's Fig. 19)", "[fit]") {
+    const fv::MeasurementSet data = fv::read_measurements(kData + "/synthetic_two_angles_rdisp2_i0.csv");
+    REQUIRE(data.has_theta);
+    REQUIRE(data.points.size() == 24);
+    const fv::FitResult r = fv::fit_rdisp(data);
+    const fv::FitCandidate& b = r.best;
+    CHECK(b.i == 0);
+    CHECK(b.rdisp == Approx(2).epsilon(0.02));
+    CHECK(std::abs(b.rdisp - 2) < 3 * b.rdisp_sigma);
+    CHECK(b.reduced_chi2 == Approx(1).margin(0.8));
+    // Each point is held against the model at its own angle: the residuals are noise-sized at both angles
+    // (at the other angle's curve they would not be: r_x(zeta = 0.5) is ~0.74 at 90 deg, ~0.6 at 0 deg).
+    for (std::size_t k = 0; k < data.points.size(); ++k) CHECK(std::abs(b.residuals[k]) < 4 * 0.008);
+}
+
 TEST_CASE("fit: a fixed exponent fits only that one, and exact model data give the exact r_disp", "[fit]") {
     // Noise-free data from the model itself: the fit must land on the generating value (model noise 1e-5).
     fv::MeasurementSet data;

@@ -11,15 +11,11 @@
 
 namespace fv {
 
-// Fits both exponents (FitError if the points do not share one angle or the fit cannot run) and returns the
-// figure: one panel, the data with error bars where sigma is given, three model curves; a table with the
-// measured points, both models' values and residuals. `fit` receives the fit when not null.
-// The measured points as markers (with error bars where sigma is given). With `theta_deg`, points measured
-// at another angle (their theta_deg differs by more than 0.5 deg) form a second, faded series, so that a
-// plot of r_x(zeta) at one angle does not pass them off as its own.
-std::vector<SeriesData> measured_series(const MeasurementSet& data,
-                                        std::optional<double> theta_deg = std::nullopt);
-
+// Fits both exponents to all points at once (r_disp and i belong to the contact, not to the angle; FitError
+// if the fit cannot run or the points have more than 4 angles) and returns the figure: one panel per angle in
+// the order of the file (the paper's Fig. 19 has (a) 90 deg and (b) 0 deg), each with that angle's points
+// (error bars where sigma is given), the rigid curve and both fitted Dahl curves; a table with every measured
+// point, its angle, both models' values and residuals. `fit` receives the fit when not null.
 FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt, FitResult* fit = nullptr);
 
 } // namespace fv
