@@ -11,6 +11,12 @@
 
 namespace fv {
 
+// The measured points as markers (with error bars where sigma is given). With `theta_deg`, points measured
+// at another angle (their theta_deg differs by more than 0.5 deg) form a second, faded series, so that a
+// plot of r_x(zeta) at one angle does not pass them off as its own.
+std::vector<SeriesData> measured_series(const MeasurementSet& data,
+                                        std::optional<double> theta_deg = std::nullopt);
+
 // Fits both exponents to all points at once (r_disp and i belong to the contact, not to the angle; FitError
 // if the fit cannot run or the points have more than 4 angles) and returns the figure: one panel per angle in
 // the order of the file (the paper's Fig. 19 has (a) 90 deg and (b) 0 deg), each with that angle's points
