@@ -75,12 +75,11 @@ Command add_gui_command(CLI::App& root) {
                     ro.amplitude_um = o.amplitude_um;
                     ro.frequency_khz = o.frequency_khz;
                     try {
-                        if (read_measurements(a->data, ro).points.empty())
-                            throw UsageError("--data: " + a->data + " has no data rows");
+                        o.data = read_measurements(a->data, ro);
                     } catch (const DataError& e) {
                         throw UsageError(e.what()); // FILE:LINE:COL: message
                     }
-                    o.data = a->data;
+                    if (o.data->points.empty()) throw UsageError("--data: " + a->data + " has no data rows");
                 }
                 try {
                     const int rc = app::run_gui(o);

@@ -119,10 +119,7 @@ int run_gui(const GuiOptions& o) {
     ui.params = o.params;
     ui.amplitude_um = o.amplitude_um;
     ui.frequency_khz = o.frequency_khz;
-    if (!o.data.empty()) {
-        ui.status = load_measured(ui, o.data);
-        if (!ui.data) throw std::runtime_error(ui.status); // the CLI checked it; the file changed since
-    }
+    if (o.data) ui.status = show_measured(ui, *o.data);
     LiveSim sim(ui.model, ui.params);
     sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
     RatioWorker worker;

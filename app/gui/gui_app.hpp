@@ -1,8 +1,10 @@
 // The interactive app: one loop for the window and for headless runs (scripted tests, benchmarks).
 #pragma once
 
+#include "fv/measurements.hpp"
 #include "fv/params.hpp"
 
+#include <optional>
 #include <string>
 
 namespace fv::app {
@@ -19,7 +21,7 @@ struct GuiOptions {
     std::string script;     // scripted slider changes, see script.hpp
     std::string screenshot; // write the last frame here (PNG)
     int bench_frames = 0;   // > 0: change the sliders every frame and print frame-time percentiles
-    std::string data;       // measured r_x(zeta) to show from the start (CSV, see measurements.hpp)
+    std::optional<MeasurementSet> data; // measured r_x(zeta) to show from the start, read with A and f above
 };
 
 // Returns the process exit code. Throws std::runtime_error (one line) when no context can be made.

@@ -28,14 +28,17 @@ std::string describe(const MeasurementSet& d, const UiState& ui) {
 
 } // namespace
 
+std::string show_measured(UiState& ui, MeasurementSet data) {
+    const std::string msg = describe(data, ui);
+    ui.data = std::move(data);
+    return msg;
+}
+
 std::string load_measured(UiState& ui, const std::string& path) {
     try {
         MeasurementSet d = read_measurements(path, read_options(ui));
         if (d.points.empty()) return path + ": no data rows; nothing to show";
-        const std::string msg = describe(d, ui);
-        ui.data = std::move(d);
-        ui.data_path = path;
-        return msg;
+        return show_measured(ui, std::move(d));
     } catch (const DataError& e) {
         return e.what();
     }
@@ -59,7 +62,7 @@ std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
                " kHz at the same v_b and z_ss: " + why;
     if (ui.data && ui.data->from_vb) {
         try {
-            next.data = read_measurements(ui.data_path, read_options(next));
+            next.data = read_measurements(ui.data->file, read_options(next));
         } catch (const DataError& e) {
             return e.what();
         }

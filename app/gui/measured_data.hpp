@@ -12,6 +12,9 @@
 
 namespace fv::app {
 
+// Shows `data` (read with ui's A and f) and returns the status line "loaded FILE: N points ...".
+std::string show_measured(UiState& ui, MeasurementSet data);
+
 // Reads `path` (columns as in measurements.hpp; a vb column is converted with ui's A and f) into ui.data.
 // Returns the status line: "loaded FILE: N points ..." or the reader's "FILE:LINE:COL: message"; on an
 // error the data shown before stay.

@@ -26,9 +26,9 @@ struct UiState {
     double amplitude_um = 0.7, frequency_khz = 60;
 
     // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`).
+    // Re-read from data->file when A or f change and the file gives v_b.
     std::optional<MeasurementSet> data;
-    std::string data_path; // re-read when A or f change and the file gives v_b
-    bool fitting = false;  // a fit of r_disp and i to the data is running
+    bool fitting = false; // a fit of r_disp and i to the data is running
 };
 
 struct UiEdits {
