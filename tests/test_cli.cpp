@@ -135,7 +135,7 @@ TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
     REQUIRE(js.code == 0);
     const auto j = nlohmann::json::parse(js.out);
     CHECK(j["model"] == "dahl");
-    CHECK(j["status"] == "converged");
+    CHECK(j["status"] == "ok");
     CHECK(j["theta_deg"].get<double>() == 45);
     const Run txt = run(std::string("ratio ") + kGood);
     CHECK(txt.out.find("r_x") != std::string::npos);

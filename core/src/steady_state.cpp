@@ -13,7 +13,17 @@ const char* to_string(Scheme s) {
 }
 
 const char* to_string(SteadyStatus s) {
-    return s == SteadyStatus::converged ? "converged" : "not_converged";
+    switch (s) {
+    case SteadyStatus::converged:
+        return "ok";
+    case SteadyStatus::not_converged:
+        return "not_converged";
+    case SteadyStatus::integration_failed:
+        return "integration_failed";
+    case SteadyStatus::non_finite:
+        return "non_finite";
+    }
+    return "?";
 }
 
 int default_steps_per_period(const Params& p) {

@@ -10,11 +10,19 @@
 
 namespace fv {
 
+// What became of a steady-state computation. Only `converged` is a result the solver vouches for; every
+// other value is a numerical failure (command-line exit status 3) and names its reason.
 enum class SteadyStatus {
-    converged,     // the estimated distance to the periodic state is below the tolerance
-    not_converged, // the period or step budget ran out first; error_estimate says how far it may be
+    converged,          // the estimated error of r_x, r_y is below the tolerance
+    not_converged,      // the period or iteration budget ran out first; error_estimate says how far it may be
+    integration_failed, // the integrator could not continue (step size underflow, stage equations unsolved)
+    non_finite,         // a value that is not a finite number came up (never expected; reported, not hidden)
 };
+// "ok" for converged, else the reason as one word: "not_converged", "integration_failed", "non_finite".
 const char* to_string(SteadyStatus s);
+inline bool ok(SteadyStatus s) {
+    return s == SteadyStatus::converged;
+}
 
 // How the Dahl model's steady state is computed.
 enum class Scheme {
