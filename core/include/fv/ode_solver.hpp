@@ -1,13 +1,15 @@
 // Continuous-time steady state of the lumped asperity: the paper's tracking scheme (Eqs. (17)-(27)) in the
-// limit dtau -> 0 is an ODE for the lag L = P - T (derivation in ode_solver.cpp). One period of it is
-// integrated with an adaptive Dormand-Prince 5(4) method that stops at every instant where the right-hand
-// side is not smooth (events) and restarts there. The periodic steady state is the fixed point of the
-// period map L(0) -> L(2 pi), found by Newton's method (finite-difference Jacobian, natural monotonicity
-// test) where plain periods contract slowly, by plain iteration L <- Phi(L) where they contract fast or the
-// tip still sticks (i = 0), and directly on the circle z = z_ss when the steady period never leaves it
-// (pure pursuit; for i > 1 the paper's scheme only creeps there algebraically). The friction ratios r_x,
-// r_y are the period means of F (Eq. (33) with dtau -> 0), integrated as extra ODE components.
-// Assumes, like the rest of the project, that the periodic steady state is unique (zeta > 0).
+// limit dtau -> 0 is a law for the lag L = P - T (docs/model.md). The solver works on the law's phases:
+//   stick (i = 0) in closed form, its end a scalar root found rigorously, whole stuck periods skipped;
+//   slip on the circle |L| = z_ss (any i) as a scalar equation for the angle of L;
+//   relaxation inside the circle (i > 0) in the plane;
+// the last two with the L-stable Radau IIA method (order 5), so the cost does not grow with the stiffness
+// rdisp. The periodic steady state is the fixed point of the period map L(0) -> L(2 pi), found by Newton's
+// method with the map's derivative from the discrete variational equations, on the circle's angle alone
+// when the steady period starts there (for i > 1 the only place the state ever gets to). The friction
+// ratios r_x, r_y are the period means of F (Eq. (33) with dtau -> 0).
+// Pieces: core/src/solver/radau_iia.hpp (integrator), lag_phases.* (the model's phases and events),
+// period_map.* (one period through the phases), steady_search.cpp (this header's functions).
 #pragma once
 
 #include "fv/paper_scheme.hpp"
@@ -21,21 +23,21 @@
 namespace fv {
 
 struct OdeOptions {
-    // Target for |r - r(dtau -> 0)| in force units. The integrator's local tolerance is 0.1x this; the
-    // fixed-point iteration stops when the estimated distance to L* is below it (or at the integration's
-    // noise floor, then with the achieved figure in error_estimate). Measured: 1e-8 gives |error| ~1e-9.
+    // Target for |r - r(dtau -> 0)| in force units; the result's status is `converged` only when its error
+    // estimate (steady-state distance + integration error, estimated separately) is within this.
     double tolerance = 1e-8;
-    int max_periods = 4000;          // cap on integrated periods (all of them: Newton's probes included)
-    Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0) to start from (warm start); |lag| > z_ss is pulled back
+    int max_periods = 400;           // cap on integrated periods (stuck periods skipped analytically are free)
+    Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0) to start from (warm start); zero: start on the circle
+                                     // in the direction of P'(0); |lag| > z_ss is pulled back
     bool record_period = false;      // fill SteadyResult::period with samples of the steady period
     int record_samples = 1024;       // samples at tau = 2 pi k / n, k = 1..n (like Eq. (30))
 };
 
-// Instants where the right-hand side of the lag ODE is not smooth.
+// Instants where the lag's law changes.
 enum class OdeEventKind {
     velocity_sign, // v = e . dP/dtau changes sign while z < z_ss (i > 0): sgn(v) in Eq. (16) switches
-    reach_zss, // z reaches z_ss with v > 0: the tip starts slipping at full deflection (i = 0: stick ends)
-    leave_zss, // v turns negative at z = z_ss: the deflection starts to shrink (i = 0: stick begins)
+    reach_zss,     // z reaches z_ss with v > 0: the tip slips at full deflection (i = 0: stick ends)
+    leave_zss,     // v turns negative at z = z_ss: the deflection starts to shrink (i = 0: stick begins)
 };
 const char* to_string(OdeEventKind k);
 
@@ -45,41 +47,30 @@ struct OdeEvent {
     Vec2 lag{0, 0}; // P - T at the event
 };
 
-// One period of the lag ODE from lag0 at tau = 0 (the ODE is 2 pi-periodic in tau).
-struct OdePeriod {
-    Vec2 lag_end{0, 0};      // P - T at tau = 2 pi: the period map Phi(lag0)
-    Vec2 mean_force{0, 0};   // (1/2 pi) int_0^{2 pi} F dtau: r_x, r_y of this period
-    int steps = 0;           // accepted steps
-    int rejected = 0;        // rejected steps
-    bool saturated = false;  // z = z_ss for a while (i = 0: the tip slipped in this period)
-    bool v_negative = false; // the deflection shrank at some time (v < 0)
-};
-
-// Integrates one period. `tolerance` as in OdeOptions. Events and samples (tau = 2 pi k/n, k = 1..n, P in
-// absolute coordinates of the first period) are appended when the pointers are given.
-OdePeriod ode_period(const Params& p, Vec2 lag0, double tolerance, std::vector<OdeEvent>* events = nullptr,
-                     std::vector<Sample>* samples = nullptr, int n_samples = 1024);
-
-// The right-hand side dL/dtau of the lag ODE at (tau, L), for z < z_ss or v < 0 (`saturated` = false) or
-// on z = z_ss with v >= 0 (`saturated` = true). Exposed for tests.
-Vec2 ode_lag_rate(const Params& p, double tau, Vec2 lag, bool saturated);
+// The right-hand side dL/dtau of the lag law at (tau, L): inside the disc (`on_circle` false; i = 0: stick)
+// or on z = z_ss with v >= 0 (`on_circle` true: pursuit). Exposed for tests of the derivation.
+Vec2 ode_lag_rate(const Params& p, double tau, Vec2 lag, bool on_circle);
 
 struct OdeSolution {
     SteadyResult result;          // rx, ry, status, periods, error_estimate, steady_error, period samples
     Vec2 lag{0, 0};               // L* = P(0) - T(0) of the periodic steady state (warm start for neighbours)
     std::vector<OdeEvent> events; // events of the steady period (only when record_period is set)
-    int newton_steps = 0;         // accepted Newton (or secant) updates
-    int plain_steps = 0;          // plain updates L <- Phi(L)
+    int newton_steps = 0;         // Newton updates (on the circle's angle or in the plane)
+    int plain_steps = 0;          // plain updates L <- Phi(L) (leaving the circle, singular derivative)
+    long periods_skipped = 0;     // whole stuck periods (i = 0) skipped in closed form
+    int events_per_period = 0;    // law changes in the steady period
+    bool on_circle = false;       // the steady period starts on the circle z = z_ss (angle-only search)
     double integration_error = 0; // estimated |r error| from integrating one period (force units)
+    const char* failure = "";     // what went wrong when the status is not converged
 };
 
 // The periodic steady state. Throws std::invalid_argument for inadmissible parameters (fv::validate).
 // SteadyResult fields: rx, ry from the last period integrated (it starts at OdeSolution::lag);
-// periods = total_periods = periods integrated by the fixed-point search, Newton's probes included (not
-// the re-run at 10x looser tolerance that estimates the integration error, nor the recording run);
-// steps_per_period = accepted steps of the last period; levels = 1; steady_error = rdisp x estimated
-// |lag - L*|; error_estimate = steady_error + integration error; period = record_samples samples of the
-// steady period when record_period is set.
+// periods = total_periods = periods integrated (Newton's and the error estimate's, not the skipped ones);
+// steps_per_period = accepted steps of the last period; levels = 1; steady_error = estimated effect on r of
+// the distance to L*; error_estimate = steady_error + integration error (+ the 1e-10 pinning allowance).
+// zeta = 0 with i = 0 and rdisp <= 1: the steady state is not unique (the tip never slips); the result is the
+// limit zeta -> 0+ in closed form (docs/model.md).
 OdeSolution ode_solve(const Params& p, const OdeOptions& opt = {});
 SteadyResult ode_steady(const Params& p, const OdeOptions& opt = {});
 
@@ -87,7 +78,8 @@ SteadyResult ode_steady(const Params& p, const OdeOptions& opt = {});
 OdeOptions ode_options(const SteadyOptions& opt);
 
 // Sweep over zeta for every theta x rdisp x i (zeta fastest, like fv::sweep): each family (theta, rdisp, i)
-// runs on one thread, its zeta values in the given order, each warm-started from its neighbour's L*.
+// runs on one thread, its zeta values in the given order, each warm-started from its neighbour's L* (and
+// started afresh when the warm start does not converge, so a row never depends on its neighbours).
 std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const std::vector<double>& thetas,
                                        const std::vector<double>& rdisps, const std::vector<double>& is,
                                        const OdeOptions& opt = {}, int threads = 0);

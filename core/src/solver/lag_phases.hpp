@@ -1,0 +1,152 @@
+// The lumped asperity's motion split into its phases (derivation: docs/model.md, "The lag law and its
+// phases"). Units: lengths in x_v, the lag L = P - T, the force l = F/F_c = rdisp L (|l| <= 1).
+//   stick    (i = 0, |l| < 1, or |l| = 1 with v < 0): T fixed, L(tau) = L_a + P(tau) - P(tau_a) (Eq. (27)).
+//   circle   (|l| = 1 and v = e . P' >= 0, any i): the tip slips at full deflection; only the angle phi of
+//            l moves: phi' = rdisp e_perp . P'. Integrated as the arc a = (phi - phi_a)/rdisp (units of x_v).
+//   interior (i > 0, |l| < 1): Eq. (16) in the plane, dL/dtau = P' - v (1 - (1 - s rho)^i) e with
+//            rho = |l|, e = l/rho, v = e . P', s = sgn v held fixed between velocity events. Integrated as
+//            the displacement D = L - L_a.
+// Integrated variables are displacements in x_v, so their size (and the tolerance that goes with them)
+// does not depend on rdisp: for tiny rdisp the period map is a small perturbation of the identity, and its
+// fixed-point equation (L(2 pi) - L(0) = 0) stays well conditioned in these units.
+#pragma once
+
+#include "fv/params.hpp"
+#include "fv/vec2.hpp"
+
+#include <Eigen/Core>
+
+#include <cmath>
+#include <optional>
+
+namespace fv::solver {
+
+inline constexpr double kTwoPi = 2 * kPi;
+
+// Where an interior state counts as being on the circle (i > 0): 1 - rho <= kPin. Pinning there changes
+// |F| by at most kPin, and turns the approach to the circle (finite-time but non-Lipschitz for i < 1,
+// exponential for i = 1, algebraic for i > 1) into the exact pursuit motion it tends to.
+inline constexpr double kPin = 1e-10;
+
+struct LagModel {
+    explicit LagModel(const Params& p)
+        : zeta(p.zeta), cth(std::cos(p.theta)), sth(std::sin(p.theta)), r(p.rdisp), zss(p.zss()), i(p.i) {}
+    double zeta, cth, sth, r, zss, i;
+
+    Vec2 u() const { return {cth, sth}; } // vibration direction
+    // Eqs. (28)-(29) divided by x_v, their derivatives (Eq. (1) divided by v_v).
+    Vec2 P(double tau) const { return {zeta * tau + std::sin(tau) * cth, std::sin(tau) * sth}; }
+    Vec2 dP(double tau) const {
+        const double c = std::cos(tau);
+        return {zeta + c * cth, c * sth};
+    }
+    Vec2 ddP(double tau) const {
+        const double s = std::sin(tau);
+        return {-s * cth, -s * sth};
+    }
+    // P(b) - P(a) without cancellation for b close to a.
+    Vec2 dispP(double a, double b) const {
+        const double ds = 2 * std::cos(0.5 * (a + b)) * std::sin(0.5 * (b - a));
+        return Vec2(zeta * (b - a), 0) + ds * u();
+    }
+    // int_a^b (P(tau) - P(a)) dtau.
+    Vec2 int_dispP(double a, double b) const {
+        const double d = b - a;
+        return Vec2(0.5 * zeta * d * d, 0) + (std::cos(a) - std::cos(b) - std::sin(a) * d) * u();
+    }
+};
+
+// Interior law (i > 0) for D = L - L_a, branch s fixed.
+struct InteriorProblem {
+    using Vec = Eigen::Matrix<double, 2, 1>;
+    using Mat = Eigen::Matrix<double, 2, 2>;
+    const LagModel* m;
+    Vec2 l_a;   // force at the phase start
+    double s;   // sgn v of this piece
+    double bmin; // floor of the base 1 - s rho (a stage may stray past the circle)
+
+    InteriorProblem(const LagModel& model, Vec2 la, double sign)
+        : m(&model), l_a(la), s(sign), bmin(0.25 * kPin) {}
+
+    Vec2 force(const Vec& D) const { return l_a + m->r * D; }
+    // dF/dtau given the state's rate.
+    Vec2 force_rate(const Vec&, const Vec& dD) const { return m->r * dD; }
+
+    // k = 1 - b^i, q = k / rho (bounded as rho -> 0: s i), dk/drho = s i b^(i-1).
+    void law(double rho, double& q, double& dk) const {
+        const double b = std::max(bmin, 1 - s * rho);
+        const double i = m->i;
+        if (i == 1) {
+            q = rho > 0 ? (1 - b) / rho : s;
+            dk = s;
+            return;
+        }
+        // -expm1(i log1p(-s rho)) / rho: accurate for small rho.
+        const double lb = std::log(b);
+        q = rho > 1e-300 ? -std::expm1(i * lb) / rho : s * i;
+        dk = s * i * std::exp((i - 1) * lb);
+    }
+
+    Vec f(double tau, const Vec& D) const {
+        const Vec2 l = force(D);
+        const Vec2 dp = m->dP(tau);
+        const double rho = l.norm();
+        if (!(rho > 0)) return dp;
+        const Vec2 e = l / rho;
+        const double v = e.dot(dp);
+        double q, dk;
+        law(rho, q, dk);
+        return dp - (v * q * rho) * e; // T moves along e at v (1 - b^i)
+    }
+
+    Mat jac(double tau, const Vec& D) const {
+        const Vec2 l = force(D);
+        const Vec2 dp = m->dP(tau);
+        const double rho = l.norm();
+        if (!(rho > 0)) return Mat::Zero();
+        const Vec2 e = l / rho;
+        const double v = e.dot(dp);
+        double q, dk;
+        law(rho, q, dk);
+        const Mat ee = e * e.transpose();
+        // d(v k e)/dl = q e (P' - v e)^T + v k' e e^T + v q (I - e e^T); dl/dD = r.
+        const Mat J = q * e * (dp - v * e).transpose() + v * dk * ee + v * q * (Mat::Identity() - ee);
+        return -m->r * J;
+    }
+};
+
+// Circle law for the arc a (x_v units) from angle phi_a: phi = phi_a + r a, a' = e_perp . P'.
+struct CircleProblem {
+    using Vec = Eigen::Matrix<double, 1, 1>;
+    using Mat = Eigen::Matrix<double, 1, 1>;
+    const LagModel* m;
+    double phi_a;
+
+    double phi(double a) const { return phi_a + m->r * a; }
+    Vec2 force(const Vec& a) const {
+        const double ph = phi(a[0]);
+        return {std::cos(ph), std::sin(ph)};
+    }
+    Vec2 force_rate(const Vec& a, const Vec& da) const {
+        const double ph = phi(a[0]);
+        return m->r * da[0] * Vec2(-std::sin(ph), std::cos(ph));
+    }
+    Vec f(double tau, const Vec& a) const {
+        const double ph = phi(a[0]);
+        const Vec2 dp = m->dP(tau);
+        return Vec(-std::sin(ph) * dp.x() + std::cos(ph) * dp.y());
+    }
+    Mat jac(double tau, const Vec& a) const {
+        const double ph = phi(a[0]);
+        const Vec2 dp = m->dP(tau);
+        return Mat(-m->r * (std::cos(ph) * dp.x() + std::sin(ph) * dp.y())); // -r v
+    }
+};
+
+// Stick (i = 0): l(tau) = l_a + r (P(tau) - P(tau_a)). First tau in (tau_a, tau_end] where |l| reaches 1
+// moving outwards, or nothing. Rigorous: a cubic upper bound of g = |l|^2 - 1 from its exact value and first
+// two derivatives and a bound on g''' never steps over a root; long stick phases far inside are skipped
+// with the drift bound |l(tau)| <= |c + r zeta tau e_x| + r (whole stuck periods, analytically).
+std::optional<double> stick_slip_time(const LagModel& m, double tau_a, Vec2 l_a, double tau_end);
+
+} // namespace fv::solver

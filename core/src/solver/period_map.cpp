@@ -1,0 +1,368 @@
+// Drives the lag through its phases over [tau0, tau1] (see period_map.hpp and docs/model.md).
+//
+// Events (where the law changes) and what they do to the derivative of the map (saltation matrices,
+// S = I + (f+ - f-) grad(g)^T / (grad(g) . f-)):
+//   reach    |l| = 1 with v > 0 (stick -> circle for i = 0; interior -> circle at 1 - rho = kPin for i > 0):
+//            f- - f+ = (radial part) e, grad g = e, so S = I - e e^T: the radial perturbation is forgotten
+//            and the arc coordinate takes da = e_perp . dL.
+//   leave    v = e . P' turns negative on the circle: f is continuous there (v = 0), S = I; dL = e_perp da.
+//   velocity v changes sign inside (i > 0): continuous, only a kink; S = I.
+// Every event is located on the step's collocation polynomial, and the step is then retaken to end
+// exactly there, so the state at the event carries the method's full order.
+#include "period_map.hpp"
+
+#include "radau_iia.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace fv::solver {
+namespace {
+
+Vec2 perp(const Vec2& e) {
+    return {-e.y(), e.x()};
+}
+
+// An event function of the current phase: it must stay on the side `sign` (sign * g >= -noise); the event
+// is the first instant where it leaves.
+struct EventFn {
+    OdeEventKind kind;
+    double sign;
+    double noise;
+};
+
+enum class StepEnd { reached_end, event, failed };
+
+struct PhaseOutcome {
+    StepEnd how = StepEnd::reached_end;
+    int event = -1; // index into the event list
+};
+
+// Integrates y' = f from tau to tau1 with Radau IIA steps until tau1 or the first event.
+// g(k, tau, y) evaluates event function k; on_step(step, s_end) is called for every accepted step (s_end = 1)
+// or the step retaken to an event, with the step's integral of F.
+template <int N, class Pb, class G, class OnStep>
+PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename RadauStep<N>::Vec& y, double& h,
+                             const PeriodRequest& rq, const EventFn* evs, int n_ev, const G& g, OnStep on_step,
+                             PeriodResult& out) {
+    using Vec = typename RadauStep<N>::Vec;
+    constexpr double kMaxStep = 0.5;
+    constexpr int kProbes = 8; // dense-output probes per step for sign changes of the event functions
+    RadauStep<N> prev;
+    bool have_prev = false;
+    bool after_reject = true;
+    PhaseOutcome res;
+    while (tau1 - tau > 1e-14 * (1 + std::abs(tau))) {
+        if (out.steps + out.rejected >= rq.max_steps) {
+            out.ok = false;
+            out.failure = "step budget exhausted";
+            res.how = StepEnd::failed;
+            return res;
+        }
+        double hh = std::min({h, kMaxStep, tau1 - tau});
+        if (tau1 - tau - hh < 1e-9) hh = tau1 - tau;
+        RadauStep<N> st =
+            radau_step<N>(pb, tau, y, hh, rq.atol, have_prev ? &prev : nullptr, rq.sensitivity, after_reject);
+        // The period means are a quadrature of F over the steps, controlled as well (see step_integral).
+        Eigen::Vector2d integral(0, 0);
+        double qerr = 0; // quadrature error relative to its tolerance; ~h^5
+        if (st.solved && st.error <= 1) {
+            integral = step_integral<N>(st, [&](const Vec& v) { return pb.force(v); },
+                                        [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr);
+            qerr /= rq.atol_force * hh;
+        }
+        // Step factor from both estimates (the state's ~h^4, the quadrature's ~h^5).
+        auto factor = [&] {
+            const double fs = st.error > 0 ? 0.9 * std::pow(st.error, -0.25) : 4.0;
+            const double fq = qerr > 0 ? 0.9 * std::pow(qerr, -0.2) : 4.0;
+            return std::min({4.0, fs, fq});
+        };
+        if (qerr > 1) st.error = std::max(st.error, qerr);
+        if (!st.solved || !(st.error <= 1)) {
+            ++out.rejected;
+            after_reject = true;
+            have_prev = false;
+            const double fac = st.solved && std::isfinite(st.error) ? std::max(0.1, factor()) : 0.25;
+            h = hh * fac;
+            if (h < 1e-13 * (1 + std::abs(tau))) {
+                out.ok = false;
+                out.failure = "step size underflow";
+                res.how = StepEnd::failed;
+                return res;
+            }
+            continue;
+        }
+        // Events: the first probe where some event function is off its side.
+        int hit = -1;
+        double s_lo = 0, s_hi = 0;
+        for (int k = 1; k <= kProbes && hit < 0; ++k) {
+            const double s = static_cast<double>(k) / kProbes;
+            const Vec ys = k == kProbes ? st.y1() : st.at(s);
+            for (int j = 0; j < n_ev; ++j)
+                if (evs[j].sign * g(j, tau + s * hh, ys) < -evs[j].noise) {
+                    hit = j;
+                    s_lo = static_cast<double>(k - 1) / kProbes;
+                    s_hi = s;
+                    break;
+                }
+        }
+        if (hit >= 0) {
+            // Earliest crossing in (s_lo, s_hi] among the functions that leave their side there.
+            double best = s_hi;
+            for (int j = 0; j < n_ev; ++j) {
+                auto gj = [&](double s) { return evs[j].sign * g(j, tau + s * hh, s == 1 ? st.y1() : st.at(s)); };
+                if (!(gj(s_hi) < -evs[j].noise)) continue;
+                double a = s_lo, b = s_hi;
+                double fa = std::max(gj(a), std::numeric_limits<double>::min()), fb = gj(b);
+                int side = 0;
+                for (int it = 0; it < 100 && b - a > 1e-15; ++it) {
+                    double c = (a * fb - b * fa) / (fb - fa);
+                    if (!(c > a && c < b)) c = 0.5 * (a + b);
+                    const double fc = gj(c);
+                    if (fc > 0) {
+                        a = c;
+                        fa = fc;
+                        if (side == -1) fb *= 0.5;
+                        side = -1;
+                    } else {
+                        b = c;
+                        fb = fc;
+                        if (side == 1) fa *= 0.5;
+                        side = 1;
+                    }
+                }
+                if (b < best || (b == best && j < hit)) {
+                    best = b;
+                    hit = j;
+                }
+            }
+            // Retake the step to end at the event. The collocation polynomial locates it to its own accuracy
+            // (order 3); the retaken step is order 5 and may still be a hair on the old side. Secant
+            // corrections of its length put it on the new side, so that the next phase starts where its law
+            // holds (else it would switch back at once).
+            double he = best * hh;
+            const double h_cap = s_hi * hh;
+            const double slope = [&] {
+                const double d = std::min(1e-3, best);
+                const double g1 = evs[hit].sign * g(hit, tau + best * hh, st.at(best));
+                const double g0 = evs[hit].sign * g(hit, tau + (best - d) * hh, st.at(best - d));
+                return d > 0 ? (g1 - g0) / (d * hh) : 0.0;
+            }();
+            RadauStep<N> se;
+            bool have_se = false;
+            for (int it = 0; it < 6 && he > 1e-13 * (1 + std::abs(tau)); ++it) {
+                se = radau_step<N>(pb, tau, y, he, rq.atol, &st, rq.sensitivity, false);
+                if (!se.solved) break;
+                have_se = true;
+                const double ge = evs[hit].sign * g(hit, tau + he, se.y1());
+                if (ge <= 0 || !(slope < 0) || he >= h_cap) break;
+                he = std::min(h_cap, he + 1.5 * ge / -slope + 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
+            }
+            if (he > 1e-13 * (1 + std::abs(tau))) {
+                if (!have_se || !se.solved) { // shorter than a step just accepted: not expected
+                    out.ok = false;
+                    out.failure = "step to an event failed";
+                    res.how = StepEnd::failed;
+                    return res;
+                }
+                ++out.steps;
+                double qerr_e = 0;
+                on_step(se, step_integral<N>(se, [&](const Vec& v) { return pb.force(v); },
+                                             [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr_e));
+                tau += se.h;
+                y = se.y1();
+            }
+            res.how = StepEnd::event;
+            res.event = hit;
+            return res;
+        }
+        ++out.steps;
+        on_step(st, integral);
+        tau += hh;
+        y = st.y1();
+        prev = st;
+        have_prev = true;
+        after_reject = false;
+        h = hh * std::max(0.2, factor());
+    }
+    tau = tau1;
+    return res;
+}
+
+} // namespace
+
+Phase classify(const LagModel& m, double tau, Vec2& l) {
+    const double rho = l.norm();
+    if (rho > 1) l /= rho;
+    const double v = l.dot(m.dP(tau));
+    const double on = m.i == 0 ? 1 - 1e-13 : 1 - kPin;
+    if (rho >= on && v > 0) {
+        l /= l.norm();
+        return Phase::circle;
+    }
+    return m.i == 0 ? Phase::stick : Phase::interior;
+}
+
+PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const PeriodRequest& rq) {
+    PeriodResult out;
+    const double r = m.r;
+    Vec2 l = l0;
+    Phase ph = classify(m, tau0, l);
+    out.start = ph;
+    double tau = tau0;
+    // Sensitivity: M = I + E while the state is in the plane; R = d a / d L(tau0) (a row) on the circle.
+    Eigen::Matrix2d& E = out.E;
+    E.setZero();
+    Eigen::RowVector2d R = Eigen::RowVector2d::Zero();
+    if (ph == Phase::circle) {
+        R = perp(l).transpose();
+        out.visited_circle = true;
+    }
+    double s = 1; // branch of the interior law
+    {
+        const double v = l.dot(m.dP(tau));
+        s = v < 0 ? -1 : 1;
+    }
+    double h = 0.01;
+    int next_sample = 1;
+    const int n_samples = rq.samples ? std::max(1, rq.n_samples) : 0;
+    auto sample_at = [&](double ts, const Vec2& lf) {
+        Sample sm;
+        sm.tau = ts;
+        sm.P = body_point(*rq.params, ts);
+        Vec2 lc = lf;
+        const double rho = lc.norm();
+        if (rho > 1) lc /= rho; // dense output may stray past the circle by the tolerance; the model never does
+        sm.F = lc;
+        sm.T = sm.P - lc / r;
+        sm.z = lc.norm() / r;
+        rq.samples->push_back(sm);
+    };
+    // Samples falling in (ta, tb]; lf(t) gives the force there.
+    auto record = [&](double ta, double tb, auto lf) {
+        if (!rq.samples) return;
+        while (next_sample <= n_samples) {
+            const double ts = tau0 + (tau1 - tau0) * next_sample / n_samples;
+            const bool last = next_sample == n_samples && tb >= tau1 - 1e-12;
+            if (ts > tb && !last) break;
+            (void)ta;
+            sample_at(ts, lf(std::min(ts, tb)));
+            ++next_sample;
+        }
+    };
+    auto event = [&](OdeEventKind k) {
+        ++out.events;
+        if (rq.events) rq.events->push_back({tau, k, Vec2(l / r)});
+    };
+    auto to_circle = [&] {
+        // Pin onto the circle: the radial remainder (at most kPin) is dropped, and with it the radial
+        // perturbation (saltation S = I - e e^T).
+        const Vec2 lc = l / l.norm();
+        out.dL += (lc - l) / r;
+        l = lc;
+        R = perp(l).transpose() * (Eigen::Matrix2d::Identity() + E);
+        ph = Phase::circle;
+        out.visited_circle = true;
+    };
+    int same_instant = 0;
+    double last_event_tau = -1;
+
+    while (tau1 - tau > 1e-14 * (1 + std::abs(tau))) {
+        if (out.events > 0 && tau == last_event_tau) {
+            if (++same_instant > 20) {
+                out.ok = false;
+                out.failure = "events chatter at one instant";
+                break;
+            }
+        } else {
+            same_instant = 0;
+        }
+        last_event_tau = tau;
+        if (ph == Phase::stick) {
+            const std::optional<double> ts = stick_slip_time(m, tau, l, tau1);
+            const double tb = ts ? *ts : tau1;
+            const Vec2 la = l;
+            const double ta = tau;
+            record(ta, tb, [&](double t) { return Vec2(la + r * m.dispP(ta, t)); });
+            out.force_integral += la * (tb - ta) + r * m.int_dispP(ta, tb);
+            out.dL += m.dispP(ta, tb);
+            l = la + r * m.dispP(ta, tb);
+            tau = tb;
+            if (ts) {
+                to_circle();
+                event(OdeEventKind::reach_zss);
+            }
+            continue;
+        }
+        if (ph == Phase::circle) {
+            const CircleProblem pb{&m, std::atan2(l.y(), l.x())};
+            Eigen::Matrix<double, 1, 1> a;
+            a.setZero();
+            const EventFn evs[1] = {{OdeEventKind::leave_zss, 1.0, 1e-14 * (1 + m.zeta)}};
+            auto g = [&](int, double t, const Eigen::Matrix<double, 1, 1>& y) { return pb.force(y).dot(m.dP(t)); };
+            auto on_step = [&](const RadauStep<1>& st, const Eigen::Vector2d& integral) {
+                out.force_integral += integral;
+                if (rq.sensitivity) R *= 1 + st.dy1_dy0_minus_i(0, 0);
+                record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
+            };
+            const PhaseOutcome oc = integrate_phase<1>(pb, tau, tau1, a, h, rq, evs, 1, g, on_step, out);
+            // Displacement on the circle, zss (e(phi_a + r a) - e(phi_a)), without cancellation.
+            const double half = 0.5 * r * a[0];
+            const double mid = pb.phi_a + half;
+            out.dL += (2 * std::sin(half) / r) * Vec2(-std::sin(mid), std::cos(mid));
+            l = pb.force(a);
+            if (oc.how == StepEnd::failed) break;
+            if (oc.how == StepEnd::event) {
+                E = perp(l) * R - Eigen::Matrix2d::Identity();
+                out.left_circle = true;
+                ph = m.i == 0 ? Phase::stick : Phase::interior;
+                s = -1;
+                event(OdeEventKind::leave_zss);
+            }
+            continue;
+        }
+        // Interior (i > 0).
+        const InteriorProblem pb(m, l, s);
+        Eigen::Vector2d D = Eigen::Vector2d::Zero();
+        const bool can_reach = s > 0;
+        const EventFn evs[2] = {{OdeEventKind::velocity_sign, s, 1e-14 * (1 + m.zeta)},
+                                {OdeEventKind::reach_zss, -1.0, 0.0}};
+        auto g = [&](int k, double t, const Eigen::Vector2d& y) {
+            const Vec2 lf = pb.force(y);
+            return k == 0 ? lf.dot(m.dP(t)) : lf.norm() - (1 - kPin);
+        };
+        auto on_step = [&](const RadauStep<2>& st, const Eigen::Vector2d& integral) {
+            out.force_integral += integral;
+            if (rq.sensitivity) E += st.dy1_dy0_minus_i * (Eigen::Matrix2d::Identity() + E);
+            record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
+        };
+        const PhaseOutcome oc = integrate_phase<2>(pb, tau, tau1, D, h, rq, evs, can_reach ? 2 : 1, g, on_step, out);
+        out.dL += D;
+        l = pb.force(D);
+        if (oc.how == StepEnd::failed) break;
+        if (oc.how == StepEnd::event) {
+            if (oc.event == 0) {
+                s = -s;
+                event(OdeEventKind::velocity_sign);
+            } else {
+                to_circle();
+                event(OdeEventKind::reach_zss);
+            }
+        }
+    }
+    out.end = ph;
+    out.l_end = l;
+    if (!l.allFinite() || !out.force_integral.allFinite() || !out.E.allFinite()) {
+        out.ok = false;
+        out.failure = "non-finite state";
+    }
+    if (ph == Phase::circle && out.ok) {
+        // The map ends on the circle: dL(tau1) = e_perp da.
+        E = perp(l) * R - Eigen::Matrix2d::Identity();
+    }
+    return out;
+}
+
+} // namespace fv::solver

@@ -1,0 +1,212 @@
+// One step of the 3-stage Radau IIA method (order 5, L-stable, stiffly accurate) for a small system
+// y' = f(tau, y) of dimension N (1 or 2 here), with
+//   - the stage equations solved by simplified Newton (the analytic Jacobian at the step's start),
+//   - Hairer's error estimate (Hairer & Wanner, Solving ODEs II, Sec. IV.8, as in RADAU5),
+//   - the collocation polynomial as dense output (order 3 between the nodes, exact at them),
+//   - the derivative of the step map dy1/dy0 (the discrete variational equation), computed at the converged
+//     stages: the sensitivity of the numerical period map, so that Newton on that map converges to its own
+//     fixed point quadratically.
+// The integrator knows nothing about friction: a problem supplies f and its Jacobian and nothing else.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fv::solver {
+
+struct RadauTableau {
+    static constexpr double s6 = 2.449489742783178098197284; // sqrt(6)
+    static constexpr double c1 = (4 - s6) / 10, c2 = (4 + s6) / 10;
+    static constexpr double a11 = (88 - 7 * s6) / 360, a12 = (296 - 169 * s6) / 1800, a13 = (-2 + 3 * s6) / 225;
+    static constexpr double a21 = (296 + 169 * s6) / 1800, a22 = (88 + 7 * s6) / 360, a23 = (-2 - 3 * s6) / 225;
+    static constexpr double a31 = (16 - s6) / 36, a32 = (16 + s6) / 36, a33 = 1.0 / 9;
+    // Error estimator (RADAU5): err = (u1/h I - J)^-1 (f(y0) + (dd1 Z1 + dd2 Z2 + dd3 Z3)/h).
+    static constexpr double dd1 = -(13 + 7 * s6) / 3, dd2 = (-13 + 7 * s6) / 3, dd3 = -1.0 / 3;
+    // u1 = 1 / gamma, gamma the real eigenvalue of A: 30 / (6 + 81^(1/3) - 9^(1/3)).
+    static constexpr double u1 = 30.0 / (6.0 + 4.3267487109222245 - 2.0800838230519041);
+};
+
+template <int N> struct RadauStep {
+    using Vec = Eigen::Matrix<double, N, 1>;
+    using Mat = Eigen::Matrix<double, N, N>;
+    using BigVec = Eigen::Matrix<double, 3 * N, 1>;
+    using BigMat = Eigen::Matrix<double, 3 * N, 3 * N>;
+
+    double tau0 = 0, h = 0;
+    Vec y0 = Vec::Zero();
+    Vec z[3];             // stage increments Y_j - y0 at tau0 + c_j h (z[2] = y1 - y0: stiffly accurate)
+    Vec f0, fz[3];        // f at the start and at the converged stages
+    Mat dy1_dy0_minus_i;  // d y1 / d y0 - I
+    double error = 0;     // scaled error norm (accept when <= 1)
+    int newton_iterations = 0;
+    bool solved = false; // stage equations converged
+
+    Vec y1() const { return y0 + z[2]; }
+    // Collocation polynomial through (0, 0), (c1, z1), (c2, z2), (1, z3) at s = (tau - tau0)/h in [0, 1].
+    Vec at(double s) const {
+        using T = RadauTableau;
+        const double l1 = s * (s - T::c2) * (s - 1) / (T::c1 * (T::c1 - T::c2) * (T::c1 - 1));
+        const double l2 = s * (s - T::c1) * (s - 1) / (T::c2 * (T::c2 - T::c1) * (T::c2 - 1));
+        const double l3 = s * (s - T::c1) * (s - T::c2) / ((1 - T::c1) * (1 - T::c2));
+        return y0 + l1 * z[0] + l2 * z[1] + l3 * z[2];
+    }
+};
+
+// Takes one step of size h from (tau0, y0). `guess` (may be null) is a previous step whose collocation
+// polynomial, extrapolated, starts the stage iteration. `atol` is the absolute tolerance per component
+// (the problems are scaled so that their variables are O(1) displacements). `want_sensitivity` computes
+// dy1/dy0. Problem: Vec f(double tau, const Vec& y) const; Mat jac(double tau, const Vec& y) const.
+template <int N, class Problem>
+RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep<N>::Vec& y0, double h,
+                        double atol, const RadauStep<N>* guess, bool want_sensitivity, bool estimate_twice) {
+    using T = RadauTableau;
+    using S = RadauStep<N>;
+    using Vec = typename S::Vec;
+    using Mat = typename S::Mat;
+    using BigVec = typename S::BigVec;
+    using BigMat = typename S::BigMat;
+    static constexpr double A[3][3] = {{T::a11, T::a12, T::a13}, {T::a21, T::a22, T::a23}, {T::a31, T::a32, T::a33}};
+    static constexpr double C[3] = {T::c1, T::c2, 1.0};
+
+    S st;
+    st.tau0 = tau0;
+    st.h = h;
+    st.y0 = y0;
+    st.f0 = pb.f(tau0, y0);
+    if (guess && guess->h > 0) {
+        // Extrapolate the previous collocation polynomial to the new nodes.
+        for (int j = 0; j < 3; ++j) {
+            const double s = (tau0 + C[j] * h - guess->tau0) / guess->h;
+            st.z[j] = guess->at(s) - y0;
+        }
+    } else {
+        for (int j = 0; j < 3; ++j) st.z[j] = C[j] * h * st.f0;
+    }
+    // Simplified Newton: the Jacobian at the step's start, factored once.
+    const Mat J0 = pb.jac(tau0, y0);
+    BigMat G;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            G.template block<N, N>(N * i, N * j) = (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * J0;
+    const Eigen::PartialPivLU<BigMat> lu(G);
+    const double stop = 1e-2 * atol;
+    st.solved = false;
+    double prev_norm = 0;
+    for (int it = 0; it < 10; ++it) {
+        for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+        BigVec res;
+        for (int i = 0; i < 3; ++i) {
+            Vec r = st.z[i];
+            for (int j = 0; j < 3; ++j) r -= h * A[i][j] * st.fz[j];
+            res.template segment<N>(N * i) = r;
+        }
+        const BigVec dz = lu.solve(-res);
+        if (!dz.allFinite()) break;
+        for (int j = 0; j < 3; ++j) st.z[j] += dz.template segment<N>(N * j);
+        st.newton_iterations = it + 1;
+        const double nrm = dz.cwiseAbs().maxCoeff();
+        if (nrm <= stop) {
+            st.solved = true;
+            for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+            break;
+        }
+        // A contraction rate near 1 (or worse) will not get there: the caller shortens the step.
+        if (it >= 1 && nrm > 0.9 * prev_norm) break;
+        prev_norm = nrm;
+    }
+    if (!st.solved) {
+        st.error = std::numeric_limits<double>::infinity();
+        return st;
+    }
+    // Error estimate (RADAU5's ESTRAD), filtered through (u1/h - J)^-1 so that it stays meaningful for
+    // stiff components.
+    Mat E1 = -J0;
+    E1.diagonal().array() += T::u1 / h;
+    const Eigen::PartialPivLU<Mat> lue(E1);
+    const Vec f2 = (T::dd1 * st.z[0] + T::dd2 * st.z[1] + T::dd3 * st.z[2]) / h;
+    Vec err = lue.solve(Vec(f2 + st.f0));
+    auto norm = [&](const Vec& e) { return e.cwiseAbs().maxCoeff() / atol; };
+    st.error = norm(err);
+    if (st.error >= 1 && estimate_twice) {
+        err = lue.solve(Vec(pb.f(tau0, Vec(y0 + err)) + f2));
+        st.error = norm(err);
+    }
+    if (!std::isfinite(st.error)) st.error = std::numeric_limits<double>::infinity();
+    if (want_sensitivity) {
+        // Differentiate Z = h (A x I) F(y0 + Z) with respect to y0 at the converged stages:
+        // (I - h (A x I) diag(J_j)) dZ = h (A x I) [J_1; J_2; J_3].
+        Mat js[3];
+        for (int j = 0; j < 3; ++j) js[j] = pb.jac(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+        Eigen::Matrix<double, 3 * N, N> rhs;
+        for (int i = 0; i < 3; ++i) {
+            Mat b = Mat::Zero();
+            for (int j = 0; j < 3; ++j) {
+                G.template block<N, N>(N * i, N * j) = (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * js[j];
+                b += h * A[i][j] * js[j];
+            }
+            rhs.template block<N, N>(N * i, 0) = b;
+        }
+        const Eigen::Matrix<double, 3 * N, N> dZ = Eigen::PartialPivLU<BigMat>(G).solve(rhs);
+        st.dy1_dy0_minus_i = dZ.template block<N, N>(2 * N, 0);
+    } else {
+        st.dy1_dy0_minus_i.setZero();
+    }
+    return st;
+}
+
+// Quadrature over a step from values g and derivatives g' of the integrand at the nodes {0, c1, c2, 1}
+// (Hermite interpolation, exact for degree 7): h sum_k (w_k g_k + h v_k g'_k). Moments:
+// sum_k w_k x_k^j + sum_k v_k j x_k^(j-1) = 1/(j+1), j = 0..7.
+struct HermiteWeights {
+    Eigen::Vector4d w, v;
+};
+inline const HermiteWeights& hermite_weights() {
+    static const HermiteWeights hw = [] {
+        using T = RadauTableau;
+        const double x[4] = {0, T::c1, T::c2, 1};
+        Eigen::Matrix<double, 8, 8> M;
+        Eigen::Matrix<double, 8, 1> m;
+        for (int j = 0; j < 8; ++j) {
+            for (int k = 0; k < 4; ++k) {
+                M(j, k) = j == 0 ? 1.0 : std::pow(x[k], j);
+                M(j, 4 + k) = j == 0 ? 0.0 : j * (j == 1 ? 1.0 : std::pow(x[k], j - 1));
+            }
+            m[j] = 1.0 / (j + 1);
+        }
+        const Eigen::Matrix<double, 8, 1> sol = M.fullPivLu().solve(m);
+        return HermiteWeights{sol.head<4>(), sol.tail<4>()};
+    }();
+    return hw;
+}
+
+// Integral over the step of a function g of the state whose rate is dg(y, f(y)) (the stage rates are
+// re-evaluated at the converged stages). Returns the Hermite rule (degree 7) and stores in `err` its
+// difference from the Radau rule on the same values (degree 4): the latter's error estimate, and a bound
+// for the former's. Needed because where the state is quasi-static (a stiff tip tracking the body), the
+// state's local error is damped away while the integrand still varies: the state's error estimate alone
+// lets the steps grow past what the quadrature of F can follow.
+template <int N, class G, class DG>
+Eigen::Vector2d step_integral(const RadauStep<N>& st, const G& g, const DG& dg, double& err) {
+    using T = RadauTableau;
+    using Vec = typename RadauStep<N>::Vec;
+    const HermiteWeights& hw = hermite_weights();
+    Eigen::Vector2d q(0, 0), qd(0, 0), q5(0, 0);
+    const double b[4] = {0, T::a31, T::a32, T::a33};
+    for (int k = 0; k < 4; ++k) {
+        const Vec y = k == 0 ? st.y0 : Vec(st.y0 + st.z[k - 1]);
+        const Eigen::Vector2d gk = g(y);
+        const Eigen::Vector2d dgk = dg(y, k == 0 ? st.f0 : st.fz[k - 1]);
+        q += hw.w[k] * gk;
+        qd += hw.v[k] * dgk;
+        q5 += b[k] * gk;
+    }
+    const Eigen::Vector2d qh = st.h * (q + st.h * qd);
+    err = (qh - st.h * q5).cwiseAbs().maxCoeff();
+    return qh;
+}
+
+} // namespace fv::solver

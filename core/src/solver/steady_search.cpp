@@ -1,0 +1,400 @@
+// The periodic steady state: Newton's method on the period map (see ode_solver.hpp, docs/model.md).
+#include "period_map.hpp"
+
+#include "fv/detail/parallel_for.hpp"
+#include "fv/ode_solver.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cstdio>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace fv {
+
+const char* to_string(OdeEventKind k) {
+    switch (k) {
+    case OdeEventKind::velocity_sign:
+        return "velocity_sign";
+    case OdeEventKind::reach_zss:
+        return "reach_zss";
+    case OdeEventKind::leave_zss:
+        return "leave_zss";
+    }
+    return "?";
+}
+
+Vec2 ode_lag_rate(const Params& p, double tau, Vec2 lag, bool on_circle) {
+    const solver::LagModel m(p);
+    const Vec2 dp = m.dP(tau);
+    const double z = lag.norm();
+    if (on_circle) {
+        const Vec2 e = lag / z;
+        return dp - e.dot(dp) * e; // pursuit: T follows along e, |L| stays z_ss
+    }
+    if (p.i == 0) return dp; // stick
+    const Vec2 l = p.rdisp * lag;
+    const double v = l.dot(dp);
+    const solver::InteriorProblem pb(m, l, v < 0 ? -1.0 : 1.0);
+    return pb.f(tau, Eigen::Vector2d::Zero());
+}
+
+namespace {
+
+using solver::kTwoPi;
+using solver::LagModel;
+using solver::Phase;
+using solver::PeriodRequest;
+using solver::PeriodResult;
+
+Vec2 perp(const Vec2& e) {
+    return {-e.y(), e.x()};
+}
+
+Vec2 rotate(const Vec2& v, double a) {
+    const double c = std::cos(a), s = std::sin(a);
+    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+}
+
+// zeta = 0, i = 0, rdisp <= 1: L(tau) = c/r + sin(tau) u never slips once |c +- r u| <= 1. As zeta -> 0+ the
+// slow drift sweeps c to the point of that lens (two unit discs centred at -+ r u) farthest along +x
+// (docs/model.md, "zeta = 0").
+Vec2 lens_center(const LagModel& m) {
+    const double r = m.r;
+    const Vec2 u = m.u();
+    if (u.x() >= r) return Vec2(1, 0) - r * u;
+    if (u.x() <= -r) return Vec2(1, 0) + r * u;
+    return std::sqrt(std::max(0.0, 1 - r * r)) * Vec2(m.sth, -m.cth);
+}
+
+OdeSolution lens_solution(const Params& p, const LagModel& m, const OdeOptions& opt) {
+    OdeSolution sol;
+    const Vec2 c = lens_center(m);
+    SteadyResult& r = sol.result;
+    r.scheme = Scheme::ode;
+    r.rx = c.x();
+    r.ry = c.y();
+    r.status = SteadyStatus::converged;
+    r.error_estimate = 1e-15;
+    r.levels = 1;
+    sol.lag = (c + m.r * std::sin(0.0) * m.u()) / m.r;
+    if (opt.record_period) {
+        const int n = std::max(1, opt.record_samples);
+        for (int k = 1; k <= n; ++k) {
+            Sample s;
+            s.tau = kTwoPi * k / n;
+            s.P = body_point(p, s.tau);
+            s.F = c + m.r * std::sin(s.tau) * m.u();
+            s.T = s.P - s.F / m.r;
+            s.z = s.F.norm() / m.r;
+            r.period.push_back(s);
+        }
+    }
+    return sol;
+}
+
+// The start: the warm start if given, else on the circle along P'(0) (the rigid model's direction), where
+// the tip slips at once: no transient of stuck periods, and for i > 1 the only place that is not approached
+// algebraically.
+Vec2 start_force(const LagModel& m, const OdeOptions& opt) {
+    if (opt.initial_lag.squaredNorm() > 0 && opt.initial_lag.allFinite()) {
+        Vec2 l = m.r * opt.initial_lag;
+        if (l.norm() > 1) l /= l.norm();
+        if (l.allFinite()) return l;
+    }
+    const Vec2 dp = m.dP(0);
+    return dp.norm() > 0 ? Vec2(dp / dp.norm()) : Vec2(1, 0);
+}
+
+} // namespace
+
+OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
+    const std::string msg = validate(p);
+    if (!msg.empty()) throw std::invalid_argument(msg);
+    if (!(opt.tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
+    const LagModel m(p);
+    const double r = p.rdisp;
+    if (p.zeta == 0 && p.i == 0 && r <= 1) return lens_solution(p, m, opt);
+
+    const double tol = opt.tolerance;
+    // Local tolerance of the displacements (x_v): force errors are r times larger for r > 1; for r < 1 the
+    // fixed-point equation L(2 pi) - L(0) = 0 needs the displacements themselves. Radau IIA's error estimate
+    // is of lower order than the method: measured over whole periods, a local tolerance a gives mean-force
+    // errors ~1e-3 a and end-state errors ~1e-2 a, so (like RADAU5, which uses 0.1 tol^(2/3)) the local
+    // tolerance is looser than the target; the separate estimate below checks the outcome.
+    PeriodRequest rq;
+    rq.atol = 0.1 * std::pow(tol, 2.0 / 3.0) / std::max(1.0, r);
+    rq.atol_force = 0.3 * tol; // per unit time: the period mean's quadrature error stays below 0.3 tol
+    rq.sensitivity = true;
+    const double tol_newton = 0.1 * tol; // force units
+
+    OdeSolution sol;
+    SteadyResult& res = sol.result;
+    res.scheme = Scheme::ode;
+    res.levels = 1;
+    int periods = 0;
+    Vec2 l0 = start_force(m, opt);
+    PeriodResult last;
+    Vec2 last_l0 = l0;
+    bool have_last = false;
+    bool converged = false;
+    double dist = std::numeric_limits<double>::infinity(); // estimated |l0 - l*| (force units)
+    const char* failure = "";
+    // Damped Newton in the plane (Deuflhard's natural monotonicity test): a trial point l_ref + lambda step
+    // is accepted when the correction it needs, measured with the reference point's inverse Jacobian, has
+    // shrunk; else lambda is halved. Near the fixed point the periods' integration noise limits what the
+    // corrections can show: when they stop shrinking, the search stops and its last correction is the
+    // distance it reports.
+    struct Ref {
+        bool valid = false;
+        Vec2 l{0, 0}, delta{0, 0}, l_end{0, 0}; // point, its Newton correction (x_v), Phi(point) (force)
+        Eigen::Matrix2d Jinv = Eigen::Matrix2d::Zero();
+    } ref;
+    double lambda = 1;
+    Vec2 prev_delta(0, 0);
+    bool have_prev_delta = false;
+    double best = std::numeric_limits<double>::infinity();
+    int stalled = 0;
+    auto stalled_at_noise = [&](double corr) {
+        // Corrections that stop shrinking (by 2x within 3 tries) are rounding and integration noise.
+        if (corr < 0.5 * best) {
+            best = corr;
+            stalled = 0;
+            return false;
+        }
+        return ++stalled >= 3;
+    };
+
+    for (int iter = 0; iter < 100; ++iter) {
+        if (periods >= opt.max_periods) {
+            failure = "period budget exhausted";
+            break;
+        }
+        Vec2 ls = l0;
+        const Phase start = solver::classify(m, 0, ls);
+        l0 = ls;
+        const PeriodResult pr = solver::run_lag(m, l0, 0, kTwoPi, rq);
+        ++periods;
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "iter %d start=%d end=%d l0=(%.12g,%.12g) |l0|=%.15g dL=(%.3e,%.3e) steps=%ld ev=%d lambda=%g\n",
+                     iter, (int)start, (int)pr.end, l0.x(), l0.y(), l0.norm(), pr.dL.x(), pr.dL.y(), pr.steps,
+                     pr.events, lambda);
+#endif
+        if (!pr.ok) {
+            failure = pr.failure;
+            res.status = SteadyStatus::integration_failed;
+            break;
+        }
+        last = pr;
+        last_l0 = l0;
+        have_last = true;
+
+        if (p.i == 0 && !pr.visited_circle) {
+            // Stuck for the whole period: the map is a translation by 2 pi zeta e_x (DPhi = I, no Newton).
+            // Skip to the first slip in closed form, then to the end of that period.
+            const auto ts = solver::stick_slip_time(m, 0, l0, std::numeric_limits<double>::max());
+            if (!ts) { // zeta = 0 and no slip: every start is periodic (handled above for r <= 1)
+                converged = true;
+                dist = 0;
+                break;
+            }
+            const double k = std::floor(*ts / kTwoPi);
+            sol.periods_skipped += static_cast<long>(k);
+            const Vec2 ls2 = l0 + r * m.dispP(0, *ts);
+            const PeriodRequest plain{rq.atol, rq.atol_force, false};
+            const PeriodResult rest = solver::run_lag(m, ls2, *ts - k * kTwoPi, kTwoPi, plain);
+            if (!rest.ok) {
+                failure = rest.failure;
+                res.status = SteadyStatus::integration_failed;
+                break;
+            }
+            l0 = rest.l_end;
+            ++sol.plain_steps;
+            ref.valid = false;
+            continue;
+        }
+
+        if (start == Phase::circle) {
+            if (pr.end != Phase::circle) {
+                // The period leaves the circle and ends inside: the steady state does not start on the
+                // circle. Continue in the plane from where this period ended.
+                l0 = pr.l_end;
+                ++sol.plain_steps;
+                ref.valid = false;
+                continue;
+            }
+            // Residual and derivative in the arc a = angle / r (x_v units): a well-conditioned scalar
+            // equation for every r. The circle map contracts (DPhi = exp(-int v) <= 1 on the circle), so
+            // plain Newton steps are safe; the largest is capped at a radian.
+            const Vec2 d = r * pr.dL;
+            const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
+            const double arc = dphi / r;
+            const Vec2 le = pr.l_end;
+            const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) - 1;
+            double da = std::abs(J) > 0 ? -arc / J : -arc;
+            if (!std::isfinite(da)) da = -arc;
+            double step = r * da; // radians = force units
+            if (std::abs(step) > 1) step = std::copysign(1.0, step);
+            ++sol.newton_steps;
+            dist = std::abs(step);
+            if (dist <= tol_newton || stalled_at_noise(dist)) {
+                converged = dist <= tol_newton || dist <= 0.1 * tol;
+                sol.on_circle = true;
+                break;
+            }
+            l0 = rotate(l0, step);
+            ref.valid = false;
+            continue;
+        }
+
+        // In the plane: Newton on F(L0) = L(2 pi) - L0 (x_v units) with F' = DPhi - I = E.
+        const Vec2 F = pr.dL;
+        const Eigen::Matrix2d& J = pr.E;
+        const double det = J.determinant();
+        const double scale = J.cwiseAbs().maxCoeff();
+        const bool singular = !(std::abs(det) > 1e-13 * scale * scale) || !std::isfinite(det);
+        if (ref.valid && !singular) {
+            // Natural monotonicity test of the trial point against the reference point.
+            const Vec2 simplified = -ref.Jinv * F;
+            if (!(simplified.norm() <= (1 - lambda / 4) * ref.delta.norm())) {
+                lambda *= 0.5;
+                if (lambda < 1.0 / 64) {
+                    // Newton makes no headway from here: a plain period instead (always admissible).
+                    l0 = ref.l_end;
+                    ref.valid = false;
+                    lambda = 1;
+                    ++sol.plain_steps;
+                } else {
+                    l0 = ref.l + lambda * r * ref.delta;
+                    if (l0.norm() > 1) l0 /= l0.norm();
+                }
+                continue;
+            }
+            lambda = std::min(1.0, 2 * lambda);
+        }
+        if (singular) {
+            // Phi ~ a translation or a rank-deficient map: one plain period.
+            l0 = pr.l_end;
+            ref.valid = false;
+            ++sol.plain_steps;
+            continue;
+        }
+        const Eigen::Matrix2d Jinv = J.inverse();
+        const Vec2 delta = -Jinv * F;
+        ++sol.newton_steps;
+        // A Newton step that converges only linearly (a degenerate fixed point, e.g. i > 1 next to the
+        // circle) is accelerated by Aitken's rule: successive steps in one direction, shrinking by q, sum to
+        // step / (1 - q); the distance to the fixed point is the same sum.
+        double q = 0;
+        if (have_prev_delta && prev_delta.norm() > 0 && lambda == 1) {
+            q = delta.norm() / prev_delta.norm();
+            const bool aligned = delta.dot(prev_delta) > 0.9 * delta.norm() * prev_delta.norm();
+            if (!(aligned && q > 0.2 && q < 0.98)) q = 0;
+        }
+        prev_delta = delta;
+        have_prev_delta = true;
+        dist = r * delta.norm() / (1 - q);
+        if (dist <= tol_newton || stalled_at_noise(dist)) {
+            converged = dist <= tol_newton || dist <= 0.1 * tol;
+            break;
+        }
+        ref.valid = true;
+        ref.l = l0;
+        ref.delta = q > 0 ? Vec2(delta / (1 - q)) : delta;
+        ref.l_end = pr.l_end;
+        ref.Jinv = Jinv;
+        Vec2 dl = lambda * r * ref.delta;
+        const double n = dl.norm();
+        if (n > 1) dl /= n;
+        l0 = l0 + dl;
+        if (l0.norm() > 1) l0 /= l0.norm();
+    }
+    if (!have_last) {
+        res.status = SteadyStatus::integration_failed;
+        res.rx = res.ry = std::numeric_limits<double>::quiet_NaN();
+        sol.failure = failure;
+        return sol;
+    }
+
+    res.rx = last.force_integral.x() / kTwoPi;
+    res.ry = last.force_integral.y() / kTwoPi;
+    res.steps_per_period = static_cast<int>(last.steps);
+    sol.events_per_period = last.events;
+    sol.lag = last_l0 / r;
+    // The reported means start dist away from l*: over the period that moves them by at most ~dist (the
+    // flow does not expand differences of the force), twice for safety.
+    res.steady_error = 2 * dist;
+    // Integration error: the same period at a 10x looser tolerance. The global error scales about like the
+    // tolerance (order 5 steps: like tol^(5/6)), so the difference is >= 5x our error: dividing by 3 is safe.
+    {
+        PeriodRequest loose{10 * rq.atol, 10 * rq.atol_force, false};
+        const PeriodResult lo = solver::run_lag(m, last_l0, 0, kTwoPi, loose);
+        ++periods;
+        sol.integration_error = lo.ok ? (lo.force_integral - last.force_integral).cwiseAbs().maxCoeff() / kTwoPi / 3
+                                      : std::numeric_limits<double>::infinity();
+    }
+    const double pin = p.i > 0 && last.visited_circle ? solver::kPin : 0;
+    res.error_estimate = res.steady_error + sol.integration_error + pin + 1e-14;
+    res.periods = res.total_periods = periods;
+    if (res.status == SteadyStatus::converged) {
+        if (!converged)
+            res.status = SteadyStatus::not_converged;
+        else if (!(res.error_estimate <= tol))
+            res.status = SteadyStatus::not_converged, failure = "error estimate above tolerance";
+    }
+    if (!std::isfinite(res.rx) || !std::isfinite(res.ry)) res.status = SteadyStatus::non_finite;
+    sol.failure = failure;
+    if (opt.record_period) {
+        // The same period again, now with samples and events (same tolerance, same start: same result).
+        PeriodRequest rec{rq.atol, rq.atol_force, false};
+        rec.events = &sol.events;
+        rec.samples = &res.period;
+        rec.n_samples = std::max(1, opt.record_samples);
+        rec.params = &p;
+        res.period.reserve(static_cast<std::size_t>(rec.n_samples));
+        solver::run_lag(m, last_l0, 0, kTwoPi, rec);
+    }
+    return sol;
+}
+
+SteadyResult ode_steady(const Params& p, const OdeOptions& opt) {
+    return ode_solve(p, opt).result;
+}
+
+std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const std::vector<double>& thetas,
+                                       const std::vector<double>& rdisps, const std::vector<double>& is,
+                                       const OdeOptions& opt, int threads) {
+    std::vector<SweepPoint> pts;
+    pts.reserve(zetas.size() * thetas.size() * rdisps.size() * is.size());
+    for (double i : is)
+        for (double th : thetas)
+            for (double r : rdisps)
+                for (double z : zetas) {
+                    SweepPoint sp;
+                    sp.model = Model::dahl;
+                    sp.params = {z, th, r, i};
+                    pts.push_back(sp);
+                }
+    const int families = static_cast<int>(thetas.size() * rdisps.size() * is.size());
+    const std::size_t nz = zetas.size();
+    OdeOptions o = opt;
+    o.record_period = false;
+    parallel_for(
+        families,
+        [&](int f) {
+            OdeOptions of = o;
+            for (std::size_t k = 0; k < nz; ++k) {
+                SweepPoint& sp = pts[static_cast<std::size_t>(f) * nz + k];
+                OdeSolution s = ode_solve(sp.params, of);
+                if (!ok(s.result.status) && of.initial_lag != o.initial_lag) s = ode_solve(sp.params, o);
+                sp.result = std::move(s.result);
+                of.initial_lag = ok(sp.result.status) ? s.lag : o.initial_lag;
+            }
+        },
+        threads);
+    return pts;
+}
+
+} // namespace fv
