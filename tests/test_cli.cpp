@@ -36,9 +36,11 @@ std::string scratch_dir() {
     return dir;
 }
 
-Run run(const std::string& args) {
+// `env`: assignments put before the command, e.g. "FV_TEST_FORCE_STATUS=not_converged".
+Run run(const std::string& args, const std::string& env = "") {
     const std::string o = scratch_dir() + "/stdout", e = scratch_dir() + "/stderr";
-    const std::string cmd = std::string(FV_EXE) + " " + args + " >" + o + " 2>" + e + " </dev/null";
+    const std::string cmd = (env.empty() ? "" : "env " + env + " ") + std::string(FV_EXE) + " " + args +
+                            " >" + o + " 2>" + e + " </dev/null";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(o), slurp(e)};
 }
@@ -128,8 +130,9 @@ TEST_CASE("CLI: a failed run writes nothing and clobbers nothing", "[cli]") {
 TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\ndahl,1,45,2,0.3,", 0) ==
-          0);
+    CHECK(
+        csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\ndahl,1,45,2,0.3,",
+                      0) == 0);
     CHECK(lines(csv.out) == 2);
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
@@ -152,7 +155,7 @@ TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
     REQUIRE(r.code == 0);
     CHECK(r.out.empty());
     const std::string csv = slurp(out);
-    CHECK(csv.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n", 0) == 0);
+    CHECK(csv.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\n", 0) == 0);
     CHECK(lines(csv) == 1 + 4 * 2 * 2 * 2);
     const Run j = run("sweep --model rigid --zeta 0:2:5 --theta 0,30 --format json");
     REQUIRE(j.code == 0);
@@ -469,8 +472,8 @@ TEST_CASE(
     // CSV: the extra columns are the physical values of the printed zeta and rdisp.
     const Run csv = run(std::string("ratio ") + units + " --theta 60 --i 1 --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,vb_m_s,zss_um\n", 0) ==
-          0);
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,vb_m_s,zss_um\n",
+                        0) == 0);
     const auto rows = parse_csv(csv.out);
     REQUIRE(rows.size() == 1);
     CHECK(field(rows[0], "zeta") == Approx(zeta).epsilon(1e-11));
@@ -500,11 +503,11 @@ TEST_CASE("CLI units: --amplitude/--frequency with plain --zeta/--rdisp add the 
     // Amplitude alone: z_ss only.
     r = run(base + " --amplitude 0.5");
     REQUIRE(r.code == 0);
-    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,zss_um\n", 0) == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,zss_um\n", 0) == 0);
     // Frequency alone is accepted and changes nothing (it needs the amplitude to say anything).
     r = run(base + " --frequency 40");
     REQUIRE(r.code == 0);
-    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate\n", 0) == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\n", 0) == 0);
     // The rigid model has no z_ss: the column is there but empty (null in JSON).
     r = run("ratio --model rigid --zeta 0.5 --theta 0 --amplitude 0.5 --frequency 40 --format csv");
     REQUIRE(r.code == 0);
@@ -527,7 +530,7 @@ TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
     CHECK(csv.out.substr(0, csv.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate");
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status");
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
     const auto j = nlohmann::json::parse(js.out);
@@ -540,7 +543,7 @@ TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "
     const Run sw = run("sweep --zeta 0.1:0.5:3 --theta 90 --rdisp 2 --i 1");
     REQUIRE(sw.code == 0);
     CHECK(sw.out.substr(0, sw.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate");
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status");
 }
 
 TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the converted zeta range and rdisp list",
@@ -554,7 +557,8 @@ TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the convert
                       "," + exact(amp / 0.7) + common);
     REQUIRE(u.code == 0);
     REQUIRE(z.code == 0);
-    CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,vb_m_s,zss_um\n", 0) == 0);
+    CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,vb_m_s,zss_um\n",
+                      0) == 0);
     const auto ru = parse_csv(u.out), rz = parse_csv(z.out);
     REQUIRE(ru.size() == 2 * 2 * 2 * 5);
     REQUIRE(rz.size() == ru.size());
@@ -743,4 +747,202 @@ TEST_CASE("CLI units: fit keeps --amplitude/--frequency for a vb column", "[cli]
     CHECK(j["best"]["rdisp"].get<double>() == Approx(1).epsilon(0.02));
     CHECK(j["best"]["zss_um"].get<double>() == Approx(0.7 / j["best"]["rdisp"].get<double>()));
     check_usage_error(run("fit --data " + data + " --amplitude 0.7"), {"frequency"});
+}
+
+// ---- Numerical failure: exit status 3, output still written, every result with its status ----------------
+// FV_TEST_FORCE_STATUS=REASON[@ZETA] (app/cli/test_hook.hpp) marks results as failed after they are computed,
+// so these tests do not depend on parameters where the solver happens to fail.
+
+namespace {
+
+const char* kForceNotConverged = "FV_TEST_FORCE_STATUS=not_converged";
+
+} // namespace
+
+TEST_CASE("CLI status: --help documents the exit statuses, 3 included", "[cli][status]") {
+    for (const char* a : {"--help", "ratio --help", "sweep --help", "render --help", "fit --help"}) {
+        CAPTURE(a);
+        const Run r = run(a);
+        CHECK(r.code == 0);
+        CHECK(r.out.find("Exit status: 0 success") != std::string::npos);
+        CHECK(r.out.find("2 usage error") != std::string::npos);
+        CHECK(r.out.find("3 numerical failure") != std::string::npos);
+    }
+}
+
+TEST_CASE("CLI status: a normal run exits 0 with status ok everywhere", "[cli][status]") {
+    const Run txt = run(std::string("ratio ") + kGood);
+    REQUIRE(txt.code == 0);
+    CHECK(txt.err.empty());
+    CHECK(report_line(txt.out, "status ") == "status        ok");
+    const Run csv = run(std::string("ratio ") + kGood + " --format csv");
+    REQUIRE(csv.code == 0);
+    CHECK(parse_csv(csv.out).at(0).at("status") == "ok");
+    const Run sw = run("sweep --zeta 0:1.5:7 --theta 0,60,90 --rdisp 0.5,2 --i 0,1");
+    REQUIRE(sw.code == 0);
+    CHECK(sw.err.empty());
+    const auto rows = parse_csv(sw.out);
+    REQUIRE(rows.size() == 7 * 3 * 2 * 2);
+    for (const auto& row : rows) CHECK(row.at("status") == "ok");
+    const Run js = run("sweep --zeta 0:1.5:4 --theta 0,90 --rdisp 2 --i 1 --scheme paper --format json");
+    REQUIRE(js.code == 0);
+    for (const auto& row : nlohmann::json::parse(js.out)) CHECK(row["status"] == "ok");
+    const Run rig = run("sweep --model rigid --zeta 0:2:5 --theta 0,45");
+    REQUIRE(rig.code == 0);
+    for (const auto& row : parse_csv(rig.out)) CHECK(row.at("status") == "ok");
+    const Run tr = run("trace --zeta 0.3 --theta 60 --rdisp 2 --i 1 --format json");
+    REQUIRE(tr.code == 0);
+    CHECK(nlohmann::json::parse(tr.out)["status"] == "ok");
+    // The hook set to nothing changes nothing.
+    CHECK(run(std::string("ratio ") + kGood, "FV_TEST_FORCE_STATUS=").code == 0);
+}
+
+TEST_CASE("CLI status: ratio writes a failed result with its status and exits 3", "[cli][status]") {
+    const Run txt = run(std::string("ratio ") + kGood, kForceNotConverged);
+    CHECK(txt.code == 3);
+    CHECK(!report_line(txt.out, "r_x ").empty());
+    CHECK(report_line(txt.out, "status ").rfind("status        not_converged (steady state not reached", 0) ==
+          0);
+    CHECK(lines(txt.err) == 1);
+    CHECK(txt.err.find("numerical failure: not_converged at zeta=0.3 theta=45 deg rdisp=2 i=1") !=
+          std::string::npos);
+
+    const Run csv =
+        run(std::string("ratio ") + kGood + " --format csv", "FV_TEST_FORCE_STATUS=integration_failed");
+    CHECK(csv.code == 3);
+    auto rows = parse_csv(csv.out);
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0].at("status") == "integration_failed");
+    CHECK(field(rows[0], "r_x") > 0); // the best value is kept
+    CHECK(lines(csv.err) == 1);
+    CHECK(csv.err.find("integration_failed") != std::string::npos);
+
+    // Not finite: empty cells (null in JSON), never "nan".
+    const std::string out = scratch_dir() + "/status-ratio.csv";
+    std::remove(out.c_str());
+    const Run nf =
+        run(std::string("ratio ") + kGood + " --format csv --out " + out, "FV_TEST_FORCE_STATUS=non_finite");
+    CHECK(nf.code == 3);
+    rows = parse_csv(slurp(out));
+    REQUIRE(rows.size() == 1);
+    CHECK(rows[0].at("status") == "non_finite");
+    CHECK(rows[0].at("r_x").empty());
+    CHECK(rows[0].at("r_y").empty());
+    const Run js = run(std::string("ratio ") + kGood + " --format json", "FV_TEST_FORCE_STATUS=non_finite");
+    CHECK(js.code == 3);
+    const auto j = nlohmann::json::parse(js.out);
+    CHECK(j["status"] == "non_finite");
+    CHECK(j["r_x"].is_null());
+
+    // The rigid model goes through the same door.
+    const Run rig = run("ratio --model rigid --zeta 0.5 --theta 0 --format json", kForceNotConverged);
+    CHECK(rig.code == 3);
+    CHECK(nlohmann::json::parse(rig.out)["status"] == "not_converged");
+
+    // A misspelt hook is a usage error, not a silent pass.
+    const Run bad = run(std::string("ratio ") + kGood, "FV_TEST_FORCE_STATUS=not_convergd");
+    CHECK(bad.code == 2);
+    CHECK(bad.out.empty());
+}
+
+TEST_CASE("CLI status: sweep writes every row with a status column and exits 3 if any failed",
+          "[cli][status]") {
+    const std::string out = scratch_dir() + "/status-sweep.csv";
+    std::remove(out.c_str());
+    const Run r = run("sweep --zeta 0:0.4:3 --theta 0,90 --rdisp 2 --i 0,1 --out " + out,
+                      "FV_TEST_FORCE_STATUS=not_converged@0.2");
+    CHECK(r.code == 3);
+    CHECK(r.out.empty());
+    const auto rows = parse_csv(slurp(out));
+    REQUIRE(rows.size() == 3 * 2 * 2);
+    int failed = 0;
+    for (const auto& row : rows) {
+        CAPTURE(row.at("zeta"));
+        const bool at = field(row, "zeta") == Approx(0.2);
+        CHECK(row.at("status") == (at ? "not_converged" : "ok"));
+        CHECK(!row.at("r_x").empty()); // failed rows keep their best values
+        failed += at;
+    }
+    CHECK(failed == 4);
+    // One line per failed row, then the count.
+    CHECK(lines(r.err) == 5);
+    CHECK(r.err.find("failed: not_converged at zeta=0.2 theta=90 deg rdisp=2 i=1") != std::string::npos);
+    CHECK(r.err.find("numerical failure: 4 of 12 rows failed (not_converged 4)") != std::string::npos);
+
+    // JSON rows carry "status" too; non-finite values are null.
+    const Run js = run("sweep --zeta 0:0.4:3 --theta 90 --rdisp 2 --i 1 --format json",
+                       "FV_TEST_FORCE_STATUS=non_finite@0.4");
+    CHECK(js.code == 3);
+    const auto arr = nlohmann::json::parse(js.out);
+    REQUIRE(arr.size() == 3);
+    CHECK(arr[0]["status"] == "ok");
+    CHECK(arr[1]["status"] == "ok");
+    CHECK(arr[2]["status"] == "non_finite");
+    CHECK(arr[2]["r_x"].is_null());
+    CHECK(arr[1]["r_x"].is_number());
+
+    // Many failures: a few lines and how many more, not one line per row.
+    const Run many = run("sweep --model rigid --zeta 0:1:40 --theta 0,90", kForceNotConverged);
+    CHECK(many.code == 3);
+    CHECK(parse_csv(many.out).size() == 80);
+    CHECK(lines(many.err) == 12);
+    CHECK(many.err.find("... and 70 more failed") != std::string::npos);
+    CHECK(many.err.find("80 of 80 rows failed") != std::string::npos);
+}
+
+TEST_CASE("CLI status: trace writes the period and exits 3 when its steady state failed", "[cli][status]") {
+    const Run r = run("trace --zeta 0.3 --theta 60 --rdisp 2 --i 1", kForceNotConverged);
+    CHECK(r.code == 3);
+    CHECK(parse_csv(r.out).size() == 1024);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find("not_converged") != std::string::npos);
+    const Run js = run("trace --zeta 0.3 --theta 60 --rdisp 2 --i 1 --format json", kForceNotConverged);
+    CHECK(js.code == 3);
+    CHECK(nlohmann::json::parse(js.out)["status"] == "not_converged");
+}
+
+TEST_CASE("CLI status: render writes every figure, names the failed points and exits 3",
+          "[cli][status][render]") {
+    const std::string dir = scratch_dir() + "/status-render";
+    REQUIRE(std::system(("mkdir -p " + dir + " && rm -f " + dir + "/*").c_str()) == 0);
+    const Run r = run("render --figure fig5,fig15 --size 400x300 --out " + dir,
+                      "FV_TEST_FORCE_STATUS=not_converged@0.5");
+    CHECK(r.code == 3);
+    for (const char* f : {"/fig5.png", "/fig5.csv", "/fig15.png", "/fig15.csv"}) {
+        CAPTURE(f);
+        CHECK(::access((dir + f).c_str(), F_OK) == 0);
+    }
+    const auto rows = parse_csv(slurp(dir + "/fig5.csv"));
+    REQUIRE(!rows.empty());
+    int failed = 0;
+    for (const auto& row : rows) failed += row.at("status") == "not_converged";
+    CHECK(failed == 5); // five angles at zeta = 0.5
+    CHECK(r.err.find("fig5: failed: not_converged at zeta=0.5") != std::string::npos);
+    CHECK(r.err.find("numerical failure: 1 of 2 figures have failed points (fig5: 5 of") !=
+          std::string::npos);
+    CHECK(r.err.find("fig15") == std::string::npos);
+
+    // Without failures the same figures exit 0, every ratio row ok.
+    const Run good = run("render --figure fig5 --size 400x300 --out " + dir);
+    CHECK(good.code == 0);
+    for (const auto& row : parse_csv(slurp(dir + "/fig5.csv"))) CHECK(row.at("status") == "ok");
+}
+
+TEST_CASE("CLI status: fit exits 3 when its model evaluations failed, output written", "[cli][status][fit]") {
+    const std::string out = scratch_dir() + "/status-fit.json";
+    std::remove(out.c_str());
+    const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
+    const Run r = run("fit --data " + data + " --i 0 --format json --out " + out, kForceNotConverged);
+    CHECK(r.code == 3);
+    const auto j = nlohmann::json::parse(slurp(out));
+    CHECK(j["status"] == "not_converged");
+    CHECK(j["best"]["unsteady"].get<int>() > 0);
+    CHECK(lines(r.err) == 1);
+    CHECK(r.err.find("fit: not_converged (i = 0: ") != std::string::npos);
+    const Run ok = run("fit --data " + data + " --i 0 --format json");
+    CHECK(ok.code == 0);
+    CHECK(nlohmann::json::parse(ok.out)["status"] == "ok");
+    const Run txt = run("fit --data " + data + " --i 0");
+    CHECK(txt.code == 0);
+    CHECK(report_line(txt.out, "status ") == "status        ok");
 }

@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "test_hook.hpp"
 
 #include "fv/fit.hpp"
 #include "fv/measurements.hpp"
@@ -51,6 +52,32 @@ nlohmann::json json_of(const FitCandidate& c, const MeasurementSet& data) {
     return j;
 }
 
+// Whether the fit's model evaluations are results the solver vouches for: ok; non_finite when a model value
+// or r_disp is not a finite number; not_converged when some evaluation did not reach its steady state
+// (FitCandidate::unsteady). `why` says which, for the report and the stderr line.
+SteadyStatus fit_status(const FitResult& r, std::string& why) {
+    SteadyStatus st = SteadyStatus::converged;
+    why.clear();
+    for (const FitCandidate& c : r.candidates) {
+        bool finite = std::isfinite(c.rdisp);
+        for (double m : c.model) finite = finite && std::isfinite(m);
+        char buf[160];
+        if (!finite) {
+            std::snprintf(buf, sizeof buf, "i = %g: a model value or r_disp is not a finite number", c.i);
+            st = SteadyStatus::non_finite;
+        } else if (c.unsteady > 0) {
+            std::snprintf(buf, sizeof buf,
+                          "i = %g: %d of %d model evaluations did not reach the steady state", c.i,
+                          c.unsteady, c.evaluations);
+            if (st == SteadyStatus::converged) st = SteadyStatus::not_converged;
+        } else {
+            continue;
+        }
+        why += (why.empty() ? "" : "; ") + std::string(buf);
+    }
+    return st;
+}
+
 std::string fmt(const char* f, double a, double b = 0, double c = 0) {
     char buf[256];
     std::snprintf(buf, sizeof buf, f, a, b, c);
@@ -77,6 +104,9 @@ std::string text_of(const FitResult& r, const MeasurementSet& data, const std::o
     for (std::size_t k = 0; k < data.points.size(); ++k)
         s += fmt("%6.0f  %8.4f  %8.5f", data.points[k].line, data.points[k].zeta, data.points[k].rx) +
              fmt("  %8.5f  %+8.5f\n", b.model[k], b.residuals[k]);
+    std::string why;
+    const SteadyStatus st = fit_status(r, why);
+    s += std::string("\nstatus        ") + to_string(st) + (ok(st) ? "" : " (" + why + ")") + "\n";
     return s;
 }
 
@@ -129,9 +159,13 @@ Command add_fit_command(CLI::App& root) {
                 } catch (const FitError& e) {
                     throw UsageError(e.what());
                 }
+                apply_test_hook(r);
+                std::string why;
+                const SteadyStatus st = fit_status(r, why);
                 std::string content;
                 if (a->format == "json") {
-                    nlohmann::json j{{"file", data.file}, {"best", json_of(r.best, data)}};
+                    nlohmann::json j{
+                        {"file", data.file}, {"status", to_string(st)}, {"best", json_of(r.best, data)}};
                     j["candidates"] = nlohmann::json::array();
                     for (const FitCandidate& c : r.candidates) j["candidates"].push_back(json_of(c, data));
                     content = j.dump(2) + "\n";
@@ -139,12 +173,8 @@ Command add_fit_command(CLI::App& root) {
                     content = text_of(r, data, fo.theta_deg);
                 }
                 deliver(content, a->out);
-                for (const FitCandidate& c : r.candidates)
-                    if (c.unsteady > 0)
-                        std::fprintf(stderr,
-                                     "frictionviz: warning: %d model evaluations (i = %g) did not reach the "
-                                     "steady state; their error may exceed 1e-5\n",
-                                     c.unsteady, c.i);
+                // Written with its status; a fit on model values the solver does not vouch for exits 3.
+                if (!ok(st)) throw NumericalFailure(std::string("fit: ") + to_string(st) + " (" + why + ")");
             }};
 }
 

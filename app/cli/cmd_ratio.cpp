@@ -3,6 +3,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "test_hook.hpp"
 
 #include <memory>
 
@@ -37,9 +38,11 @@ Command add_ratio_command(CLI::App& root) {
                     row.params.rdisp = std::numeric_limits<double>::quiet_NaN();
                     row.params.i = std::numeric_limits<double>::quiet_NaN();
                 }
+                apply_test_hook(row);
                 const Format f = parse_format(a->format);
                 deliver(f == Format::text ? ratio_text(row, v) : ratio_table({row}, f, v), a->out);
-                warn_if_unsteady(row);
+                // Written with its status; the exit status says it is not a result (3).
+                if (!ok(status_of(row))) throw NumericalFailure(describe_failure(row));
             }};
 }
 

@@ -3,6 +3,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "test_hook.hpp"
 
 #include "figures/render_session.hpp"
 
@@ -13,10 +14,11 @@
 #include "fv/measurements.hpp"
 
 #include "fv/gfx/png.hpp"
-#include <optional>
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace fv::cli {
@@ -45,12 +47,58 @@ CLI::Validator size_spec() {
         "WxH");
 }
 
-std::string csv_of(const TableData& t) {
+// statuses_known: false for the map's grid, whose rows do not keep the solver's status (status empty).
+std::string csv_of(const TableData& t, bool statuses_known) {
     if (!t.text.empty()) return t.text;
-    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
+    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv, {}, statuses_known);
     SweepPoint row;
     row.result.period = t.trace;
     return trace_table(row, Format::csv);
+}
+
+// The numerical failures behind one figure, as far as its data show them: ratio rows carry the solver's
+// status; trace tables and the map's grid carry only numbers (FigureData keeps no status for them), so
+// there only values that are not finite can be seen. Prints one stderr line per failure (at most a few
+// rows per table) and returns a one-line summary, empty when nothing failed.
+std::string check_figure(const FigureData& fig, bool statuses_known, const FitResult* fit) {
+    std::vector<std::string> what;
+    for (const TableData& t : fig.tables) {
+        const std::string name = fig.id + t.suffix;
+        if (!t.ratios.empty() && statuses_known) {
+            if (const Failures f = failures_of(t.ratios); f.count > 0) {
+                print_failures(t.ratios, name + ": ", 5);
+                what.push_back(name + ": " + std::to_string(f.count) + " of " +
+                               std::to_string(t.ratios.size()) + " points (" + f.by_reason + ")");
+            }
+        } else if (!t.ratios.empty()) {
+            int bad = 0;
+            for (const SweepPoint& r : t.ratios) bad += !std::isfinite(r.result.rx);
+            if (bad > 0) {
+                std::fprintf(stderr, "frictionviz: %s: failed: non_finite: %d grid values of r_x\n",
+                             name.c_str(), bad);
+                what.push_back(name + ": " + std::to_string(bad) + " of " + std::to_string(t.ratios.size()) +
+                               " points (non_finite " + std::to_string(bad) + ")");
+            }
+        } else if (!t.trace.empty() && !all_finite(t.trace)) {
+            std::fprintf(stderr,
+                         "frictionviz: %s: failed: non_finite: the steady period has values that are "
+                         "not finite numbers\n",
+                         name.c_str());
+            what.push_back(name + ": the steady period (non_finite)");
+        }
+    }
+    if (fit)
+        for (const FitCandidate& c : fit->candidates)
+            if (c.unsteady > 0) {
+                std::fprintf(stderr,
+                             "frictionviz: %s: failed: not_converged: %d of %d model evaluations (i = %g) "
+                             "did not reach the steady state\n",
+                             fig.id.c_str(), c.unsteady, c.evaluations, c.i);
+                what.push_back(fig.id + ": " + std::to_string(c.unsteady) + " model evaluations of the fit");
+            }
+    std::string s;
+    for (const std::string& w : what) s += (s.empty() ? "" : "; ") + w;
+    return s;
 }
 
 } // namespace
@@ -133,6 +181,7 @@ Command add_render_command(CLI::App& root) {
                 check_out(dir + "/" + (specs.empty() ? std::string("fig19") : specs.front().id) + ".png");
                 // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
                 std::optional<FigureData> fig19;
+                FitResult fig19_fit;
                 if (data_fig) {
                     const UnitArgs& u = a->model.units;
                     ReadOptions ro;
@@ -141,7 +190,7 @@ Command add_render_command(CLI::App& root) {
                     if (*u.frequency_opt) ro.frequency_khz = u.frequency;
                     if (cmd->get_option("--theta")->count()) fo.theta_deg = a->model.theta_deg;
                     try {
-                        fig19 = measurement_figure(read_measurements(a->data, ro), fo);
+                        fig19 = measurement_figure(read_measurements(a->data, ro), fo, &fig19_fit);
                     } catch (const DataError& e) {
                         throw UsageError(e.what());
                     } catch (const FitError& e) {
@@ -170,12 +219,25 @@ Command add_render_command(CLI::App& root) {
                 };
                 std::vector<Output> outs;
                 std::vector<FigureData> figures;
-                for (const FigureSpec& spec : specs) figures.push_back(compute_figure(spec));
-                if (fig19) figures.push_back(std::move(*fig19));
-                for (const FigureData& data : figures) {
+                std::vector<char> statuses_known; // per figure: false for the map (see check_figure)
+                for (const FigureSpec& spec : specs) {
+                    figures.push_back(compute_figure(spec));
+                    statuses_known.push_back(spec.kind != FigureKind::map);
+                }
+                if (fig19) {
+                    figures.push_back(std::move(*fig19));
+                    statuses_known.push_back(true);
+                    apply_test_hook(fig19_fit);
+                }
+                for (std::size_t k = 0; k < figures.size(); ++k)
+                    if (statuses_known[k])
+                        for (TableData& t : figures[k].tables) apply_test_hook(t.ratios);
+                for (std::size_t k = 0; k < figures.size(); ++k) {
+                    const FigureData& data = figures[k];
                     Output o{data.id, session->render_figure(data), {}};
                     for (const TableData& t : data.tables)
-                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t)});
+                        o.csv.push_back(
+                            {dir + "/" + data.id + t.suffix + ".csv", csv_of(t, statuses_known[k] != 0)});
                     outs.push_back(std::move(o));
                 }
                 std::vector<std::string> errors(outs.size());
@@ -194,6 +256,22 @@ Command add_render_command(CLI::App& root) {
                     std::printf("wrote %s/%s.png (%dx%d) and its CSV\n", dir.c_str(), outs[k].id.c_str(),
                                 outs[k].image.width, outs[k].image.height);
                 }
+                std::fflush(stdout);
+                // Every figure is written; those with failed points make the exit status 3.
+                std::string failed;
+                int nfailed = 0;
+                for (std::size_t k = 0; k < figures.size(); ++k) {
+                    const bool is_fit = data_fig && k + 1 == figures.size();
+                    const std::string w =
+                        check_figure(figures[k], statuses_known[k] != 0, is_fit ? &fig19_fit : nullptr);
+                    if (w.empty()) continue;
+                    ++nfailed;
+                    failed += (failed.empty() ? "" : "; ") + w;
+                }
+                if (nfailed > 0)
+                    throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(figures.size()) +
+                                           " figures have failed points (" + failed +
+                                           "); all figures are written");
             }};
 }
 

@@ -3,6 +3,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "test_hook.hpp"
 
 #include "fv/sweep.hpp"
 
@@ -63,10 +64,17 @@ Command add_sweep_command(CLI::App& root) {
                 std::vector<double> thetas;
                 for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
                 const SteadyOptions o = solver_options(a->solver);
-                const auto rows =
+                auto rows =
                     sweep(model, linspace(z.from, z.to, z.count), thetas, rdisps, a->i, o, a->threads);
+                apply_test_hook(rows);
                 deliver(ratio_table(rows, parse_format(a->format), v), a->out);
-                for (const auto& r : rows) warn_if_unsteady(r);
+                // Every row is written, failed ones with their reason in the status column; then exit 3.
+                if (const Failures f = failures_of(rows); f.count > 0) {
+                    print_failures(rows);
+                    throw NumericalFailure(std::to_string(f.count) + " of " + std::to_string(rows.size()) +
+                                           " rows failed (" + f.by_reason +
+                                           "); all rows are in the output, each with its status");
+                }
             }};
 }
 

@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "test_hook.hpp"
 
 #include <memory>
 
@@ -31,8 +32,14 @@ Command add_trace_command(CLI::App& root) {
                 SteadyOptions o = steady_options(a->model);
                 o.record_period = true;
                 row.result = steady_ratio(Model::dahl, row.params, o);
+                if (ok(row.result.status) && !all_finite(row.result.period))
+                    row.result.status = SteadyStatus::non_finite;
+                apply_test_hook(row);
                 deliver(trace_table(row, parse_format(a->format)), a->out);
-                warn_if_unsteady(row);
+                // The period is written all the same; it is not the steady state the solver vouches for.
+                if (!ok(status_of(row)))
+                    throw NumericalFailure("the steady state behind the trace failed: " +
+                                           describe_failure(row));
             }};
 }
 

@@ -1,4 +1,4 @@
-// The two ways a command can fail, mapped to exit codes in one place (main.cpp).
+// The ways a command can fail, mapped to exit codes in one place (run_cli.cpp).
 #pragma once
 
 #include <stdexcept>
@@ -15,7 +15,15 @@ struct RuntimeFailure : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+// The computation ran but a result is not one the solver vouches for (a steady state not reached, the
+// integrator gave up, a value that is not a finite number): exit code 3. Thrown only after the output,
+// with each result's status, has been written; what() is one line naming the reason.
+struct NumericalFailure : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
 inline constexpr int kExitUsage = 2;
 inline constexpr int kExitFailure = 1;
+inline constexpr int kExitNumerical = 3;
 
 } // namespace fv::cli

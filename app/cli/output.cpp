@@ -37,7 +37,33 @@ double theta_deg(const Params& p) {
     return std::strtod(buf, nullptr);
 }
 
-nlohmann::json json_of(const SweepPoint& r) {
+// The r_x, r_y cells: empty when not a finite number (a failed row), never "nan" or "inf".
+std::string ratio_num(double v) {
+    return std::isfinite(v) ? num(v) : "";
+}
+
+// What a failure status means, for the text report and the stderr line.
+std::string reason_of(const SweepPoint& r) {
+    const SteadyResult& res = r.result;
+    char buf[200];
+    switch (status_of(r)) {
+    case SteadyStatus::converged:
+        return "";
+    case SteadyStatus::not_converged:
+        std::snprintf(buf, sizeof buf, "steady state not reached after %d periods; error estimate %.2e",
+                      res.periods, res.error_estimate);
+        return buf;
+    case SteadyStatus::integration_failed:
+        std::snprintf(buf, sizeof buf, "the integrator could not continue, after %d periods", res.periods);
+        return buf;
+    case SteadyStatus::non_finite:
+        return ok(res.status) ? "r_x or r_y is not a finite number"
+                              : "a value that is not a finite number came up";
+    }
+    return "";
+}
+
+nlohmann::json json_of(const SweepPoint& r, bool status_known = true) {
     return {{"model", to_string(r.model)},
             {"i", jnum(r.params.i)},
             {"theta_deg", jnum(theta_deg(r.params))},
@@ -47,7 +73,7 @@ nlohmann::json json_of(const SweepPoint& r) {
             {"r_y", jnum(r.result.ry)},
             {"periods", r.result.periods},
             {"error_estimate", jnum(r.result.error_estimate)},
-            {"status", to_string(r.result.status)},
+            {"status", status_known ? nlohmann::json(to_string(status_of(r))) : nlohmann::json(nullptr)},
             {"scheme", r.model == Model::dahl ? to_string(r.result.scheme) : "quadrature"},
             {"steps_per_period", r.result.steps_per_period},
             {"extrapolated_levels", r.result.levels}};
@@ -69,29 +95,37 @@ double zss_of(const SweepPoint& r, const Vibration& v) {
 
 } // namespace
 
+SteadyStatus status_of(const SweepPoint& r) {
+    if (!ok(r.result.status)) return r.result.status;
+    if (!std::isfinite(r.result.rx) || !std::isfinite(r.result.ry)) return SteadyStatus::non_finite;
+    return SteadyStatus::converged;
+}
+
 Format parse_format(const std::string& s) {
     if (s == "csv") return Format::csv;
     if (s == "json") return Format::json;
     return Format::text;
 }
 
-std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& vib) {
+std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& vib,
+                        bool statuses_known) {
     if (f == Format::json) {
         nlohmann::json arr = nlohmann::json::array();
         for (const auto& r : rows) {
-            nlohmann::json j = json_of(r);
+            nlohmann::json j = json_of(r, statuses_known);
             if (has_vb(vib)) j["vb_m_s"] = jnum(vb_of(r, vib));
             if (vib.amplitude_um) j["zss_um"] = jnum(zss_of(r, vib));
             arr.push_back(j);
         }
         return (rows.size() == 1 ? arr[0] : arr).dump(2) + "\n";
     }
-    std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate";
+    std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status";
     s += std::string(has_vb(vib) ? ",vb_m_s" : "") + (vib.amplitude_um ? ",zss_um" : "") + "\n";
     for (const auto& r : rows) {
         s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
-             num(r.params.rdisp) + "," + num(r.params.zeta) + "," + num(r.result.rx) + "," +
-             num(r.result.ry) + "," + std::to_string(r.result.periods) + "," + num(r.result.error_estimate);
+             num(r.params.rdisp) + "," + num(r.params.zeta) + "," + ratio_num(r.result.rx) + "," +
+             ratio_num(r.result.ry) + "," + std::to_string(r.result.periods) + "," +
+             num(r.result.error_estimate) + "," + (statuses_known ? to_string(status_of(r)) : "");
         if (has_vb(vib)) s += "," + num(vb_of(r, vib));
         if (vib.amplitude_um) s += "," + num(zss_of(r, vib));
         s += "\n";
@@ -155,7 +189,17 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
     }
     std::snprintf(buf, sizeof buf, "error est.    %.2e\n", res.error_estimate);
     s += buf;
+    const SteadyStatus st = status_of(r);
+    s += std::string("status        ") + to_string(st) + (ok(st) ? "" : " (" + reason_of(r) + ")") + "\n";
     return s;
+}
+
+bool all_finite(const std::vector<Sample>& period) {
+    for (const Sample& x : period)
+        if (!std::isfinite(x.tau) || !x.P.allFinite() || !x.T.allFinite() || !std::isfinite(x.z) ||
+            !x.F.allFinite())
+            return false;
+    return true;
 }
 
 std::string trace_table(const SweepPoint& row, Format f) {
@@ -201,14 +245,42 @@ void deliver(const std::string& content, const std::string& out) {
     if (auto why = write_file_atomic(out, content); !why.empty()) throw RuntimeFailure(why);
 }
 
-void warn_if_unsteady(const SweepPoint& row) {
-    if (row.model != Model::dahl || row.result.status == SteadyStatus::converged) return;
-    std::fprintf(
-        stderr,
-        "frictionviz: warning: steady state not reached for zeta=%g theta=%g rdisp=%g i=%g after %d periods; "
-        "error estimate %.2e\n",
-        row.params.zeta, theta_deg(row.params), row.params.rdisp, row.params.i, row.result.periods,
-        row.result.error_estimate);
+std::string describe_failure(const SweepPoint& r) {
+    std::string s = std::string(to_string(status_of(r))) + " at zeta=" + num(r.params.zeta) +
+                    " theta=" + num(theta_deg(r.params)) + " deg";
+    if (r.model == Model::dahl)
+        s += " rdisp=" + num(r.params.rdisp) + " i=" + num(r.params.i);
+    else
+        s += " (rigid model)";
+    return s + " (" + reason_of(r) + ")";
+}
+
+Failures failures_of(const std::vector<SweepPoint>& rows) {
+    Failures f;
+    for (const SteadyStatus st :
+         {SteadyStatus::not_converged, SteadyStatus::integration_failed, SteadyStatus::non_finite}) {
+        int n = 0;
+        for (const auto& r : rows) n += status_of(r) == st;
+        if (n == 0) continue;
+        f.count += n;
+        f.by_reason +=
+            (f.by_reason.empty() ? "" : ", ") + std::string(to_string(st)) + " " + std::to_string(n);
+    }
+    return f;
+}
+
+void print_failures(const std::vector<SweepPoint>& rows, const std::string& prefix, int max_lines) {
+    int shown = 0, more = 0;
+    for (const auto& r : rows) {
+        if (ok(status_of(r))) continue;
+        if (shown < max_lines) {
+            std::fprintf(stderr, "frictionviz: %sfailed: %s\n", prefix.c_str(), describe_failure(r).c_str());
+            ++shown;
+        } else {
+            ++more;
+        }
+    }
+    if (more > 0) std::fprintf(stderr, "frictionviz: %s... and %d more failed\n", prefix.c_str(), more);
 }
 
 } // namespace fv::cli

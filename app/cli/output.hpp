@@ -21,12 +21,23 @@ struct Vibration {
     std::optional<double> amplitude_um, frequency_khz;
 };
 
-// Columns of ratio and sweep output: model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate, then
-// vb_m_s (amplitude and frequency known) and zss_um (amplitude known; empty for the rigid model). JSON has
-// the same keys (zss_um null for the rigid model).
-std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& v = {});
-// Human-readable report of one point (with amplitude, frequency, v_v, v_b, z_ss as far as `v` gives them).
+// The status a row is reported with: the solver's, or non_finite when it vouches for an r_x or r_y that is
+// not a finite number. Only SteadyStatus::converged (shown "ok") is a result; see fv::to_string.
+SteadyStatus status_of(const SweepPoint& row);
+
+// Columns of ratio and sweep output: model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,
+// then vb_m_s (amplitude and frequency known) and zss_um (amplitude known; empty for the rigid model).
+// status is `ok` or the reason (not_converged, integration_failed, non_finite); a failed row keeps its best
+// values, r_x and r_y are empty when not finite. JSON has the same keys (null where CSV is empty).
+// statuses_known = false (rows whose producer did not keep the solver's status): the status is empty/null.
+std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& v = {},
+                        bool statuses_known = true);
+// Human-readable report of one point (with amplitude, frequency, v_v, v_b, z_ss as far as `v` gives them),
+// ending with "status        ok" or the reason and what it means.
 std::string ratio_text(const SweepPoint& row, const Vibration& v = {});
+
+// True when every number of every sample is finite.
+bool all_finite(const std::vector<Sample>& period);
 
 // Columns tau,Px,Py,Tx,Ty,z,Fx,Fy of one steady-state period.
 std::string trace_table(const SweepPoint& row, Format f);
@@ -37,7 +48,19 @@ void deliver(const std::string& content, const std::string& out);
 // Validates an --out target before any work is done (UsageError naming the flag).
 void check_out(const std::string& out, const char* flag = "--out");
 
-// One line on stderr when a steady state was not reached, so it is never silently passed off.
-void warn_if_unsteady(const SweepPoint& row);
+// What went wrong with a failed row, one line without a newline: "not_converged at zeta=0.3 theta=45 deg
+// rdisp=2 i=1 (steady state not reached after 4000 periods; error estimate 1.2e-03)".
+std::string describe_failure(const SweepPoint& row);
+
+// The failed rows (status_of not ok) of a table, counted per reason.
+struct Failures {
+    int count = 0;
+    std::string by_reason; // "not_converged 3, non_finite 1"
+};
+Failures failures_of(const std::vector<SweepPoint>& rows);
+
+// One stderr line per failed row, "frictionviz: <prefix>failed: <describe_failure>", at most max_lines of
+// them and then one line saying how many more there are.
+void print_failures(const std::vector<SweepPoint>& rows, const std::string& prefix = "", int max_lines = 10);
 
 } // namespace fv::cli

@@ -17,14 +17,28 @@
 
 namespace fv::cli {
 
+namespace {
+
+// The footer of --help and of every SUBCOMMAND --help.
+constexpr const char* kExitStatusHelp =
+    "Exit status: 0 success; 1 runtime failure (e.g. a file could not be written); 2 usage error (a\n"
+    "one-line message naming the flag and the allowed range; nothing is written); 3 numerical failure:\n"
+    "a result the solver does not vouch for (steady state not reached, integration failed, or a value\n"
+    "that is not finite). With 3 the output is still written, every result with its status (`ok` or the\n"
+    "reason: not_converged, integration_failed, non_finite), and stderr names what failed.";
+
+} // namespace
+
 int run_cli(int argc, char** argv, const RunOptions& options) {
     CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)",
                  "frictionviz"};
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
     app.require_subcommand(0, 1);
+    app.footer(kExitStatusHelp);
     const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app),
                                         add_trace_command(app), add_render_command(app),
                                         add_gui_command(app),   add_fit_command(app)};
+    for (const auto& c : commands) c.app->footer(kExitStatusHelp);
     // CLI11 would report an unknown subcommand as a missing one; name it instead.
     if (argc > 1 && argv[1][0] != '-') {
         bool known = false;
@@ -67,6 +81,10 @@ int run_cli(int argc, char** argv, const RunOptions& options) {
     } catch (const UsageError& e) {
         std::fprintf(stderr, "frictionviz: %s\n", e.what());
         return kExitUsage;
+    } catch (const NumericalFailure& e) {
+        // The output is written; this line says what in it is not to be trusted.
+        std::fprintf(stderr, "frictionviz: numerical failure: %s\n", e.what());
+        return kExitNumerical;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "frictionviz: error: %s\n", e.what());
         return kExitFailure;

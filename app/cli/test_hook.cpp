@@ -1,0 +1,71 @@
+#include "test_hook.hpp"
+
+#include "errors.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <optional>
+#include <string>
+
+namespace fv::cli {
+namespace {
+
+struct Forced {
+    SteadyStatus status = SteadyStatus::converged;
+    std::optional<double> zeta;
+};
+
+// Read on every call: cheap next to any steady state, and no state to go stale.
+std::optional<Forced> forced() {
+    const char* env = std::getenv("FV_TEST_FORCE_STATUS");
+    if (!env || !*env) return std::nullopt;
+    const std::string v = env;
+    const std::size_t at = v.find('@');
+    const std::string reason = v.substr(0, at);
+    Forced f;
+    if (reason == "not_converged")
+        f.status = SteadyStatus::not_converged;
+    else if (reason == "integration_failed")
+        f.status = SteadyStatus::integration_failed;
+    else if (reason == "non_finite")
+        f.status = SteadyStatus::non_finite;
+    else
+        throw UsageError("FV_TEST_FORCE_STATUS: unknown reason '" + reason +
+                         "'; allowed: not_converged, integration_failed, non_finite");
+    if (at != std::string::npos) {
+        const std::string z = v.substr(at + 1);
+        char* end = nullptr;
+        const double zeta = std::strtod(z.c_str(), &end);
+        if (z.empty() || *end || !std::isfinite(zeta))
+            throw UsageError("FV_TEST_FORCE_STATUS: '" + z + "' after '@' is not a number (zeta)");
+        f.zeta = zeta;
+    }
+    return f;
+}
+
+void apply(const Forced& f, SweepPoint& row) {
+    if (f.zeta && !(std::abs(row.params.zeta - *f.zeta) <= 1e-9)) return;
+    row.result.status = f.status;
+    if (f.status == SteadyStatus::non_finite)
+        row.result.rx = row.result.ry = std::numeric_limits<double>::quiet_NaN();
+}
+
+} // namespace
+
+void apply_test_hook(SweepPoint& row) {
+    if (const auto f = forced()) apply(*f, row);
+}
+
+void apply_test_hook(std::vector<SweepPoint>& rows) {
+    if (const auto f = forced())
+        for (SweepPoint& r : rows) apply(*f, r);
+}
+
+void apply_test_hook(FitResult& fit) {
+    if (!forced()) return;
+    for (FitCandidate& c : fit.candidates) c.unsteady = c.evaluations;
+    fit.best.unsteady = fit.best.evaluations;
+}
+
+} // namespace fv::cli
