@@ -7,6 +7,8 @@
 namespace fv::solver {
 namespace {
 
+constexpr double kMinStick = 1e-9;
+
 // Smallest t in (0, T] where the cubic q(t) = g0 + g1 t + g2 t^2/2 + g3 t^3/6 (g3 > 0) reaches 0 from below,
 // or T when it stays negative on (0, T]. q(0) = g0 <= 0.
 double cubic_first_root(double g0, double g1, double g2, double g3, double T) {
@@ -74,6 +76,16 @@ std::optional<double> stick_slip_time(const LagModel& m, double tau_a, Vec2 l_a,
         if (t >= T) return std::nullopt;
         // Converged onto the root (the bound is tight to third order there).
         if (t <= 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau))) return tau + t;
+        if (t < kMinStick && g0 > -1e-12) {
+            // On the circle to rounding while the body barely moves (P' ~ 0): the bound creeps. Step on by
+            // kMinStick and slip there if the tip is outside by then: at most kMinStick late, which moves
+            // the mean force by far less than rounding.
+            const double tn = std::min(T, kMinStick);
+            const Vec2 ln = l_a + r * m.dispP(tau_a, tau + tn);
+            if (ln.squaredNorm() >= 1 && ln.dot(m.dP(tau + tn)) > 0) return tau + tn;
+            tau += tn;
+            continue;
+        }
         tau += t;
     }
     return tau;

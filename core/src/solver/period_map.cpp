@@ -153,20 +153,28 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             RadauStep<N> se;
             bool have_se = false;
             for (int it = 0; it < 6 && he > 1e-13 * (1 + std::abs(tau)); ++it) {
-                se = radau_step<N>(pb, tau, y, he, rq.atol, &st, rq.sensitivity, false);
-                if (!se.solved) break;
+                RadauStep<N> trial = radau_step<N>(pb, tau, y, he, rq.atol, &st, rq.sensitivity, false);
+                if (!trial.solved) break;
+                se = trial;
                 have_se = true;
                 const double ge = evs[hit].sign * g(hit, tau + he, se.y1());
                 if (ge <= 0 || !(slope < 0) || he >= h_cap) break;
                 he = std::min(h_cap, he + 1.5 * ge / -slope + 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
             }
-            if (he > 1e-13 * (1 + std::abs(tau))) {
-                if (!have_se || !se.solved) { // shorter than a step just accepted: not expected
-                    out.ok = false;
-                    out.failure = "step to an event failed";
-                    res.how = StepEnd::failed;
-                    return res;
+            if (!have_se && he > 1e-13 * (1 + std::abs(tau))) {
+                // The stage equations of the shorter step did not converge (a singular law next to the circle
+                // for i < 1): the accepted step's collocation polynomial stands in, order 3 at the event.
+                se = st;
+                se.h = he;
+                const double cs[3] = {RadauTableau::c1 * best, RadauTableau::c2 * best, best};
+                for (int j = 0; j < 3; ++j) {
+                    se.z[j] = st.at(cs[j]) - y;
+                    se.fz[j] = pb.f(tau + cs[j] * hh, Vec(y + se.z[j]));
                 }
+                se.dy1_dy0_minus_i = st.dy1_dy0_minus_i * best; // first order in the fraction of the step
+                have_se = true;
+            }
+            if (he > 1e-13 * (1 + std::abs(tau))) {
                 ++out.steps;
                 double qerr_e = 0;
                 on_step(se, step_integral<N>(se, [&](const Vec& v) { return pb.force(v); },
