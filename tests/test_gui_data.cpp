@@ -179,6 +179,36 @@ TEST_CASE("app ratio plot: measured points with error bars, faded at another ang
     for (const SeriesData& s : q.series) CHECK(s.label.find("measured") == std::string::npos);
 }
 
+TEST_CASE("app ratio plot: a failed steady state is marked NOT VERIFIED, failed curve points are gaps",
+          "[gui][status]") {
+    RatioCurves c;
+    c.request.params = Params{0.5, kPi / 2, 2, 1};
+    c.zetas = {0.1, 0.5, 1};
+    c.model_rx = {0.2, std::nan(""), 0.8}; // as the worker leaves a failed point
+    c.model_failed = 1;
+    c.rigid_rx = {0.1, 0.4, 0.7};
+    c.current.rx = 0.45;
+    c.current.status = SteadyStatus::not_converged;
+    PanelData p = ratio_panel_live(c, false);
+    CHECK(p.title.find("NOT VERIFIED: not_converged") != std::string::npos);
+    REQUIRE(!p.series.empty());
+    CHECK(p.series[0].label.find("1 failed points not drawn") != std::string::npos);
+    CHECK(std::isnan(p.series[0].y[1]));
+    REQUIRE(p.points.size() == 1);
+    CHECK(p.points[0].mark == Mark::cross);
+    // A converged result that is not a finite number is not verified either.
+    c.current.status = SteadyStatus::converged;
+    c.current.ry = std::nan("");
+    CHECK(shown_status(c.current) == SteadyStatus::non_finite);
+    CHECK(ratio_panel_live(c, false).title.find("NOT VERIFIED: non_finite") != std::string::npos);
+    // Verified: no badge, the diamond.
+    c.current.ry = 0;
+    c.model_failed = 0;
+    p = ratio_panel_live(c, false);
+    CHECK(p.title.find("NOT VERIFIED") == std::string::npos);
+    CHECK(p.points[0].mark == Mark::diamond);
+}
+
 TEST_CASE("ratio_zeta_grid reaches zeta_max past 3 in at most 40 more increasing steps", "[gui][data]") {
     const std::vector<double> base = ratio_zeta_grid();
     CHECK(base.back() == Approx(3));

@@ -134,6 +134,21 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (curves) {
         ImGui::Text("Steady state%s  r_x %.5f   r_y %.5f", busy ? "…" : "", curves->current.rx,
                     curves->current.ry);
+        // Values the solver does not vouch for get a badge beside them (on the next line if it does not fit).
+        if (const SteadyStatus st = shown_status(curves->current); !ok(st)) {
+            char badge[64];
+            std::snprintf(badge, sizeof badge, "NOT VERIFIED: %s", to_string(st));
+            ImGui::SameLine();
+            if (ImGui::GetContentRegionAvail().x < ImGui::CalcTextSize(badge).x) ImGui::NewLine();
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.1f, 1.0f), "%s", badge);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("The solver does not vouch for r_x, r_y here (%s); frictionviz ratio exits "
+                                  "with status 3 for these parameters.",
+                                  to_string(st));
+        }
+        if (curves->model_failed > 0)
+            ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.1f, 1.0f), "r_x(ζ): %d points failed, not drawn",
+                               curves->model_failed);
         if (curves->request.model == Model::dahl)
             ImGui::Text(curves->current.status == SteadyStatus::converged
                             ? "reached in %d periods, error est. %.1e"

@@ -133,8 +133,9 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         panel.series.push_back(hline("period mean of F_{x} = " + format_number("%.4f", mean.x()), t0, t1,
                                      mean.x(), Ink::black, Dash::dashed));
     if (curves && curves->request.params.zeta == sim.params().zeta)
-        panel.series.push_back(hline("steady r_{x} = " + format_number("%.4f", curves->current.rx), t0, t1,
-                                     curves->current.rx, Ink::rigid, Dash::dotted));
+        panel.series.push_back(hline("steady r_{x} = " + format_number("%.4f", curves->current.rx) +
+                                         (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
+                                     t0, t1, curves->current.rx, Ink::rigid, Dash::dotted));
     return panel;
 }
 
@@ -174,17 +175,24 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
         return panel;
     }
     const Params& p = curves->request.params;
+    const SteadyStatus st = shown_status(curves->current);
     panel.title = std::string(busy ? "updating…  " : "") +
                   "r_{x} = " + format_number("%.4f", curves->current.rx) +
-                  ",  r_{y} = " + format_number("%.4f", curves->current.ry);
+                  ",  r_{y} = " + format_number("%.4f", curves->current.ry) +
+                  (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
     if (!curves->model_rx.empty())
         panel.series.push_back(
-            {"Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp),
+            {"Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp) +
+                 (curves->model_failed > 0
+                      ? " (" + std::to_string(curves->model_failed) + " failed points not drawn)"
+                      : ""),
              curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(
         {"rigid", curves->zetas, curves->rigid_rx, Ink::rigid, Dash::dashed, Mark::none, 1.8f});
     add_data(p.theta * 180 / kPi);
-    panel.points.push_back({Vec2(p.zeta, curves->current.rx), Ink::tip, Mark::diamond, "", 12});
+    // The current point: a cross instead of the diamond when the solver does not vouch for it.
+    panel.points.push_back(
+        {Vec2(p.zeta, curves->current.rx), Ink::tip, ok(st) ? Mark::diamond : Mark::cross, "", 12});
     return panel;
 }
 

@@ -5,6 +5,8 @@
 #include "fv/rigid.hpp"
 #include "fv/sweep.hpp"
 
+#include <cmath>
+
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -73,7 +75,12 @@ void RatioWorker::run() {
             if (req.model == Model::dahl) {
                 const auto rows = sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp},
                                         {req.params.i}, {}, 1);
-                for (const auto& r : rows) out.model_rx.push_back(r.result.rx);
+                // A failed point is not drawn as if it were valid: NaN leaves a gap in the curve.
+                for (const auto& r : rows) {
+                    const bool good = ok(shown_status(r.result));
+                    out.model_rx.push_back(good ? r.result.rx : std::nan(""));
+                    out.model_failed += !good;
+                }
             }
             aborted = outdated();
         }

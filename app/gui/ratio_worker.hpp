@@ -7,6 +7,7 @@
 #include "fv/steady_state.hpp"
 
 #include <atomic>
+#include <cmath>
 #include <condition_variable>
 #include <cstdint>
 #include <mutex>
@@ -28,9 +29,18 @@ struct RatioRequest {
     }
 };
 
+// The status a result is shown with: the solver's, or non_finite when it vouches for an r_x or r_y that is
+// not a finite number (as the command line reports it). Only SteadyStatus::converged is a verified value.
+inline SteadyStatus shown_status(const SteadyResult& r) {
+    if (!ok(r.status)) return r.status;
+    return std::isfinite(r.rx) && std::isfinite(r.ry) ? SteadyStatus::converged : SteadyStatus::non_finite;
+}
+
 struct RatioCurves {
     RatioRequest request;
-    std::vector<double> zetas, model_rx, rigid_rx; // model_rx empty for the rigid model
+    std::vector<double> zetas, model_rx, rigid_rx; // model_rx empty for the rigid model; NaN where the
+                                                   // point failed (a gap in the drawn curve)
+    int model_failed = 0;                          // points of model_rx that failed (shown_status not ok)
     SteadyResult current;                          // the steady state at request.params
     std::optional<PanelData> map;                  // the map panel when asked for
 };
