@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace fv::solver {
@@ -138,12 +139,16 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                     hit = j;
                 }
             }
+#ifdef FV_SOLVER_TRACE
+            std::fprintf(stderr, "  event: tau=%.9f hh=%.3e s_lo=%g s_hi=%g best=%.12g hit=%d\n", tau, hh, s_lo, s_hi, best, hit);
+#endif
             // Retake the step to end at the event. The collocation polynomial locates it to its own accuracy
             // (order 3); the retaken step is order 5 and may still be a hair on the old side. Secant
             // corrections of its length put it on the new side, so that the next phase starts where its law
             // holds (else it would switch back at once).
             double he = best * hh;
-            const double h_cap = s_hi * hh;
+            // No further than a hair past the located root, and never past another event.
+            const double h_cap = std::min(s_hi, best + 0.01) * hh;
             const double slope = [&] {
                 const double d = std::min(1e-3, best);
                 const double g1 = evs[hit].sign * g(hit, tau + best * hh, st.at(best));
@@ -159,6 +164,10 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 have_se = true;
                 const double ge = evs[hit].sign * g(hit, tau + he, se.y1());
                 if (ge <= 0 || !(slope < 0) || he >= h_cap) break;
+                bool other = false;
+                for (int j = 0; j < n_ev; ++j)
+                    if (j != hit && evs[j].sign * g(j, tau + he, se.y1()) < -evs[j].noise) other = true;
+                if (other) break;
                 he = std::min(h_cap, he + 1.5 * ge / -slope + 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
             }
             if (!have_se && he > 1e-13 * (1 + std::abs(tau))) {
@@ -187,6 +196,10 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             return res;
         }
         ++out.steps;
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "  step tau=%.9f h=%.3e err=%.2e qerr=%.2e g0(start)=%.3e g0(end)=%.3e\n", tau, hh, st.error, qerr,
+                     g(0, tau, y), g(0, tau + hh, st.y1()));
+#endif
         on_step(st, integral);
         tau += hh;
         y = st.y1();

@@ -189,6 +189,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     bool have_prev_delta = false;
     double best = std::numeric_limits<double>::infinity();
     int stalled = 0;
+    int circle_retries = 0;
     auto stalled_at_noise = [&](double corr) {
         // Small corrections that stop shrinking (by 2x within 3 tries) are rounding and integration noise.
         if (corr < 0.5 * best) {
@@ -249,7 +250,12 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         }
 
         if (start == Phase::circle) {
-            if (pr.end != Phase::circle) {
+            // For i > 1 the state never gets back to the circle once it leaves, but a period that leaves it
+            // only briefly ends just inside: the steady state may still be on the circle at an angle
+            // where v never turns negative. Newton on the angle first (a few times), the plane after.
+            const bool near_circle = p.i > 1 && circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3;
+            if (pr.end != Phase::circle && near_circle) ++circle_retries;
+            if (pr.end != Phase::circle && !near_circle) {
                 // The period leaves the circle and ends inside: the steady state does not start on the
                 // circle. Continue in the plane from where this period ended.
                 l0 = pr.l_end;
@@ -260,17 +266,26 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             // Residual and derivative in the arc a = angle / r (x_v units): a well-conditioned scalar
             // equation for every r. The circle map contracts (DPhi = exp(-int v) <= 1 on the circle), so
             // plain Newton steps are safe; the largest is capped at a radian.
-            const Vec2 d = r * pr.dL;
+            const Vec2 d = r * pr.dL; // l_end - l0
             const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
             const double arc = dphi / r;
-            const Vec2 le = pr.l_end;
-            const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) - 1;
+            const Vec2 le = pr.l_end / pr.l_end.norm();
+            const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
             double da = std::abs(J) > 0 ? -arc / J : -arc;
             if (!std::isfinite(da)) da = -arc;
             double step = r * da; // radians = force units
             if (std::abs(step) > 1) step = std::copysign(1.0, step);
             ++sol.newton_steps;
             dist = std::abs(step);
+            if ((dist <= tol_newton || stalled_at_noise(dist)) && pr.end != Phase::circle) {
+                // The best angle still leaves the circle: the steady state is inside, next to it.
+                l0 = pr.l_end;
+                circle_retries = 8;
+                ++sol.plain_steps;
+                ref.valid = false;
+                best = std::numeric_limits<double>::infinity();
+                continue;
+            }
             if (dist <= tol_newton || stalled_at_noise(dist)) {
                 converged = true; // at the noise floor: the error estimate below decides
                 sol.on_circle = true;
@@ -340,6 +355,15 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         Vec2 dl = lambda * r * ref.delta;
         const double n = dl.norm();
         if (n > 1) dl /= n;
+        // A step out of the disc is cut to go at most halfway to the circle: projecting onto the circle
+        // would start the next period in another law (the circle's), and near a fixed point just inside
+        // the circle (i > 1) the iteration would cycle between the two.
+        const double R = 1 - 0.5 * (1 - std::min(1.0, l0.norm()));
+        if ((l0 + dl).norm() > R && dl.squaredNorm() > 0) {
+            const double a = dl.squaredNorm(), b = 2 * l0.dot(dl), c = l0.squaredNorm() - R * R;
+            const double t = (-b + std::sqrt(std::max(0.0, b * b - 4 * a * c))) / (2 * a);
+            dl *= std::clamp(t, 0.0, 1.0);
+        }
         l0 = l0 + dl;
         if (l0.norm() > 1) l0 /= l0.norm();
     }
