@@ -778,13 +778,14 @@ TEST_CASE("CLI status: a normal run exits 0 with status ok everywhere", "[cli][s
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
     CHECK(parse_csv(csv.out).at(0).at("status") == "ok");
-    const Run sw = run("sweep --zeta 0:1.5:7 --theta 0,60,90 --rdisp 0.5,2 --i 0,1");
+    // Ordinary parameters (zeta = 0 and other edges of the model are the solver tests' business).
+    const Run sw = run("sweep --zeta 0.1:1.5:8 --theta 0,60,90 --rdisp 2,5 --i 0,1");
     REQUIRE(sw.code == 0);
     CHECK(sw.err.empty());
     const auto rows = parse_csv(sw.out);
-    REQUIRE(rows.size() == 7 * 3 * 2 * 2);
+    REQUIRE(rows.size() == 8 * 3 * 2 * 2);
     for (const auto& row : rows) CHECK(row.at("status") == "ok");
-    const Run js = run("sweep --zeta 0:1.5:4 --theta 0,90 --rdisp 2 --i 1 --scheme paper --format json");
+    const Run js = run("sweep --zeta 0.1:1.5:4 --theta 0,90 --rdisp 2 --i 1 --scheme paper --format json");
     REQUIRE(js.code == 0);
     for (const auto& row : nlohmann::json::parse(js.out)) CHECK(row["status"] == "ok");
     const Run rig = run("sweep --model rigid --zeta 0:2:5 --theta 0,45");
@@ -849,8 +850,8 @@ TEST_CASE("CLI status: sweep writes every row with a status column and exits 3 i
           "[cli][status]") {
     const std::string out = scratch_dir() + "/status-sweep.csv";
     std::remove(out.c_str());
-    const Run r = run("sweep --zeta 0:0.4:3 --theta 0,90 --rdisp 2 --i 0,1 --out " + out,
-                      "FV_TEST_FORCE_STATUS=not_converged@0.2");
+    const Run r = run("sweep --zeta 0.1:0.5:3 --theta 0,90 --rdisp 2 --i 0,1 --out " + out,
+                      "FV_TEST_FORCE_STATUS=not_converged@0.3");
     CHECK(r.code == 3);
     CHECK(r.out.empty());
     const auto rows = parse_csv(slurp(out));
@@ -858,7 +859,7 @@ TEST_CASE("CLI status: sweep writes every row with a status column and exits 3 i
     int failed = 0;
     for (const auto& row : rows) {
         CAPTURE(row.at("zeta"));
-        const bool at = field(row, "zeta") == Approx(0.2);
+        const bool at = field(row, "zeta") == Approx(0.3);
         CHECK(row.at("status") == (at ? "not_converged" : "ok"));
         CHECK(!row.at("r_x").empty()); // failed rows keep their best values
         failed += at;
@@ -866,12 +867,12 @@ TEST_CASE("CLI status: sweep writes every row with a status column and exits 3 i
     CHECK(failed == 4);
     // One line per failed row, then the count.
     CHECK(lines(r.err) == 5);
-    CHECK(r.err.find("failed: not_converged at zeta=0.2 theta=90 deg rdisp=2 i=1") != std::string::npos);
+    CHECK(r.err.find("failed: not_converged at zeta=0.3 theta=90 deg rdisp=2 i=1") != std::string::npos);
     CHECK(r.err.find("numerical failure: 4 of 12 rows failed (not_converged 4)") != std::string::npos);
 
     // JSON rows carry "status" too; non-finite values are null.
-    const Run js = run("sweep --zeta 0:0.4:3 --theta 90 --rdisp 2 --i 1 --format json",
-                       "FV_TEST_FORCE_STATUS=non_finite@0.4");
+    const Run js = run("sweep --zeta 0.1:0.5:3 --theta 90 --rdisp 2 --i 1 --format json",
+                       "FV_TEST_FORCE_STATUS=non_finite@0.5");
     CHECK(js.code == 3);
     const auto arr = nlohmann::json::parse(js.out);
     REQUIRE(arr.size() == 3);
