@@ -62,6 +62,7 @@ std::optional<double> stick_slip_time(const LagModel& m, double tau_a, Vec2 l_a,
         }
     }
     const double g3 = 2 * r * (3 * r * (1 + m.zeta) + 1); // bound on |g'''| inside the disc
+    double creep = kMinStick;
     for (int it = 0; it < 1000000; ++it) {
         const Vec2 l = l_a + r * m.dispP(tau_a, tau);
         const Vec2 w = r * m.dP(tau);
@@ -76,17 +77,19 @@ std::optional<double> stick_slip_time(const LagModel& m, double tau_a, Vec2 l_a,
         if (t >= T) return std::nullopt;
         // Converged onto the root (the bound is tight to third order there).
         if (t <= 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau))) return tau + t;
-        if (t < kMinStick && g0 > -1e-12) {
+        if (t < creep && g0 > -1e-12) {
             // On the circle to rounding while the body barely moves (P' ~ 0): the bound creeps. Step on by
-            // kMinStick and slip there if the tip is outside by then: at most kMinStick late, which moves
-            // the mean force by far less than rounding.
-            const double tn = std::min(T, kMinStick);
+            // `creep` (doubling while this lasts) and slip there if the tip is outside by then: late by less
+            // than a creep step, while the body moves by ~|P'| times that, which is what makes it creep.
+            const double tn = std::min(T, creep);
+            creep *= 2;
             const Vec2 ln = l_a + r * m.dispP(tau_a, tau + tn);
             if (ln.squaredNorm() >= 1 && ln.dot(m.dP(tau + tn)) > 0) return tau + tn;
             tau += tn;
             continue;
         }
         tau += t;
+        creep = kMinStick;
     }
     return tau;
 }

@@ -5,6 +5,7 @@
 #include "fv/ode_solver.hpp"
 
 #include <Eigen/LU>
+#include <Eigen/SVD>
 
 #include <algorithm>
 #include <cstdio>
@@ -136,8 +137,10 @@ Vec2 start_force(const LagModel& m, const OdeOptions& opt) {
     }
     if (m.i == 0 && m.r <= 1 && m.zeta < 1) return lens_center(m);
     if (m.i > 0 && m.r < 0.1) return Vec2(small_amplitude_rho(m), 0);
+    // Along P'(0); where the body momentarily stands still at tau = 0 (zeta = 1, theta = 180 deg), along
+    // its mean velocity e_x.
     const Vec2 dp = m.dP(0);
-    return dp.norm() > 0 ? Vec2(dp / dp.norm()) : Vec2(1, 0);
+    return dp.norm() > 1e-6 * (1 + m.zeta) ? Vec2(dp / dp.norm()) : Vec2(1, 0);
 }
 
 } // namespace
@@ -150,17 +153,19 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     const double r = p.rdisp;
     if (p.zeta == 0 && p.i == 0 && r <= 1) return lens_solution(p, m, opt);
 
+    // The solver aims at 0.3 tol and accepts its result when the error estimate is within tol.
     const double tol = opt.tolerance;
+    const double aim = 0.3 * tol;
     // Local tolerance of the displacements (x_v): force errors are r times larger for r > 1; for r < 1 the
     // fixed-point equation L(2 pi) - L(0) = 0 needs the displacements themselves. Radau IIA's error estimate
     // is of lower order than the method: measured over whole periods, a local tolerance a gives mean-force
     // errors ~1e-3 a and end-state errors ~1e-2 a, so (like RADAU5, which uses 0.1 tol^(2/3)) the local
     // tolerance is looser than the target; the separate estimate below checks the outcome.
     PeriodRequest rq;
-    rq.atol = 0.1 * std::pow(tol, 2.0 / 3.0) / std::max(1.0, r);
-    rq.atol_force = 0.3 * tol; // per unit time: the period mean's quadrature error stays below 0.3 tol
+    rq.atol = 0.1 * std::pow(aim, 2.0 / 3.0) / std::max(1.0, r);
+    rq.atol_force = 0.3 * aim; // per unit time: the period mean's quadrature error stays below ~0.3 aim
     rq.sensitivity = true;
-    const double tol_newton = 0.1 * tol; // force units
+    const double tol_newton = 0.1 * aim; // force units
 
     OdeSolution sol;
     SteadyResult& res = sol.result;
@@ -197,7 +202,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             stalled = 0;
             return false;
         }
-        return corr <= 1e3 * tol && ++stalled >= 3;
+        return corr <= 1e3 * aim && ++stalled >= 3;
     };
 
     for (int iter = 0; iter < 100; ++iter) {
@@ -223,6 +228,13 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         last = pr;
         last_l0 = l0;
         have_last = true;
+        if (pr.dL.norm() <= 1e-14 * (1 + l0.norm() / r)) {
+            // Back where it started, to rounding (e.g. zeta = 0 with i = 0: the tip reaches the circle just
+            // at the period's end): a fixed point whatever the law at the section.
+            converged = true;
+            dist = r * pr.dL.norm();
+            break;
+        }
 
         if (p.i == 0 && !pr.visited_circle) {
             // Stuck for the whole period: the map is a translation by 2 pi zeta e_x (DPhi = I, no Newton).
@@ -271,12 +283,15 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             const double arc = dphi / r;
             const Vec2 le = pr.l_end / pr.l_end.norm();
             const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
-            double da = std::abs(J) > 0 ? -arc / J : -arc;
+            // |J| ~ 0: the angle does not contract over this period (v ~ 0 all along): a plain step, which
+            // says nothing about the distance to the fixed point.
+            const bool flat = !(std::abs(J) > 1e-12);
+            double da = flat ? -arc : -arc / J;
             if (!std::isfinite(da)) da = -arc;
             double step = r * da; // radians = force units
             if (std::abs(step) > 1) step = std::copysign(1.0, step);
             ++sol.newton_steps;
-            dist = std::abs(step);
+            dist = flat ? std::numeric_limits<double>::infinity() : std::abs(step);
             if ((dist <= tol_newton || stalled_at_noise(dist)) && pr.end != Phase::circle) {
                 // The best angle still leaves the circle: the steady state is inside, next to it.
                 l0 = pr.l_end;
@@ -302,7 +317,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         const double det = J.determinant();
         const double scale = J.cwiseAbs().maxCoeff();
         const bool singular = !(std::abs(det) > 1e-13 * scale * scale) || !std::isfinite(det);
-        if (ref.valid && !singular) {
+        if (ref.valid) {
             // Natural monotonicity test of the trial point against the reference point.
             const Vec2 simplified = -ref.Jinv * F;
             if (!(simplified.norm() <= (1 - lambda / 4) * ref.delta.norm())) {
@@ -321,16 +336,23 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             }
             lambda = std::min(1.0, 2 * lambda);
         }
+        // A rank-deficient F' (the period passes the circle twice and forgets both directions, or the tip
+        // is stuck: F' = 0) gets the pseudo-inverse for its range and a plain step for the rest.
+        Eigen::Matrix2d Jinv;
         if (singular) {
-            // Phi ~ a translation or a rank-deficient map: one plain period.
-            l0 = pr.l_end;
-            ref.valid = false;
+            const Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+            const Vec2 sv = svd.singularValues();
+            Eigen::Matrix2d Sinv = Eigen::Matrix2d::Zero();
+            for (int k = 0; k < 2; ++k)
+                if (sv[k] > 1e-9 * std::max(sv[0], 1e-300)) Sinv(k, k) = 1 / sv[k];
+            Jinv = svd.matrixV() * Sinv * svd.matrixU().transpose();
             ++sol.plain_steps;
-            continue;
+        } else {
+            Jinv = J.inverse();
+            ++sol.newton_steps;
         }
-        const Eigen::Matrix2d Jinv = J.inverse();
-        const Vec2 delta = -Jinv * F;
-        ++sol.newton_steps;
+        Vec2 delta = -Jinv * F;
+        if (singular) delta += F + J * delta; // the part of F that F' cannot see: a plain step
         // A Newton step that converges only linearly (a degenerate fixed point, e.g. i > 1 next to the
         // circle) is accelerated by Aitken's rule: successive steps in one direction, shrinking by q, sum to
         // step / (1 - q); the distance to the fixed point is the same sum.
