@@ -68,7 +68,7 @@ struct OdeSolution {
 // SteadyResult fields: rx, ry from the last period integrated (it starts at OdeSolution::lag);
 // periods = total_periods = periods integrated (Newton's and the error estimate's, not the skipped ones);
 // steps_per_period = accepted steps of the last period; levels = 1; steady_error = estimated effect on r of
-// the distance to L*; error_estimate = steady_error + integration error (+ the 1e-10 pinning allowance).
+// the distance to L*; error_estimate = steady_error + integration error (+ the 1e-12 pinning allowance).
 // zeta = 0 with i = 0 and rdisp <= 1: the steady state is not unique (the tip never slips); the result is the
 // limit zeta -> 0+ in closed form (docs/model.md).
 OdeSolution ode_solve(const Params& p, const OdeOptions& opt = {});
@@ -77,9 +77,8 @@ SteadyResult ode_steady(const Params& p, const OdeOptions& opt = {});
 // The ODE options that carry out SteadyOptions (tolerance, warm start, recording).
 OdeOptions ode_options(const SteadyOptions& opt);
 
-// Sweep over zeta for every theta x rdisp x i (zeta fastest, like fv::sweep): each family (theta, rdisp, i)
-// runs on one thread, its zeta values in the given order, each warm-started from its neighbour's L* (and
-// started afresh when the warm start does not converge, so a row never depends on its neighbours).
+// Sweep over zeta for every theta x rdisp x i (zeta fastest, like fv::sweep), all points in parallel, each
+// from its own cold start: every row equals ode_steady at its parameters, whatever the grid.
 std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const std::vector<double>& thetas,
                                        const std::vector<double>& rdisps, const std::vector<double>& is,
                                        const OdeOptions& opt = {}, int threads = 0);

@@ -26,7 +26,7 @@ inline constexpr double kTwoPi = 2 * kPi;
 // Where an interior state counts as being on the circle (i > 0): 1 - rho <= kPin. Pinning there changes
 // |F| by at most kPin, and turns the approach to the circle (finite-time but non-Lipschitz for i < 1,
 // exponential for i = 1, algebraic for i > 1) into the exact pursuit motion it tends to.
-inline constexpr double kPin = 1e-10;
+inline constexpr double kPin = 1e-12;
 
 struct LagModel {
     explicit LagModel(const Params& p)

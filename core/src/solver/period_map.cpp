@@ -218,7 +218,7 @@ Phase classify(const LagModel& m, double tau, Vec2& l) {
     const double rho = l.norm();
     if (rho > 1) l /= rho;
     const double v = l.dot(m.dP(tau));
-    const double on = m.i == 0 ? 1 - 1e-13 : 1 - kPin;
+    const double on = m.i == 0 ? 1 - 1e-11 : 1 - kPin;
     if (rho >= on && v > 0) {
         l /= l.norm();
         return Phase::circle;

@@ -195,14 +195,21 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     double best = std::numeric_limits<double>::infinity();
     int stalled = 0;
     int circle_retries = 0;
-    auto stalled_at_noise = [&](double corr) {
+    double prev_corr = std::numeric_limits<double>::infinity();
+    auto stalled_at_noise = [&](double& corr) {
         // Small corrections that stop shrinking (by 2x within 3 tries) are rounding and integration noise.
+        // Unless they shrink steadily (a slow linear rate q, which noise does not show): then the distance
+        // is corr / (1 - q), and with q near 1 the search is not done.
+        const double q = prev_corr > 0 ? corr / prev_corr : 1;
+        prev_corr = corr;
         if (corr < 0.5 * best) {
             best = corr;
             stalled = 0;
             return false;
         }
-        return corr <= 1e3 * aim && ++stalled >= 3;
+        if (!(corr <= 1e3 * aim && ++stalled >= 3)) return false;
+        if (q < 1) corr /= 1 - std::min(q, 0.999);
+        return true;
     };
 
     for (int iter = 0; iter < 100; ++iter) {
@@ -228,12 +235,19 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         last = pr;
         last_l0 = l0;
         have_last = true;
-        if (pr.dL.norm() <= 1e-14 * (1 + l0.norm() / r)) {
-            // Back where it started, to rounding (e.g. zeta = 0 with i = 0: the tip reaches the circle just
-            // at the period's end): a fixed point whatever the law at the section.
-            converged = true;
-            dist = r * pr.dL.norm();
-            break;
+        if (pr.dL.norm() <= 64 * std::numeric_limits<double>::epsilon() * (1 + kTwoPi * (1 + p.zeta))) {
+            // Back where it started, to the rounding of a period's displacements (e.g. zeta = 0 with i = 0:
+            // the tip reaches the circle just at the period's end), whatever the law at the section. The
+            // distance is that residual through F' (pseudo-inverse): where F' is nearly singular too (a
+            // degenerate fixed point, i > 1 next to the circle) this is no evidence, and the search goes on.
+            const Eigen::JacobiSVD<Eigen::Matrix2d> svd(pr.E);
+            const double smin = svd.singularValues()[1], smax = svd.singularValues()[0];
+            const double d = smax > 0 && smin > 1e-9 * smax ? r * pr.dL.norm() / smin : r * pr.dL.norm();
+            if (smax == 0 || smin > 1e-9 * smax || d <= tol_newton) {
+                converged = true;
+                dist = d;
+                break;
+            }
         }
 
         if (p.i == 0 && !pr.visited_circle) {
@@ -462,21 +476,16 @@ std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const s
                     sp.params = {z, th, r, i};
                     pts.push_back(sp);
                 }
-    const int families = static_cast<int>(thetas.size() * rdisps.size() * is.size());
-    const std::size_t nz = zetas.size();
+    // Every point from its own cold start: a row never depends on its neighbours or on the grid it is in
+    // (a warm start can sit next to a degenerate fixed point of another law), and cold starts from the
+    // nearby limits cost about what warm starts did.
     OdeOptions o = opt;
     o.record_period = false;
     parallel_for(
-        families,
-        [&](int f) {
-            OdeOptions of = o;
-            for (std::size_t k = 0; k < nz; ++k) {
-                SweepPoint& sp = pts[static_cast<std::size_t>(f) * nz + k];
-                OdeSolution s = ode_solve(sp.params, of);
-                if (!ok(s.result.status) && of.initial_lag != o.initial_lag) s = ode_solve(sp.params, o);
-                sp.result = std::move(s.result);
-                of.initial_lag = ok(sp.result.status) ? s.lag : o.initial_lag;
-            }
+        static_cast<int>(pts.size()),
+        [&](int k) {
+            SweepPoint& sp = pts[static_cast<std::size_t>(k)];
+            sp.result = ode_solve(sp.params, o).result;
         },
         threads);
     return pts;
