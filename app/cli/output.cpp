@@ -50,11 +50,13 @@ std::string reason_of(const SweepPoint& r) {
     case SteadyStatus::converged:
         return "";
     case SteadyStatus::not_converged:
-        std::snprintf(buf, sizeof buf, "steady state not reached after %d periods; error estimate %.2e",
-                      res.periods, res.error_estimate);
+        std::snprintf(buf, sizeof buf, "steady state not verified after %d periods: %s; error estimate %.2e",
+                      res.periods, res.detail.empty() ? "the search did not settle" : res.detail.c_str(),
+                      res.error_estimate);
         return buf;
     case SteadyStatus::integration_failed:
-        std::snprintf(buf, sizeof buf, "the integrator could not continue, after %d periods", res.periods);
+        std::snprintf(buf, sizeof buf, "the integrator could not continue after %d periods: %s", res.periods,
+                      res.detail.empty() ? "no reason given" : res.detail.c_str());
         return buf;
     case SteadyStatus::non_finite:
         return ok(res.status) ? "r_x or r_y is not a finite number"
@@ -167,11 +169,17 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
     std::snprintf(buf, sizeof buf, "r_x           %.9f\nr_y           %.9f\n", shown(res.rx), shown(res.ry));
     s += buf;
     if (r.model == Model::dahl && res.scheme == Scheme::ode) {
-        std::snprintf(
-            buf, sizeof buf,
-            "steady state  %s after %d periods (continuous-time solver: dtau -> 0 limit of the scheme, "
-            "events located, Newton)\n",
-            res.status == SteadyStatus::converged ? "reached" : "NOT reached", res.periods);
+        // What the search did, not a claim about convergence speed (docs/model.md, "The periodic steady
+        // state").
+        std::snprintf(buf, sizeof buf,
+                      "search        %d periods integrated: %d Newton updates (%s), %d plain periods, %ld stuck "
+                      "periods skipped in closed form\n",
+                      res.periods, res.newton_steps, res.on_circle ? "on the circle's angle" : "in the plane",
+                      res.plain_steps, res.periods_skipped);
+        s += buf;
+        std::snprintf(buf, sizeof buf,
+                      "steady period %d law changes, %d Radau IIA steps (dtau -> 0 limit of the scheme)\n",
+                      res.events_per_period, res.steps_per_period);
         s += buf;
     } else if (r.model == Model::dahl) {
         if (res.levels > 1)

@@ -58,6 +58,13 @@ struct SteadyResult {
     double steady_error = 0;    // the steady-state part of it
     int steps_per_period = 0;   // finest resolution used
     int levels = 1;             // resolutions combined by Richardson extrapolation
+    // What the continuous-time search did (Scheme::ode only): updates on the circle's angle or in the plane,
+    // plain periods, whole stuck periods skipped in closed form, law changes in the steady period, whether the
+    // steady period starts on the circle, and in words what stopped it when the status is not converged.
+    int newton_steps = 0, plain_steps = 0, events_per_period = 0;
+    long periods_skipped = 0;
+    bool on_circle = false;
+    std::string detail;
     std::vector<Sample> period; // last steady period at n0 = default_steps_per_period (or the N asked for),
                                 // samples k = 1..n of Eq. (30)
 };

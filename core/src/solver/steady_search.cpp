@@ -195,6 +195,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     double best = std::numeric_limits<double>::infinity();
     int stalled = 0;
     int circle_retries = 0;
+    bool allow_snap = true;
     double prev_corr = std::numeric_limits<double>::infinity();
     auto stalled_at_noise = [&](double& corr) {
         // Small corrections that stop shrinking (by 2x within 3 tries) are rounding and integration noise.
@@ -276,10 +277,10 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         }
 
         if (start == Phase::circle) {
-            // For i > 1 the state never gets back to the circle once it leaves, but a period that leaves it
-            // only briefly ends just inside: the steady state may still be on the circle at an angle
-            // where v never turns negative. Newton on the angle first (a few times), the plane after.
-            const bool near_circle = p.i > 1 && circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3;
+            // A period that leaves the circle only briefly ends just inside (for i >= 1 the state never
+            // gets back exactly): the steady state may still be on the circle at an angle where v never
+            // turns negative. Newton on the angle first (a few times), the plane after.
+            const bool near_circle = p.i > 0 && circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3;
             if (pr.end != Phase::circle && near_circle) ++circle_retries;
             if (pr.end != Phase::circle && !near_circle) {
                 // The period leaves the circle and ends inside: the steady state does not start on the
@@ -310,6 +311,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
                 // The best angle still leaves the circle: the steady state is inside, next to it.
                 l0 = pr.l_end;
                 circle_retries = 8;
+                allow_snap = false;
                 ++sol.plain_steps;
                 ref.valid = false;
                 best = std::numeric_limits<double>::infinity();
@@ -402,6 +404,13 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         }
         l0 = l0 + dl;
         if (l0.norm() > 1) l0 /= l0.norm();
+        // Within 1e-6 of the circle and slipping outwards (i > 0): the steady state is on the circle or
+        // the approach to it is too flat for the plane's Newton (exponential for i = 1, algebraic for
+        // i > 1, with the pinning switching laws in between): search on the circle's angle instead.
+        if (allow_snap && p.i > 0 && l0.norm() > 1 - 1e-6 && l0.dot(m.dP(0)) > 0) {
+            l0 /= l0.norm();
+            ref.valid = false;
+        }
     }
     if (!have_last) {
         res.status = SteadyStatus::integration_failed;
@@ -445,6 +454,12 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     }
     if (!std::isfinite(res.rx) || !std::isfinite(res.ry)) res.status = SteadyStatus::non_finite;
     sol.failure = failure;
+    res.newton_steps = sol.newton_steps;
+    res.plain_steps = sol.plain_steps;
+    res.periods_skipped = sol.periods_skipped;
+    res.events_per_period = sol.events_per_period;
+    res.on_circle = sol.on_circle;
+    res.detail = failure;
     if (opt.record_period) {
         // The same period again, now with samples and events (same tolerance, same start: same result).
         PeriodRequest rec{0.25 * rq.atol, 0.25 * rq.atol_force, false}; // as the reported run
