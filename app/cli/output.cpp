@@ -171,14 +171,16 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
     if (r.model == Model::dahl && res.scheme == Scheme::ode) {
         // What the search did, not a claim about convergence speed (docs/model.md, "The periodic steady
         // state").
+        auto count = [](long n, const char* one, const char* many) {
+            return std::to_string(n) + " " + (n == 1 ? one : many);
+        };
+        s += "search        " + count(res.periods, "period", "periods") + " integrated: " +
+             count(res.newton_steps, "Newton update", "Newton updates") +
+             (res.on_circle ? " on the circle's angle, " : " in the plane, ") +
+             count(res.plain_steps, "plain period", "plain periods") + ", " +
+             count(res.periods_skipped, "stuck period", "stuck periods") + " skipped in closed form\n";
         std::snprintf(buf, sizeof buf,
-                      "search        %d periods integrated: %d Newton updates (%s), %d plain periods, %ld stuck "
-                      "periods skipped in closed form\n",
-                      res.periods, res.newton_steps, res.on_circle ? "on the circle's angle" : "in the plane",
-                      res.plain_steps, res.periods_skipped);
-        s += buf;
-        std::snprintf(buf, sizeof buf,
-                      "steady period %d law changes, %d Radau IIA steps (dtau -> 0 limit of the scheme)\n",
+                      "steady period %d law changes, %d Radau IIA steps (the dtau -> 0 limit of the scheme)\n",
                       res.events_per_period, res.steps_per_period);
         s += buf;
     } else if (r.model == Model::dahl) {

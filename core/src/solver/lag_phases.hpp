@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <limits>
 #include <optional>
 
 namespace fv::solver {
@@ -33,12 +34,33 @@ struct LagModel {
         : zeta(p.zeta), cth(std::cos(p.theta)), sth(std::sin(p.theta)), r(p.rdisp), zss(p.zss()), i(p.i) {}
     double zeta, cth, sth, r, zss, i;
 
+  private:
+    static constexpr int kCache = 8;
+    static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+    mutable double cache_tau_[kCache] = {kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN, kNaN};
+    mutable double cache_cos_[kCache] = {};
+    mutable int next_ = 0;
+
+  public:
+
     Vec2 u() const { return {cth, sth}; } // vibration direction
     // Eqs. (28)-(29) divided by x_v, their derivatives (Eq. (1) divided by v_v).
     Vec2 P(double tau) const { return {zeta * tau + std::sin(tau) * cth, std::sin(tau) * sth}; }
     Vec2 dP(double tau) const {
-        const double c = std::cos(tau);
+        const double c = cos_of(tau);
         return {zeta + c * cth, c * sth};
+    }
+    // cos(tau), remembered for the last few instants: a Radau step evaluates the law, its Jacobian and the
+    // event functions at the same few instants many times (one LagModel per solve: no sharing between
+    // threads).
+    double cos_of(double tau) const {
+        for (int k = 0; k < kCache; ++k)
+            if (cache_tau_[k] == tau) return cache_cos_[k];
+        const double c = std::cos(tau);
+        next_ = (next_ + 1) % kCache;
+        cache_tau_[next_] = tau;
+        cache_cos_[next_] = c;
+        return c;
     }
     Vec2 ddP(double tau) const {
         const double s = std::sin(tau);

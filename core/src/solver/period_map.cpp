@@ -50,7 +50,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                              PeriodResult& out) {
     using Vec = typename RadauStep<N>::Vec;
     constexpr double kMaxStep = 0.5;
-    constexpr int kProbes = 8; // dense-output probes per step for sign changes of the event functions
+    constexpr int kProbes = 4; // dense-output probes per step for sign changes of the event functions
     RadauStep<N> prev;
     bool have_prev = false;
     bool after_reject = true;

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Runs every example command of README.md and compares its output with the text printed under it.
+# An example is a fenced block whose line starts with "$ frictionviz "; the lines after it, up to the
+# block's end, are the expected standard output (exactly). Usage: readme_examples.sh FRICTIONVIZ README.md
+set -uo pipefail
+exe=$1
+readme=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+count=0
+failed=0
+in_block=0
+cmd=""
+: >"$work/expected"
+run_example() {
+    [ -n "$cmd" ] || return 0
+    count=$((count + 1))
+    # The command as written, with the program's path for "frictionviz" (arguments are plain words).
+    read -r -a argv <<<"${cmd#frictionviz }"
+    "$exe" "${argv[@]}" >"$work/actual" 2>"$work/stderr"
+    local code=$?
+    if ! cmp -s "$work/expected" "$work/actual"; then
+        failed=$((failed + 1))
+        echo "README example differs: \$ $cmd (exit $code)"
+        diff "$work/expected" "$work/actual" | head -20
+        cat "$work/stderr"
+    fi
+    cmd=""
+    : >"$work/expected"
+}
+
+while IFS= read -r line || [ -n "$line" ]; do
+    if [[ $line == '```'* ]]; then
+        if [ $in_block = 1 ]; then
+            run_example
+            in_block=0
+        else
+            in_block=1
+        fi
+        continue
+    fi
+    [ $in_block = 1 ] || continue
+    if [[ $line == '$ frictionviz '* ]]; then
+        run_example
+        cmd=${line#\$ }
+    elif [ -n "$cmd" ]; then
+        printf '%s\n' "$line" >>"$work/expected"
+    fi
+done <"$readme"
+
+echo "README examples: $count run, $failed differ"
+[ "$count" -gt 0 ] && [ "$failed" = 0 ]
