@@ -84,10 +84,4 @@ void PaperStepper::step() {
     }
 }
 
-void PaperStepper::run_period() {
-    do {
-        step();
-    } while (k_ != 0);
-}
-
 } // namespace fv

@@ -188,13 +188,6 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt) {
     return res;
 }
 
-OdeOptions ode_options(const SteadyOptions& opt) {
-    OdeOptions o;
-    o.tolerance = opt.ode_tolerance;
-    o.initial_lag = opt.initial_lag;
-    o.record_period = opt.record_period;
-    return o;
-}
 
 SteadyResult steady_ratio(Model m, const Params& p, const SteadyOptions& opt) {
     if (m == Model::dahl)

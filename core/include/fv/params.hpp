@@ -1,4 +1,4 @@
-// The four numbers every result depends on (NOTES.md, "The model in dimensionless form").
+// The four numbers every result depends on (docs/model.md, "Parameters").
 #pragma once
 
 #include <optional>

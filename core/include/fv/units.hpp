@@ -1,4 +1,4 @@
-// Physical units <-> the model's dimensionless numbers (paper Eqs. (6), (34); NOTES.md).
+// Physical units <-> the model's dimensionless numbers (paper Eqs. (6), (34); docs/model.md).
 //   v_v   = omega x_v = 2 pi f A        vibration velocity amplitude
 //   zeta  = v_b / v_v                   Eq. (6)
 //   rdisp = x_v / z_ss = A / z_ss       Eq. (34)

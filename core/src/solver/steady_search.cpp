@@ -473,6 +473,14 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     return sol;
 }
 
+OdeOptions ode_options(const SteadyOptions& opt) {
+    OdeOptions o;
+    o.tolerance = opt.ode_tolerance;
+    o.initial_lag = opt.initial_lag;
+    o.record_period = opt.record_period;
+    return o;
+}
+
 SteadyResult ode_steady(const Params& p, const OdeOptions& opt) {
     return ode_solve(p, opt).result;
 }
