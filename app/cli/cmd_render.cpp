@@ -47,7 +47,7 @@ CLI::Validator size_spec() {
         "WxH");
 }
 
-// statuses_known: false for the map's grid, whose rows do not keep the solver's status (status empty).
+// statuses_known: false for ratio rows whose producer did not keep the solver's status (status empty).
 std::string csv_of(const TableData& t, bool statuses_known) {
     if (!t.text.empty()) return t.text;
     if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv, {}, statuses_known);
@@ -56,9 +56,9 @@ std::string csv_of(const TableData& t, bool statuses_known) {
     return trace_table(row, Format::csv);
 }
 
-// The numerical failures behind one figure, as far as its data show them: ratio rows carry the solver's
-// status; trace tables and the map's grid carry only numbers (FigureData keeps no status for them), so
-// there only values that are not finite can be seen. Prints one stderr line per failure (at most a few
+// The numerical failures behind one figure, as far as its data show them: ratio rows (the map's grid too)
+// carry the solver's status; trace tables carry only numbers, so there only values that are not finite
+// can be seen. Prints one stderr line per failure (at most a few
 // rows per table) and returns a one-line summary, empty when nothing failed.
 std::string check_figure(const FigureData& fig, bool statuses_known, const FitResult* fit) {
     std::vector<std::string> what;
@@ -219,10 +219,10 @@ Command add_render_command(CLI::App& root) {
                 };
                 std::vector<Output> outs;
                 std::vector<FigureData> figures;
-                std::vector<char> statuses_known; // per figure: false for the map (see check_figure)
+                std::vector<char> statuses_known; // per figure (every figure's ratio rows keep it now)
                 for (const FigureSpec& spec : specs) {
                     figures.push_back(compute_figure(spec));
-                    statuses_known.push_back(spec.kind != FigureKind::map);
+                    statuses_known.push_back(true);
                 }
                 if (fig19) {
                     figures.push_back(std::move(*fig19));

@@ -233,13 +233,13 @@ double refined_argmin(const std::vector<double>& row, double x0, double dx) {
     return x;
 }
 
-PanelData map_panel(const FigureSpec& spec, std::string& table, int threads) {
+PanelData map_panel(const FigureSpec& spec, std::string& table, int threads, std::vector<SweepPoint>& rows_out) {
     const std::vector<double>& zetas = spec.zetas;
     const int nth = spec.theta_count;
     const double dth = spec.theta_max_deg / (nth - 1);
     std::vector<double> thetas;
     for (int j = 0; j < nth; ++j) thetas.push_back(j * dth * kPi / 180);
-    // One warm-started zeta sweep per angle, angles spread over the cores.
+    // Every grid point on its own, spread over the cores.
     const auto rows = sweep(Model::dahl, zetas, thetas, {spec.params.rdisp}, {spec.params.i}, {}, threads);
     const std::size_t nz = zetas.size();
     HeatmapData h;
@@ -292,6 +292,7 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads) {
     panel.heatmap = std::move(h);
     panel.series = {std::move(best), std::move(best_rigid)};
     panel.legend = "bottom-right";
+    rows_out = rows;
     return panel;
 }
 
@@ -333,20 +334,10 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
     }
     case FigureKind::map: {
         TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
-        fig.panels.push_back(map_panel(spec, best.text, threads));
-        // The grid itself as ratio rows (model,i,theta_deg,rdisp,zeta,r_x,...), like a sweep.
-        const auto& h = *fig.panels.back().heatmap;
-        const double dth = spec.theta_max_deg / (spec.theta_count - 1);
-        for (int j = 0; j < h.ny; ++j)
-            for (int k = 0; k < h.nx; ++k) {
-                SweepPoint sp;
-                sp.params = {spec.zetas[static_cast<std::size_t>(k)], j * dth * kPi / 180, spec.params.rdisp,
-                             spec.params.i};
-                sp.result.rx = h.values[static_cast<std::size_t>(j * h.nx + k)];
-                sp.result.ry = std::nan("");
-                sp.result.error_estimate = std::nan("");
-                grid.ratios.push_back(sp);
-            }
+        std::vector<SweepPoint> rows;
+        fig.panels.push_back(map_panel(spec, best.text, threads, rows));
+        // The grid itself as ratio rows (model,i,theta_deg,rdisp,zeta,r_x,...,status), like a sweep.
+        grid.ratios = std::move(rows);
         fig.tables.push_back(std::move(grid));
         fig.tables.push_back(std::move(best));
         break;
