@@ -9,7 +9,7 @@
 // r_x, r_y or error estimate); the slowest points. Then the (zeta, theta) map figure (fv::map_figure:
 // 200 zeta x 91 theta, all cores) at rdisp = 1, 100, 1e4.
 // This prints figures; it asserts nothing (timings are not tests).
-//   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map]
+//   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map] [--tolerance T]
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
 #include "fv/figure_data.hpp"
@@ -99,6 +99,7 @@ int main(int argc, char** argv) {
     bool quick = false, map = true;
     int repeats = 3, worst = 15;
     double map_i = 1;
+    fv::SteadyOptions opt; // --tolerance: the solver's target (default 1e-8; the targets are at 1e-6)
     for (int a = 1; a < argc; ++a) {
         const std::string k = argv[a];
         if (k == "--quick")
@@ -111,9 +112,13 @@ int main(int argc, char** argv) {
             worst = std::max(0, std::atoi(argv[++a]));
         else if (k == "--map-i" && a + 1 < argc)
             map_i = std::atof(argv[++a]);
+        else if (k == "--tolerance" && a + 1 < argc)
+            opt.ode_tolerance = std::atof(argv[++a]);
         else {
-            std::fprintf(stderr, "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map] [--tolerance T]\n",
+                argv[0]);
             return 2;
         }
     }
@@ -160,7 +165,7 @@ int main(int argc, char** argv) {
         std::vector<double> t;
         for (int k = 0; k < repeats; ++k) {
             const auto a = std::chrono::steady_clock::now();
-            q.r = fv::steady_ratio(fv::Model::dahl, q.p);
+            q.r = fv::steady_ratio(fv::Model::dahl, q.p, opt);
             const auto b = std::chrono::steady_clock::now();
             t.push_back(std::chrono::duration<double, std::milli>(b - a).count());
         }
