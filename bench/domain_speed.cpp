@@ -154,10 +154,10 @@ int main(int argc, char** argv) {
                     pts.push_back(q);
                 }
     std::printf(
-        "fv::steady_ratio (Dahl, default options) over the domain: %zu points (%zu zeta x %zu theta x %zu "
+        "fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu theta x %zu "
         "rdisp x %zu i)%s, median of %d call(s) per point, one thread\n",
-        pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(), quick ? " [--quick]" : "",
-        repeats);
+        opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
+        quick ? " [--quick]" : "", repeats);
     std::fflush(stdout);
 
     const auto t_start = std::chrono::steady_clock::now();
