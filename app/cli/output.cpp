@@ -61,6 +61,9 @@ std::string reason_of(const SweepPoint& r) {
     case SteadyStatus::non_finite:
         return ok(res.status) ? "r_x or r_y is not a finite number"
                               : "a value that is not a finite number came up";
+    case SteadyStatus::unsettled:
+        return "the motion does not settle: the only periodic state found is unstable, so there is no steady "
+               "r_x, r_y (the values shown are that unstable state's)";
     }
     return "";
 }
@@ -174,14 +177,15 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
         auto count = [](long n, const char* one, const char* many) {
             return std::to_string(n) + " " + (n == 1 ? one : many);
         };
-        s += "search        " + count(res.periods, "period", "periods") + " integrated: " +
-             count(res.newton_steps, "Newton update", "Newton updates") +
+        s += "search        " + count(res.periods, "period", "periods") +
+             " integrated: " + count(res.newton_steps, "Newton update", "Newton updates") +
              (res.on_circle ? " on the circle's angle, " : " in the plane, ") +
              count(res.plain_steps, "plain period", "plain periods") + ", " +
              count(res.periods_skipped, "stuck period", "stuck periods") + " skipped in closed form\n";
-        std::snprintf(buf, sizeof buf,
-                      "steady period %d law changes, %d Radau IIA steps (the dtau -> 0 limit of the scheme)\n",
-                      res.events_per_period, res.steps_per_period);
+        std::snprintf(
+            buf, sizeof buf,
+            "steady period %d law changes, %d Radau IIA steps (the dtau -> 0 limit of the scheme)\n",
+            res.events_per_period, res.steps_per_period);
         s += buf;
     } else if (r.model == Model::dahl) {
         if (res.levels > 1)

@@ -233,7 +233,8 @@ double refined_argmin(const std::vector<double>& row, double x0, double dx) {
     return x;
 }
 
-PanelData map_panel(const FigureSpec& spec, std::string& table, int threads, std::vector<SweepPoint>& rows_out) {
+PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
+                    std::vector<SweepPoint>& rows_out) {
     const std::vector<double>& zetas = spec.zetas;
     const int nth = spec.theta_count;
     const double dth = spec.theta_max_deg / (nth - 1);

@@ -22,6 +22,8 @@ const char* to_string(SteadyStatus s) {
         return "integration_failed";
     case SteadyStatus::non_finite:
         return "non_finite";
+    case SteadyStatus::unsettled:
+        return "unsettled";
     }
     return "?";
 }
@@ -187,7 +189,6 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt) {
     res.error_estimate = std::max(spread + res.steady_error, opt.tolerance);
     return res;
 }
-
 
 SteadyResult steady_ratio(Model m, const Params& p, const SteadyOptions& opt) {
     if (m == Model::dahl)

@@ -26,7 +26,7 @@ struct OdeOptions {
     // Target for |r - r(dtau -> 0)| in force units; the result's status is `converged` only when its error
     // estimate (steady-state distance + integration error, estimated separately) is within this.
     double tolerance = 1e-8;
-    int max_periods = 400;           // cap on integrated periods (stuck periods skipped analytically are free)
+    int max_periods = 400; // cap on integrated periods (stuck periods skipped analytically are free)
     Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0) to start from (warm start); zero: start on the circle
                                      // in the direction of P'(0); |lag| > z_ss is pulled back
     bool record_period = false;      // fill SteadyResult::period with samples of the steady period

@@ -17,8 +17,11 @@ enum class SteadyStatus {
     not_converged,      // the period or iteration budget ran out first; error_estimate says how far it may be
     integration_failed, // the integrator could not continue (step size underflow, stage equations unsolved)
     non_finite,         // a value that is not a finite number came up (never expected; reported, not hidden)
+    unsettled, // the only periodic state found is unstable (a Floquet multiplier beyond 1): the motion
+               // does not settle, so there is no steady r_x, r_y to give
 };
-// "ok" for converged, else the reason as one word: "not_converged", "integration_failed", "non_finite".
+// "ok" for converged, else the reason as one word: "not_converged", "integration_failed", "non_finite",
+// "unsettled".
 const char* to_string(SteadyStatus s);
 inline bool ok(SteadyStatus s) {
     return s == SteadyStatus::converged;
@@ -52,15 +55,15 @@ struct SteadyResult {
     Scheme scheme = Scheme::paper; // which solver produced it (for reports)
     double rx = 0, ry = 0;         // Eq. (33) and its y-twin (31)
     SteadyStatus status = SteadyStatus::converged;
-    int periods = 0;            // periods run until the steady state was accepted (finest resolution)
-    int total_periods = 0;      // summed over all resolutions
-    double error_estimate = 0;  // estimate of |r - exact| (steady-state + discretisation), force units
-    double steady_error = 0;    // the steady-state part of it
-    int steps_per_period = 0;   // finest resolution used
-    int levels = 1;             // resolutions combined by Richardson extrapolation
+    int periods = 0;           // periods run until the steady state was accepted (finest resolution)
+    int total_periods = 0;     // summed over all resolutions
+    double error_estimate = 0; // estimate of |r - exact| (steady-state + discretisation), force units
+    double steady_error = 0;   // the steady-state part of it
+    int steps_per_period = 0;  // finest resolution used
+    int levels = 1;            // resolutions combined by Richardson extrapolation
     // What the continuous-time search did (Scheme::ode only): updates on the circle's angle or in the plane,
-    // plain periods, whole stuck periods skipped in closed form, law changes in the steady period, whether the
-    // steady period starts on the circle, and in words what stopped it when the status is not converged.
+    // plain periods, whole stuck periods skipped in closed form, law changes in the steady period, whether
+    // the steady period starts on the circle, and in words what stopped it when the status is not converged.
     int newton_steps = 0, plain_steps = 0, events_per_period = 0;
     long periods_skipped = 0;
     bool on_circle = false;

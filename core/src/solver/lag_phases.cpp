@@ -27,7 +27,8 @@ double cubic_first_root(double g0, double g1, double g2, double g3, double T) {
     for (int k = 0; k < n; ++k) {
         const double hi = cuts[k];
         if (q(hi) >= 0) {
-            // q increases through 0 on (lo, hi]: bisection (q(lo) < 0 or lo = 0 with q(0) = 0 leaving downwards).
+            // q increases through 0 on (lo, hi]: bisection (q(lo) < 0 or lo = 0 with q(0) = 0 leaving
+            // downwards).
             double a = lo, b = hi;
             if (lo == 0 && g0 >= 0) {
                 // q(0) = 0: the first crossing is the trivial one unless q dips first.

@@ -42,7 +42,6 @@ struct LagModel {
     mutable int next_ = 0;
 
   public:
-
     Vec2 u() const { return {cth, sth}; } // vibration direction
     // Eqs. (28)-(29) divided by x_v, their derivatives (Eq. (1) divided by v_v).
     Vec2 P(double tau) const { return {zeta * tau + std::sin(tau) * cth, std::sin(tau) * sth}; }
@@ -83,8 +82,8 @@ struct InteriorProblem {
     using Vec = Eigen::Matrix<double, 2, 1>;
     using Mat = Eigen::Matrix<double, 2, 2>;
     const LagModel* m;
-    Vec2 l_a;   // force at the phase start
-    double s;   // sgn v of this piece
+    Vec2 l_a;    // force at the phase start
+    double s;    // sgn v of this piece
     double bmin; // floor of the base 1 - s rho (a stage may stray past the circle)
 
     InteriorProblem(const LagModel& model, Vec2 la, double sign)

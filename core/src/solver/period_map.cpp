@@ -46,8 +46,8 @@ struct PhaseOutcome {
 // or the step retaken to an event, with the step's integral of F.
 template <int N, class Pb, class G, class OnStep>
 PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename RadauStep<N>::Vec& y, double& h,
-                             const PeriodRequest& rq, const EventFn* evs, int n_ev, const G& g, OnStep on_step,
-                             PeriodResult& out) {
+                             const PeriodRequest& rq, const EventFn* evs, int n_ev, const G& g,
+                             OnStep on_step, PeriodResult& out) {
     using Vec = typename RadauStep<N>::Vec;
     constexpr double kMaxStep = 0.5;
     constexpr int kProbes = 4; // dense-output probes per step for sign changes of the event functions
@@ -70,8 +70,9 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
         Eigen::Vector2d integral(0, 0);
         double qerr = 0; // quadrature error relative to its tolerance; ~h^5
         if (st.solved && st.error <= 1) {
-            integral = step_integral<N>(st, [&](const Vec& v) { return pb.force(v); },
-                                        [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr);
+            integral = step_integral<N>(
+                st, [&](const Vec& v) { return pb.force(v); },
+                [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr);
             qerr /= rq.atol_force * hh;
         }
         // Step factor from both estimates (the state's ~h^4, the quadrature's ~h^5).
@@ -113,7 +114,9 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             // Earliest crossing in (s_lo, s_hi] among the functions that leave their side there.
             double best = s_hi;
             for (int j = 0; j < n_ev; ++j) {
-                auto gj = [&](double s) { return evs[j].sign * g(j, tau + s * hh, s == 1 ? st.y1() : st.at(s)); };
+                auto gj = [&](double s) {
+                    return evs[j].sign * g(j, tau + s * hh, s == 1 ? st.y1() : st.at(s));
+                };
                 if (!(gj(s_hi) < -evs[j].noise)) continue;
                 double a = s_lo, b = s_hi;
                 double fa = std::max(gj(a), std::numeric_limits<double>::min()), fb = gj(b);
@@ -140,7 +143,8 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 }
             }
 #ifdef FV_SOLVER_TRACE
-            std::fprintf(stderr, "  event: tau=%.9f hh=%.3e s_lo=%g s_hi=%g best=%.12g hit=%d\n", tau, hh, s_lo, s_hi, best, hit);
+            std::fprintf(stderr, "  event: tau=%.9f hh=%.3e s_lo=%g s_hi=%g best=%.12g hit=%d\n", tau, hh,
+                         s_lo, s_hi, best, hit);
 #endif
             // Retake the step to end at the event. The collocation polynomial locates it to its own accuracy
             // (order 3); the retaken step is order 5 and may still be a hair on the old side. Secant
@@ -168,7 +172,8 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 for (int j = 0; j < n_ev; ++j)
                     if (j != hit && evs[j].sign * g(j, tau + he, se.y1()) < -evs[j].noise) other = true;
                 if (other) break;
-                he = std::min(h_cap, he + 1.5 * ge / -slope + 4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
+                he = std::min(h_cap, he + 1.5 * ge / -slope +
+                                         4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
             }
             if (!have_se && he > 1e-13 * (1 + std::abs(tau))) {
                 // The stage equations of the shorter step did not converge (a singular law next to the circle
@@ -186,8 +191,9 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             if (he > 1e-13 * (1 + std::abs(tau))) {
                 ++out.steps;
                 double qerr_e = 0;
-                on_step(se, step_integral<N>(se, [&](const Vec& v) { return pb.force(v); },
-                                             [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr_e));
+                on_step(se, step_integral<N>(
+                                se, [&](const Vec& v) { return pb.force(v); },
+                                [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr_e));
                 tau += se.h;
                 y = se.y1();
             }
@@ -197,8 +203,8 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
         }
         ++out.steps;
 #ifdef FV_SOLVER_TRACE
-        std::fprintf(stderr, "  step tau=%.9f h=%.3e err=%.2e qerr=%.2e g0(start)=%.3e g0(end)=%.3e\n", tau, hh, st.error, qerr,
-                     g(0, tau, y), g(0, tau + hh, st.y1()));
+        std::fprintf(stderr, "  step tau=%.9f h=%.3e err=%.2e qerr=%.2e g0(start)=%.3e g0(end)=%.3e\n", tau,
+                     hh, st.error, qerr, g(0, tau, y), g(0, tau + hh, st.y1()));
 #endif
         on_step(st, integral);
         tau += hh;
@@ -255,7 +261,8 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
         sm.P = body_point(*rq.params, ts);
         Vec2 lc = lf;
         const double rho = lc.norm();
-        if (rho > 1) lc /= rho; // dense output may stray past the circle by the tolerance; the model never does
+        if (rho > 1)
+            lc /= rho; // dense output may stray past the circle by the tolerance; the model never does
         sm.F = lc;
         sm.T = sm.P - lc / r;
         sm.z = lc.norm() / r;
@@ -322,11 +329,14 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             Eigen::Matrix<double, 1, 1> a;
             a.setZero();
             const EventFn evs[1] = {{OdeEventKind::leave_zss, 1.0, 1e-14 * (1 + m.zeta)}};
-            auto g = [&](int, double t, const Eigen::Matrix<double, 1, 1>& y) { return pb.force(y).dot(m.dP(t)); };
+            auto g = [&](int, double t, const Eigen::Matrix<double, 1, 1>& y) {
+                return pb.force(y).dot(m.dP(t));
+            };
             auto on_step = [&](const RadauStep<1>& st, const Eigen::Vector2d& integral) {
                 out.force_integral += integral;
                 if (rq.sensitivity) R *= 1 + st.dy1_dy0_minus_i(0, 0);
-                record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
+                record(st.tau0, st.tau0 + st.h,
+                       [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
             };
             const PhaseOutcome oc = integrate_phase<1>(pb, tau, tau1, a, h, rq, evs, 1, g, on_step, out);
             // Displacement on the circle, zss (e(phi_a + r a) - e(phi_a)), without cancellation.
@@ -359,7 +369,8 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             if (rq.sensitivity) E += st.dy1_dy0_minus_i * (Eigen::Matrix2d::Identity() + E);
             record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
         };
-        const PhaseOutcome oc = integrate_phase<2>(pb, tau, tau1, D, h, rq, evs, can_reach ? 2 : 1, g, on_step, out);
+        const PhaseOutcome oc =
+            integrate_phase<2>(pb, tau, tau1, D, h, rq, evs, can_reach ? 2 : 1, g, on_step, out);
         out.dL += D;
         l = pb.force(D);
         if (oc.how == StepEnd::failed) break;

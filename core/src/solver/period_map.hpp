@@ -18,9 +18,9 @@ namespace fv::solver {
 enum class Phase { stick, circle, interior };
 
 struct PeriodRequest {
-    double atol = 1e-9;         // local tolerance of the integrated displacements (x_v units)
-    double atol_force = 1e-7;   // local tolerance of the period mean of F per unit time (quadrature)
-    bool sensitivity = false;   // compute d L(tau1) / d L(tau0)
+    double atol = 1e-9;       // local tolerance of the integrated displacements (x_v units)
+    double atol_force = 1e-7; // local tolerance of the period mean of F per unit time (quadrature)
+    bool sensitivity = false; // compute d L(tau1) / d L(tau0)
     std::vector<OdeEvent>* events = nullptr;
     std::vector<Sample>* samples = nullptr; // at tau = 2 pi k / n_samples within (tau0, tau1]
     int n_samples = 0;
@@ -29,7 +29,7 @@ struct PeriodRequest {
 };
 
 struct PeriodResult {
-    bool ok = true;            // false: the integrator could not continue (see `failure`)
+    bool ok = true; // false: the integrator could not continue (see `failure`)
     const char* failure = "";
     Vec2 l_end{0, 0};          // force F/F_c = rdisp L at tau1
     Vec2 dL{0, 0};             // L(tau1) - L(tau0) in x_v, summed phase by phase (no cancellation)

@@ -21,8 +21,10 @@ namespace fv::solver {
 struct RadauTableau {
     static constexpr double s6 = 2.449489742783178098197284; // sqrt(6)
     static constexpr double c1 = (4 - s6) / 10, c2 = (4 + s6) / 10;
-    static constexpr double a11 = (88 - 7 * s6) / 360, a12 = (296 - 169 * s6) / 1800, a13 = (-2 + 3 * s6) / 225;
-    static constexpr double a21 = (296 + 169 * s6) / 1800, a22 = (88 + 7 * s6) / 360, a23 = (-2 - 3 * s6) / 225;
+    static constexpr double a11 = (88 - 7 * s6) / 360, a12 = (296 - 169 * s6) / 1800,
+                            a13 = (-2 + 3 * s6) / 225;
+    static constexpr double a21 = (296 + 169 * s6) / 1800, a22 = (88 + 7 * s6) / 360,
+                            a23 = (-2 - 3 * s6) / 225;
     static constexpr double a31 = (16 - s6) / 36, a32 = (16 + s6) / 36, a33 = 1.0 / 9;
     // Error estimator (RADAU5): err = (u1/h I - J)^-1 (f(y0) + (dd1 Z1 + dd2 Z2 + dd3 Z3)/h).
     static constexpr double dd1 = -(13 + 7 * s6) / 3, dd2 = (-13 + 7 * s6) / 3, dd3 = -1.0 / 3;
@@ -38,10 +40,10 @@ template <int N> struct RadauStep {
 
     double tau0 = 0, h = 0;
     Vec y0 = Vec::Zero();
-    Vec z[3];             // stage increments Y_j - y0 at tau0 + c_j h (z[2] = y1 - y0: stiffly accurate)
-    Vec f0, fz[3];        // f at the start and at the converged stages
-    Mat dy1_dy0_minus_i;  // d y1 / d y0 - I
-    double error = 0;     // scaled error norm (accept when <= 1)
+    Vec z[3];            // stage increments Y_j - y0 at tau0 + c_j h (z[2] = y1 - y0: stiffly accurate)
+    Vec f0, fz[3];       // f at the start and at the converged stages
+    Mat dy1_dy0_minus_i; // d y1 / d y0 - I
+    double error = 0;    // scaled error norm (accept when <= 1)
     int newton_iterations = 0;
     bool solved = false; // stage equations converged
 
@@ -69,7 +71,8 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     using Mat = typename S::Mat;
     using BigVec = typename S::BigVec;
     using BigMat = typename S::BigMat;
-    static constexpr double A[3][3] = {{T::a11, T::a12, T::a13}, {T::a21, T::a22, T::a23}, {T::a31, T::a32, T::a33}};
+    static constexpr double A[3][3] = {
+        {T::a11, T::a12, T::a13}, {T::a21, T::a22, T::a23}, {T::a31, T::a32, T::a33}};
     static constexpr double C[3] = {T::c1, T::c2, 1.0};
 
     S st;
@@ -91,7 +94,8 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     BigMat G;
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j)
-            G.template block<N, N>(N * i, N * j) = (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * J0;
+            G.template block<N, N>(N * i, N * j) =
+                (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * J0;
     const Eigen::PartialPivLU<BigMat> lu(G);
     const double stop = 1e-2 * atol;
     st.solved = false;
@@ -145,7 +149,8 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
         for (int i = 0; i < 3; ++i) {
             Mat b = Mat::Zero();
             for (int j = 0; j < 3; ++j) {
-                G.template block<N, N>(N * i, N * j) = (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * js[j];
+                G.template block<N, N>(N * i, N * j) =
+                    (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * js[j];
                 b += h * A[i][j] * js[j];
             }
             rhs.template block<N, N>(N * i, 0) = b;

@@ -4,13 +4,13 @@
 #include "fv/detail/parallel_for.hpp"
 #include "fv/ode_solver.hpp"
 
-#include <Eigen/LU>
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 #include <Eigen/SVD>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
@@ -47,9 +47,9 @@ namespace {
 
 using solver::kTwoPi;
 using solver::LagModel;
-using solver::Phase;
 using solver::PeriodRequest;
 using solver::PeriodResult;
+using solver::Phase;
 
 Vec2 perp(const Vec2& e) {
     return {-e.y(), e.x()};
@@ -225,9 +225,11 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         const PeriodResult pr = solver::run_lag(m, l0, 0, kTwoPi, rq);
         ++periods;
 #ifdef FV_SOLVER_TRACE
-        std::fprintf(stderr, "iter %d start=%d end=%d l0=(%.12g,%.12g) |l0|=%.15g dL=(%.3e,%.3e) steps=%ld ev=%d lambda=%g\n",
-                     iter, (int)start, (int)pr.end, l0.x(), l0.y(), l0.norm(), pr.dL.x(), pr.dL.y(), pr.steps,
-                     pr.events, lambda);
+        std::fprintf(
+            stderr,
+            "iter %d start=%d end=%d l0=(%.12g,%.12g) |l0|=%.15g dL=(%.3e,%.3e) steps=%ld ev=%d lambda=%g\n",
+            iter, (int)start, (int)pr.end, l0.x(), l0.y(), l0.norm(), pr.dL.x(), pr.dL.y(), pr.steps,
+            pr.events, lambda);
 #endif
         if (!pr.ok) {
             failure = pr.failure;
@@ -298,7 +300,8 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
             const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
             const double arc = dphi / r;
             const Vec2 le = pr.l_end / pr.l_end.norm();
-            const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
+            const double J =
+                perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
             // |J| ~ 0: the angle does not contract over this period (v ~ 0 all along): a plain step, which
             // says nothing about the distance to the fixed point.
             const bool flat = !(std::abs(J) > 1e-12);
@@ -460,7 +463,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
         const Eigen::Matrix2d M = Eigen::Matrix2d::Identity() + last.E;
         const double rho_max = M.eigenvalues().cwiseAbs().maxCoeff();
         if (rho_max > 1 + 1e-6) {
-            res.status = SteadyStatus::not_converged;
+            res.status = SteadyStatus::unsettled;
             failure = "the periodic state found is unstable: the motion does not settle";
         }
     }
