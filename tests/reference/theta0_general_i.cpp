@@ -1,6 +1,8 @@
 // Exact steady state for theta = 0 and any shape exponent i; the derivation is in theta0_general_i.hpp.
 #include "theta0_general_i.hpp"
 
+#include "theta0_geometry.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -8,8 +10,11 @@
 namespace fv::ref {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2.0 * kPi;
+using detail::Geometry;
+using detail::kPi;
+using detail::kTwoPi;
+using detail::make_geometry;
+using detail::solve_increasing;
 
 void check_args(double zeta, double rdisp, double i) {
     if (!std::isfinite(zeta) || zeta < 0.0)
@@ -17,54 +22,6 @@ void check_args(double zeta, double rdisp, double i) {
     if (!std::isfinite(rdisp) || rdisp <= 0.0)
         throw std::invalid_argument("fv::ref: rdisp must be finite and > 0");
     if (!std::isfinite(i) || i < 0.0) throw std::invalid_argument("fv::ref: i must be finite and >= 0");
-}
-
-// h - sin h without cancellation for small h (alternating Taylor series).
-double h_minus_sin(double h) {
-    if (std::fabs(h) >= 0.5) return h - std::sin(h);
-    const double h2 = h * h;
-    double term = h * h2 / 6.0;
-    double sum = 0.0;
-    for (int k = 1; k <= 12; ++k) {
-        sum += term;
-        term *= -h2 / static_cast<double>((2 * k + 2) * (2 * k + 3));
-    }
-    return sum;
-}
-
-double one_minus_cos(double h) {
-    const double sh = std::sin(0.5 * h);
-    return 2.0 * sh * sh;
-}
-
-// One period for 0 <= zeta < 1.
-struct Geometry {
-    double zeta = 0;
-    double s = 1;     // sqrt(1 - zeta^2)
-    double alpha = 0; // arccos(zeta)
-    double tau1 = 0;  // pi - alpha: P at its maximum, the back phase starts
-    double len_b = 0; // 2 alpha
-    double len_f = 0; // 2 pi - 2 alpha
-    double B = 0;     // back travel
-    double A = 0;     // forward travel
-    double rigid = 0; // (2/pi) asin(zeta)
-    double d_b(double h) const { return zeta * h_minus_sin(h) - s * one_minus_cos(h); } // <= 0, decreasing
-    double d_f(double h) const { return zeta * h_minus_sin(h) + s * one_minus_cos(h); } // >= 0, increasing
-};
-
-Geometry make_geometry(double zeta) {
-    Geometry g;
-    g.zeta = zeta;
-    g.s = std::sqrt((1.0 - zeta) * (1.0 + zeta));
-    g.alpha = std::atan2(g.s, zeta);
-    g.tau1 = kPi - g.alpha;
-    g.len_b = 2.0 * g.alpha;
-    g.len_f = kTwoPi - g.len_b;
-    // B/2 = sin(alpha) - alpha cos(alpha) = alpha (1 - cos alpha) - (alpha - sin alpha).
-    g.B = 2.0 * (g.alpha * one_minus_cos(g.alpha) - h_minus_sin(g.alpha));
-    g.A = kTwoPi * zeta + g.B;
-    g.rigid = (2.0 / kPi) * std::atan2(zeta, g.s);
-    return g;
 }
 
 // Exponent of the decay u = u0 exp(-e): e(u0, x) = log1p(c x u0^c)/c with c = i - 1 (e = x for i = 1).
@@ -99,21 +56,6 @@ double travel_to_edge(double u0, double i) {
     if (i >= 1.0) return INFINITY;
     if (!(u0 > 0.0)) return 0.0;
     return std::pow(u0, 1.0 - i) / (1.0 - i);
-}
-
-// Root of the increasing f(h) = target on [lo, hi] by bisection to adjacent doubles (ends when outside).
-template <class F> double solve_increasing(const F& f, double target, double lo, double hi) {
-    if (!(target > f(lo))) return lo;
-    if (!(target < f(hi))) return hi;
-    for (int it = 0; it < 4000; ++it) {
-        const double mid = lo + 0.5 * (hi - lo);
-        if (!(mid > lo && mid < hi)) break;
-        if (f(mid) < target)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo + 0.5 * (hi - lo);
 }
 
 // Gauss-Kronrod 7-15 (QUADPACK's nodes and weights).
@@ -233,7 +175,7 @@ double Theta0Steady::rx() const {
     const double z = 1.0 / rdisp_;
     const double ib = integrate_phase([&g, z](double h) { return -g.d_b(h) / z; }, g.len_b, w1_, i_);
     const double jf = integrate_phase([&g, z](double h) { return g.d_f(h) / z; }, g.len_f, u2_, i_);
-    return g.rigid + (ib - jf) / kTwoPi;
+    return g.rigid() + (ib - jf) / kTwoPi;
 }
 
 double Theta0Steady::lag(double tau) const {
