@@ -637,6 +637,20 @@ TEST_CASE("g. sweep rows equal steady_ratio at the same point (theta 90 deg, rdi
 //    r_x >= 0, but that is not asserted.) theta = 0 and 180 deg are compared with the exact law.
 // ---------------------------------------------------------------------------------------------------------
 
+// What every result must satisfy, whatever the point: |F| <= F_c at every instant, so |r| <= 1; r_x >= 0 at
+// theta = 90 deg (proved there, see above); the exact law at theta = 0 and 180 deg where the steady state
+// is unique.
+void property_check(Failures& f, const Params& p, const fv::SteadyResult& r) {
+    const double eps = 1e-9;
+    if (!(std::fabs(r.rx) <= 1 + eps && std::fabs(r.ry) <= 1 + eps && std::hypot(r.rx, r.ry) <= 1 + eps))
+        f.fail(p, fmt("|r| out of bounds: r_x=%.12f r_y=%.12f", r.rx, r.ry), std::hypot(r.rx, r.ry) - 1);
+    if (p.theta == 90 * kDeg && !(r.rx >= -eps))
+        f.fail(p, fmt("r_x = %.3e < 0 at theta = 90 deg", r.rx), -r.rx);
+    const bool unique = !(p.zeta == 0.0 && p.i == 0.0 && p.rdisp <= 1);
+    if ((p.theta == 0.0 || p.theta == 180 * kDeg) && unique)
+        error_check(f, p, r, fv::ref::rx_theta0_general(p.zeta, p.rdisp, p.i), 0.0);
+}
+
 TEST_CASE("h. property: 300 random points over the domain: finite, ok, |F| bound, exact at theta = 0, 180",
           "[solver-ref][property]") {
     std::mt19937_64 rng(19);
@@ -652,14 +666,7 @@ TEST_CASE("h. property: 300 random points over the domain: finite, ok, |F| bound
         const Params p{zeta, theta, rdisp, i};
         const auto r = solve(p);
         if (!contract_check(f, p, r) && !std::isfinite(r.rx)) continue;
-        const double eps = 1e-9;
-        if (!(std::fabs(r.rx) <= 1 + eps && std::fabs(r.ry) <= 1 + eps && std::hypot(r.rx, r.ry) <= 1 + eps))
-            f.fail(p, fmt("|r| out of bounds: r_x=%.12f r_y=%.12f", r.rx, r.ry), std::hypot(r.rx, r.ry) - 1);
-        if (theta == 90 * kDeg && !(r.rx >= -eps))
-            f.fail(p, fmt("r_x = %.3e < 0 at theta = 90 deg", r.rx), -r.rx);
-        const bool unique = !(zeta == 0.0 && i == 0.0 && rdisp <= 1);
-        if ((theta == 0.0 || theta == 180 * kDeg) && unique)
-            error_check(f, p, r, fv::ref::rx_theta0_general(zeta, rdisp, i), 0.0);
+        property_check(f, p, r);
     }
     FV_REPORT(f);
 }
@@ -697,14 +704,7 @@ TEST_CASE("i. the whole benchmark grid (5880 points): contract, bounds, exact at
                     if (unsettled(zeta, k, e, i)) continue;
                     if (!contract_check(f, p, r[k]) && !(std::isfinite(r[k].rx) && std::isfinite(r[k].ry)))
                         continue;
-                    if (!(std::hypot(r[k].rx, r[k].ry) <= 1 + 1e-9))
-                        f.fail(p, fmt("|r| = %.12f > 1", std::hypot(r[k].rx, r[k].ry)),
-                               std::hypot(r[k].rx, r[k].ry) - 1);
-                    if (k == 3 && !(r[k].rx >= -1e-9))
-                        f.fail(p, fmt("r_x = %.3e < 0 at 90 deg", r[k].rx), -r[k].rx);
-                    const bool unique = !(zeta == 0.0 && i == 0.0 && rdisp <= 1);
-                    if ((k == 0 || k == 6) && unique)
-                        error_check(f, p, r[k], fv::ref::rx_theta0_general(zeta, rdisp, i), 0.0);
+                    property_check(f, p, r[k]);
                 }
                 for (int k : {1, 2}) {
                     if (unsettled(zeta, k, e, i)) continue;
