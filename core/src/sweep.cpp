@@ -1,7 +1,5 @@
 #include "fv/sweep.hpp"
 
-#include "fv/ode_solver.hpp"
-
 #include <limits>
 
 namespace fv {
@@ -16,17 +14,15 @@ std::vector<double> linspace(double from, double to, int count) {
     return v;
 }
 
-std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
-                              const std::vector<double>& thetas, const std::vector<double>& rdisps,
-                              const std::vector<double>& is, const SteadyOptions& opt, int threads) {
-    if (model == Model::dahl && !uses_paper_scheme(opt))
-        return ode_sweep_zeta(zetas, thetas, rdisps, is, ode_options(opt),
-                              threads); // warm-started along zeta
+std::vector<SweepPoint> sweep_grid(Model model, const std::vector<double>& zetas,
+                                   const std::vector<double>& thetas, const std::vector<double>& rdisps,
+                                   const std::vector<double>& is) {
     std::vector<SweepPoint> pts;
     // The rigid model has no rdisp or i: one curve per angle.
     const std::vector<double> one{0};
     const auto& rd = model == Model::rigid ? one : rdisps;
     const auto& ii = model == Model::rigid ? one : is;
+    pts.reserve(zetas.size() * thetas.size() * rd.size() * ii.size());
     for (double i : ii)
         for (double th : thetas)
             for (double r : rd)
@@ -38,6 +34,15 @@ std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
                     sp.params = {z, th, model == Model::rigid ? nan : r, model == Model::rigid ? nan : i};
                     pts.push_back(sp);
                 }
+    return pts;
+}
+
+std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
+                              const std::vector<double>& thetas, const std::vector<double>& rdisps,
+                              const std::vector<double>& is, const SteadyOptions& opt, int threads) {
+    // Every point on its own (the default solver starts each one cold, so a row never depends on the grid),
+    // spread over the threads one point at a time.
+    std::vector<SweepPoint> pts = sweep_grid(model, zetas, thetas, rdisps, is);
     SteadyOptions o = opt;
     o.record_period = false;
     parallel_for(

@@ -16,7 +16,13 @@ struct SweepPoint {
 // zeta values: count points evenly from `from` to `to` inclusive (count == 1 -> from).
 std::vector<double> linspace(double from, double to, int count);
 
-// Every combination model x i x theta x rdisp x zeta, in that nesting order (zeta fastest).
+// The points of a sweep, not yet computed: every combination model x i x theta x rdisp x zeta, in that
+// nesting order (zeta fastest); for the rigid model one point per (theta, zeta), rdisp and i NaN.
+std::vector<SweepPoint> sweep_grid(Model model, const std::vector<double>& zetas,
+                                   const std::vector<double>& thetas, const std::vector<double>& rdisps,
+                                   const std::vector<double>& is);
+
+// The sweep_grid points, computed (steady_ratio), spread over the threads.
 // For the rigid model, rdisp and i do not matter and each (theta, zeta) is computed once.
 std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
                               const std::vector<double>& thetas, const std::vector<double>& rdisps,

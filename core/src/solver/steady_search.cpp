@@ -503,17 +503,7 @@ SteadyResult ode_steady(const Params& p, const OdeOptions& opt) {
 std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const std::vector<double>& thetas,
                                        const std::vector<double>& rdisps, const std::vector<double>& is,
                                        const OdeOptions& opt, int threads) {
-    std::vector<SweepPoint> pts;
-    pts.reserve(zetas.size() * thetas.size() * rdisps.size() * is.size());
-    for (double i : is)
-        for (double th : thetas)
-            for (double r : rdisps)
-                for (double z : zetas) {
-                    SweepPoint sp;
-                    sp.model = Model::dahl;
-                    sp.params = {z, th, r, i};
-                    pts.push_back(sp);
-                }
+    std::vector<SweepPoint> pts = sweep_grid(Model::dahl, zetas, thetas, rdisps, is);
     // Every point from its own cold start: a row never depends on its neighbours or on the grid it is in
     // (a warm start can sit next to a degenerate fixed point of another law), and cold starts from the
     // nearby limits cost about what warm starts did.
