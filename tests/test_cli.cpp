@@ -802,8 +802,9 @@ TEST_CASE("CLI status: ratio writes a failed result with its status and exits 3"
     const Run txt = run(std::string("ratio ") + kGood, kForceNotConverged);
     CHECK(txt.code == 3);
     CHECK(!report_line(txt.out, "r_x ").empty());
-    CHECK(report_line(txt.out, "status ").rfind("status        not_converged (steady state not verified", 0) ==
-          0);
+    CHECK(
+        report_line(txt.out, "status ").rfind("status        not_converged (steady state not verified", 0) ==
+        0);
     CHECK(lines(txt.err) == 1);
     CHECK(txt.err.find("numerical failure: not_converged at zeta=0.3 theta=45 deg rdisp=2 i=1") !=
           std::string::npos);

@@ -49,7 +49,8 @@ void deliver(const std::string& content, const std::string& out);
 void check_out(const std::string& out, const char* flag = "--out");
 
 // What went wrong with a failed row, one line without a newline: "not_converged at zeta=0.3 theta=45 deg
-// rdisp=2 i=1 (steady state not verified after 100 periods: period budget exhausted; error estimate 1.2e-03)".
+// rdisp=2 i=1 (steady state not verified after 100 periods: period budget exhausted; error
+// estimate 1.2e-03)".
 std::string describe_failure(const SweepPoint& row);
 
 // The failed rows (status_of not ok) of a table, counted per reason.

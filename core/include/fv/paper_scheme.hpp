@@ -1,8 +1,8 @@
 // The paper's tracking scheme for the lumped asperity (Section 3, Eqs. (17)-(29)), one step at a time.
 //
-// Dimensionless form (docs/model.md): tau = omega t, lengths in units of x_v = v_v/omega, forces in units of F_c.
-// P(tau) = (zeta tau + sin(tau) cos(theta), sin(tau) sin(theta))            Eqs. (28)-(29)
-// F/F_c  = (P - T) / z_ss                                                    Eqs. (13), (23)-(24)
+// Dimensionless form (docs/model.md): tau = omega t, lengths in units of x_v = v_v/omega, forces in units of
+// F_c. P(tau) = (zeta tau + sin(tau) cos(theta), sin(tau) sin(theta))            Eqs. (28)-(29) F/F_c  = (P -
+// T) / z_ss                                                    Eqs. (13), (23)-(24)
 #pragma once
 
 #include "fv/params.hpp"
@@ -39,7 +39,7 @@ class PaperStepper {
     // initial_lag = P(0) - T(0); the paper leaves it open, zero (unstretched asperity) is the default.
     PaperStepper(const Params& p, int steps_per_period, Vec2 initial_lag = Vec2::Zero());
 
-    void step();       // advance by one dtau
+    void step(); // advance by one dtau
 
     const Params& params() const { return p_; }
     int steps_per_period() const { return n_; }
