@@ -428,6 +428,13 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     // first run's error and well above the second's, whose values are reported.
     {
         PeriodRequest tight{0.25 * rq.atol, 0.25 * rq.atol_force, false};
+        if (opt.record_period) { // the reported period is this run: its samples and events are the figure's
+            tight.events = &sol.events;
+            tight.samples = &res.period;
+            tight.n_samples = std::max(1, opt.record_samples);
+            tight.params = &p;
+            res.period.reserve(static_cast<std::size_t>(tight.n_samples));
+        }
         const PeriodResult ti = solver::run_lag(m, last_l0, 0, kTwoPi, tight);
         ++periods;
         if (ti.ok) {
@@ -475,16 +482,6 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     res.events_per_period = sol.events_per_period;
     res.on_circle = sol.on_circle;
     res.detail = failure;
-    if (opt.record_period) {
-        // The same period again, now with samples and events (same tolerance, same start: same result).
-        PeriodRequest rec{0.25 * rq.atol, 0.25 * rq.atol_force, false}; // as the reported run
-        rec.events = &sol.events;
-        rec.samples = &res.period;
-        rec.n_samples = std::max(1, opt.record_samples);
-        rec.params = &p;
-        res.period.reserve(static_cast<std::size_t>(rec.n_samples));
-        solver::run_lag(m, last_l0, 0, kTwoPi, rec);
-    }
     return sol;
 }
 
