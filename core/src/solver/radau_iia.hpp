@@ -44,7 +44,6 @@ template <int N> struct RadauStep {
     Vec f0, fz[3];       // f at the start and at the converged stages
     Mat dy1_dy0_minus_i; // d y1 / d y0 - I
     double error = 0;    // scaled error norm (accept when <= 1)
-    int newton_iterations = 0;
     bool solved = false; // stage equations converged
 
     Vec y1() const { return y0 + z[2]; }
@@ -111,7 +110,6 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
         const BigVec dz = lu.solve(-res);
         if (!dz.allFinite()) break;
         for (int j = 0; j < 3; ++j) st.z[j] += dz.template segment<N>(N * j);
-        st.newton_iterations = it + 1;
         const double nrm = dz.cwiseAbs().maxCoeff();
         if (nrm <= stop) {
             st.solved = true;
