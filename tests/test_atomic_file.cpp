@@ -35,7 +35,7 @@ TEST_CASE("Bad targets are refused before anything is written", "[io]") {
     const std::string dir = temp_dir();
     CHECK_FALSE(fv::check_writable(dir + "/missing/out.csv").empty());
     CHECK_FALSE(fv::check_writable(dir).empty());         // a directory
-    CHECK_FALSE(fv::check_writable("/dev/null").empty()); // not a regular file: never replaced
+    CHECK_FALSE(fv::check_writable("").empty());
     CHECK_FALSE(fv::check_writable("/proc/out.csv").empty());
     CHECK(fv::check_writable(dir + "/fine.csv").empty());
     CHECK_FALSE(fv::write_file_atomic(dir + "/missing/out.csv", "x").empty());

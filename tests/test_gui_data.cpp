@@ -138,7 +138,7 @@ TEST_CASE("app data: a malformed or missing file keeps what was shown and names 
     CHECK(err.find('\n') == std::string::npos);
     REQUIRE(ui.data);
     CHECK(ui.data->file == kZetaFile);
-    CHECK(load_measured(ui, "/nonexistent/x.csv").rfind("/nonexistent/x.csv: cannot open", 0) == 0);
+    CHECK(load_measured(ui, "/nonexistent/x.csv").rfind("/nonexistent/x.csv: does not exist", 0) == 0);
     CHECK(load_measured(ui, write_temp("empty.csv", "zeta,r_x\n")).find("no data rows") != std::string::npos);
     CHECK(ui.data->file == kZetaFile);
 }

@@ -122,7 +122,9 @@ Command add_fit_command(CLI::App& root) {
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
         root.add_subcommand("fit", "fit r_disp of the Dahl model to measured r_x(zeta) read from a CSV file");
-    cmd->add_option("--data", a->data, "CSV file: zeta,r_x or vb,r_x [,theta_deg,sigma,label]")->required();
+    cmd->add_option("--data", a->data, "CSV file: zeta,r_x or vb,r_x [,theta_deg,sigma,label]")
+        ->required()
+        ->check(file_name());
     a->theta_opt =
         cmd->add_option("--theta", a->theta,
                         "vibration angle in degrees (for rows without theta_deg), " + describe(kThetaRange))
@@ -134,7 +136,7 @@ Command add_fit_command(CLI::App& root) {
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
-    cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
+    add_out_option(*cmd, a->out);
     return {cmd, [a] {
                 check_out(a->out);
                 ReadOptions ro;

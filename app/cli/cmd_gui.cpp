@@ -34,13 +34,16 @@ Command add_gui_command(CLI::App& root) {
                      "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
     cmd->add_option("--data", a->data,
                     "measured r_x to show on the ratio plot: CSV zeta,r_x or vb,r_x [,theta_deg,sigma,label] "
-                    "(vb converted with the window's amplitude and frequency)");
+                    "(vb converted with the window's amplitude and frequency)")
+        ->check(file_name());
     cmd->add_flag("--headless", a->headless,
                   "render into an OSMesa buffer instead of a window (same pixels)");
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
         ->check(integer_in(1, 1000000));
-    cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)");
-    cmd->add_option("--screenshot", a->screenshot, "write the last frame to this PNG (with --frames)");
+    cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)")
+        ->check(file_name());
+    cmd->add_option("--screenshot", a->screenshot, "write the last frame to this PNG (with --frames)")
+        ->check(file_name());
     cmd->add_option("--bench", a->bench,
                     "benchmark: N frames with a slider changing every frame; prints frame times")
         ->check(integer_in(10, 100000));
@@ -51,9 +54,13 @@ Command add_gui_command(CLI::App& root) {
                 o.bench_frames = a->bench;
                 o.script = a->script;
                 o.screenshot = a->screenshot;
-                if (!o.screenshot.empty()) {
+                if (cmd->get_option("--screenshot")->count() > 0) {
                     if (o.frames == 0)
                         throw UsageError("--screenshot needs --frames N (the frame to capture)");
+                    // A PNG is a file, not terminal output: "-" is not standard output here.
+                    if (o.screenshot == "-")
+                        throw UsageError("--screenshot: give a file name (standard output is not allowed for "
+                                         "a PNG; /dev/stdout is, for a pipe)");
                     check_out(o.screenshot, "--screenshot");
                 }
                 // Start from the given flags, the rest from Fig. 14a's parameters.
@@ -90,9 +97,10 @@ Command add_gui_command(CLI::App& root) {
                     const std::string what = e.what();
                     if (what.find("display") != std::string::npos)
                         throw RuntimeFailure(
-                            "no display to open a window on (" + what +
-                            "); render figures headless with `frictionviz render --figure all --out DIR`, "
-                            "or run the window under xvfb-run");
+                            "cannot open a window: " + what +
+                            "; run the app without a window with `frictionviz gui --headless --frames N "
+                            "--screenshot FILE`, render the figures with `frictionviz render --figure all "
+                            "--out DIR`, or run under `xvfb-run -a frictionviz gui`");
                     if (what.find(a->script) == 0 && !a->script.empty())
                         throw UsageError("--script: " + what);
                     throw RuntimeFailure(what);

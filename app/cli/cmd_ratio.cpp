@@ -24,7 +24,7 @@ Command add_ratio_command(CLI::App& root) {
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"text", "csv", "json"}))
         ->capture_default_str();
-    cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
+    add_out_option(*cmd, a->out);
     return {cmd, [a] {
                 check_out(a->out);
                 SweepPoint row;

@@ -101,6 +101,11 @@ std::string check_figure(const FigureData& fig, bool statuses_known, const FitRe
     return s;
 }
 
+// Every name --figure takes, for its help and its error messages.
+std::string figure_names() {
+    return "all, scene, map, fig19, " + figure_ids();
+}
+
 } // namespace
 
 Command add_render_command(CLI::App& root) {
@@ -114,13 +119,18 @@ Command add_render_command(CLI::App& root) {
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand(
         "render", "render figures headless (OSMesa) as PNG, with the data behind each one as CSV beside it");
-    cmd->add_option("--figure", a->figure,
-                    "figure id: all (every figure of the paper), scene, map, or one of " + figure_ids() +
-                        " (comma-separate several)")
+    cmd->add_option(
+           "--figure", a->figure,
+           "figure ids, comma separated: " + figure_names() +
+               " (all: every figure of the paper; scene: any parameters; map: r_x over zeta and theta; "
+               "fig19: measured data with --data)")
         ->required();
-    cmd->add_option("--out", a->out, "output directory (must exist)")->required();
+    cmd->add_option("--out", a->out,
+                    "output directory (must exist); FIGURE.png and its CSV are replaced atomically")
+        ->required();
     cmd->add_option("--data", a->data,
-                    "fig19: CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)");
+                    "fig19: CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)")
+        ->check(file_name());
     add_vibration_options(*cmd, a->model.units,
                           "fig19: for a vb column (A and f) and z_ss (A); scene, map: for --vb, --zss");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
@@ -169,16 +179,17 @@ Command add_render_command(CLI::App& root) {
                     } else if (const FigureSpec* f = find_figure(id)) {
                         specs.push_back(*f);
                     } else {
-                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: all, scene, " +
-                                         figure_ids());
+                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: " + figure_names());
                     }
                 }
                 if (specs.empty() && !data_fig)
-                    throw UsageError("--figure: no figure named; allowed: all, scene, map, fig19, " +
-                                     figure_ids());
+                    throw UsageError("--figure: no figure named; allowed: " + figure_names());
+                check_out_dir(a->out);
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
-                check_out(dir + "/" + (specs.empty() ? std::string("fig19") : specs.front().id) + ".png");
+                // Each image's own name too (say a directory or a socket called fig8.png is in the way).
+                for (const FigureSpec& f : specs) check_out(dir + "/" + f.id + ".png");
+                if (data_fig) check_out(dir + "/fig19.png");
                 // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
                 std::optional<FigureData> fig19;
                 FitResult fig19_fit;

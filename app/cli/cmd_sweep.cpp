@@ -28,17 +28,12 @@ Command add_sweep_command(CLI::App& root) {
     auto* zo = cmd->add_option("--zeta", a->zeta,
                                "zeta values FROM:TO:COUNT (evenly spaced, both ends included; or --vb)")
                    ->check(range_spec(kZetaRange, kMaxSweepPoints));
-    cmd->add_option("--theta", a->theta_deg, "vibration angles in degrees, comma separated")
-        ->required()
-        ->delimiter(',')
-        ->check(number_in(kThetaRange));
-    auto* rd =
-        cmd->add_option("--rdisp", a->rdisp, "displacement ratios, comma separated (or --zss; Dahl only)")
-            ->delimiter(',')
-            ->check(number_in(kRdispRange));
-    auto* ii = cmd->add_option("--i", a->i, "Dahl exponents, comma separated (Dahl only)")
-                   ->delimiter(',')
-                   ->check(number_in(kIRange));
+    add_number_list(*cmd, "--theta", a->theta_deg, kThetaRange,
+                    "vibration angles in degrees, comma separated")
+        ->required();
+    auto* rd = add_number_list(*cmd, "--rdisp", a->rdisp, kRdispRange,
+                               "displacement ratios, comma separated (or --zss; Dahl only)");
+    auto* ii = add_number_list(*cmd, "--i", a->i, kIRange, "Dahl exponents, comma separated (Dahl only)");
     cmd->add_option("--model", a->model, "friction model")
         ->check(CLI::IsMember({"dahl", "rigid"}))
         ->capture_default_str();
@@ -49,7 +44,7 @@ Command add_sweep_command(CLI::App& root) {
     cmd->add_option("--format", a->format, "output format")
         ->check(CLI::IsMember({"csv", "json"}))
         ->capture_default_str();
-    cmd->add_option("--out", a->out, "write to FILE (atomically) instead of standard output");
+    add_out_option(*cmd, a->out);
     return {cmd, [a, zo, rd, ii] {
                 const Model model = a->model == "rigid" ? Model::rigid : Model::dahl;
                 const RangeSpec z = zeta_range_of(zo, a->zeta, a->units);

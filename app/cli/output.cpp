@@ -21,7 +21,7 @@ std::string num(double v) {
     if (std::isnan(v)) return "";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
     char buf[40];
-    std::snprintf(buf, sizeof buf, "%.12g", v);
+    std::snprintf(buf, sizeof buf, "%.12g", v + 0.0); // + 0.0: -0 prints as 0
     return buf;
 }
 
@@ -34,7 +34,7 @@ nlohmann::json jnum(double v) {
 double theta_deg(const Params& p) {
     char buf[40];
     std::snprintf(buf, sizeof buf, "%.12g", p.theta * 180 / kPi);
-    return std::strtod(buf, nullptr);
+    return std::strtod(buf, nullptr) + 0.0; // + 0.0: -0 reads 0
 }
 
 // The r_x, r_y cells: empty when not a finite number (a failed row), never "nan" or "inf".
@@ -245,13 +245,26 @@ std::string trace_table(const SweepPoint& row, Format f) {
     return s;
 }
 
+CLI::Option* add_out_option(CLI::App& cmd, std::string& out) {
+    out = "-";
+    return cmd.add_option("--out", out,
+                          "write to FILE instead of standard output (-), atomically; a symbolic link is "
+                          "followed and its target replaced, a device or FIFO is written directly");
+}
+
 void check_out(const std::string& out, const char* flag) {
-    if (out.empty()) return;
+    if (out == "-") return;
+    if (out.empty())
+        throw UsageError(std::string(flag) + ": empty path; give a file name, or - for standard output");
     if (auto why = check_writable(out); !why.empty()) throw UsageError(std::string(flag) + ": " + why);
 }
 
+void check_out_dir(const std::string& dir, const char* flag) {
+    if (auto why = check_output_dir(dir); !why.empty()) throw UsageError(std::string(flag) + ": " + why);
+}
+
 void deliver(const std::string& content, const std::string& out) {
-    if (out.empty()) {
+    if (out == "-") {
         std::cout << content << std::flush;
         if (!std::cout) throw RuntimeFailure("cannot write to standard output");
         return;

@@ -4,6 +4,8 @@
 #include "fv/steady_state.hpp"
 #include "fv/sweep.hpp"
 
+#include <CLI/CLI.hpp>
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,11 +44,20 @@ bool all_finite(const std::vector<Sample>& period);
 // Columns tau,Px,Py,Tx,Ty,z,Fx,Fy of one steady-state period.
 std::string trace_table(const SweepPoint& row, Format f);
 
-// stdout when out is empty, else written atomically to `out` (RuntimeFailure if that fails).
+// The --out FILE option of the commands that print one result (ratio, sweep, trace, fit). `out` starts as
+// "-", standard output; any other path follows the output-path policy of fv/atomic_file.hpp.
+CLI::Option* add_out_option(CLI::App& cmd, std::string& out);
+
+// Standard output when out is "-", else written to `out` by the output-path policy (RuntimeFailure if that
+// fails).
 void deliver(const std::string& content, const std::string& out);
 
-// Validates an --out target before any work is done (UsageError naming the flag).
+// Validates an --out target before any work is done (UsageError naming the flag): "-" is standard output,
+// an empty path is refused, anything else must pass fv::check_writable.
 void check_out(const std::string& out, const char* flag = "--out");
+
+// Validates the output directory of `render` before any work is done (UsageError naming the flag).
+void check_out_dir(const std::string& dir, const char* flag = "--out");
 
 // What went wrong with a failed row, one line without a newline: "not_converged at zeta=0.3 theta=45 deg
 // rdisp=2 i=1 (steady state not verified after 100 periods: period budget exhausted; error

@@ -100,12 +100,9 @@ void add_vb_zss_options(CLI::App& cmd, UnitArgs& u, UnitShape shape) {
                                   "sliding velocities v_b in m/s, FROM:TO:COUNT, instead of --zeta: zeta = "
                                   "v_b/(2 pi f A) with --amplitude A and --frequency f")
                        ->check(range_spec(kVbRange, kMaxSweepPoints));
-        u.zss_opt =
-            cmd.add_option("--zss", u.zss_list,
-                           "steady-state asperity deflections z_ss in um, comma separated, instead of "
-                           "--rdisp: r_disp = A/z_ss with --amplitude A (Dahl model only)")
-                ->delimiter(',')
-                ->check(number_in(kZssRange));
+        u.zss_opt = add_number_list(cmd, "--zss", u.zss_list, kZssRange,
+                                    "steady-state asperity deflections z_ss in um, comma separated, instead "
+                                    "of --rdisp: r_disp = A/z_ss with --amplitude A (Dahl model only)");
     }
 }
 

@@ -7,14 +7,47 @@
 
 namespace fv::cli {
 
-bool parse_finite(const std::string& s, double& out) {
-    if (s.empty() || std::isspace(static_cast<unsigned char>(s.front()))) return false;
+namespace {
+
+// Whether `s` is spelled as a decimal number: optional sign, digits with at most one point, optional
+// exponent. strtod alone would also take hex floats (0x10, 0x1p3), "inf", "nan" and leading blanks.
+bool decimal_syntax(const std::string& s) {
+    std::size_t k = 0;
+    const auto digits = [&] {
+        const std::size_t from = k;
+        while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
+        return k - from;
+    };
+    if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+    std::size_t mantissa = digits();
+    if (k < s.size() && s[k] == '.') {
+        ++k;
+        mantissa += digits();
+    }
+    if (mantissa == 0) return false;
+    if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {
+        ++k;
+        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
+        if (digits() == 0) return false;
+    }
+    return k == s.size();
+}
+
+} // namespace
+
+Parsed parse_decimal(const std::string& s, double& out) {
+    if (!decimal_syntax(s)) return Parsed::not_decimal;
     errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(s.c_str(), &end);
-    if (end != s.c_str() + s.size() || errno == ERANGE || !std::isfinite(v)) return false;
-    out = v;
-    return true;
+    const double v = std::strtod(s.c_str(), nullptr);
+    // ERANGE: overflow to +-HUGE_VAL, or underflow. A subnormal result (5e-324) is still the number asked
+    // for; one that rounds to zero (1e-400) is not.
+    if (errno == ERANGE && (std::isinf(v) || v == 0)) return Parsed::unrepresentable;
+    out = v + 0.0; // -0 is read as 0: it is the same angle, ratio or exponent, and should print as one
+    return Parsed::ok;
+}
+
+bool parse_finite(const std::string& s, double& out) {
+    return parse_decimal(s, out) == Parsed::ok;
 }
 
 std::string describe(Range r) {
@@ -31,15 +64,75 @@ namespace {
 
 std::string number_error(const std::string& s, Range r) {
     double v = 0;
-    if (!parse_finite(s, v)) return "'" + s + "' is not a finite number; allowed: a number in " + describe(r);
+    switch (parse_decimal(s, v)) {
+    case Parsed::not_decimal:
+        return "'" + s + "' is not a decimal number; allowed: a number in " + describe(r);
+    case Parsed::unrepresentable:
+        return "'" + s + "' is out of range (beyond double precision); allowed: a number in " + describe(r);
+    case Parsed::ok:
+        break;
+    }
     if (!inside(v, r)) return "'" + s + "' is out of range; allowed: a number in " + describe(r);
     return {};
+}
+
+// "a,b,c" split at every comma, empty items kept (so that "0,,30" can be refused rather than read as 0,30).
+std::vector<std::string> split_list(const std::string& s) {
+    std::vector<std::string> items;
+    std::size_t from = 0;
+    for (;;) {
+        const std::size_t comma = s.find(',', from);
+        items.push_back(s.substr(from, comma == std::string::npos ? std::string::npos : comma - from));
+        if (comma == std::string::npos) return items;
+        from = comma + 1;
+    }
 }
 
 } // namespace
 
 CLI::Validator number_in(Range r) {
     return CLI::Validator([r](std::string& s) { return number_error(s, r); }, "NUMBER in " + describe(r));
+}
+
+CLI::Validator number_list_in(Range r) {
+    return CLI::Validator(
+        [r](std::string& s) -> std::string {
+            const std::vector<std::string> items = split_list(s);
+            for (std::size_t k = 0; k < items.size(); ++k) {
+                if (items[k].empty())
+                    return "'" + s + "' has an empty item (number " + std::to_string(k + 1) +
+                           "); allowed: comma-separated numbers in " + describe(r);
+                if (auto e = number_error(items[k], r); !e.empty()) return e;
+            }
+            return {};
+        },
+        "NUMBER[,NUMBER...] in " + describe(r));
+}
+
+CLI::Option* add_number_list(CLI::App& cmd, const std::string& name, std::vector<double>& out, Range r,
+                             const std::string& help) {
+    // No CLI11 delimiter: it drops empty items silently. The validator sees each argument whole, and the
+    // callback splits it (repeated flags append).
+    return cmd
+        .add_option_function<std::vector<std::string>>(
+            name,
+            [&out](const std::vector<std::string>& args) {
+                out.clear();
+                for (const std::string& a : args)
+                    for (const std::string& item : split_list(a)) {
+                        double v = 0;
+                        parse_finite(item, v);
+                        out.push_back(v);
+                    }
+            },
+            help)
+        ->check(number_list_in(r));
+}
+
+CLI::Validator file_name() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string { return s.empty() ? "empty path; give a file name" : ""; },
+        "FILE");
 }
 
 CLI::Validator integer_in(long lo, long hi) {

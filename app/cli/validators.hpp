@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <vector>
 
 namespace fv::cli {
 
@@ -12,11 +13,25 @@ struct Range {
     bool lo_open = false; // lo itself excluded
 };
 
-// Parses a whole string as a finite double; false on junk, trailing characters, NaN or infinity.
+// Parses a whole string as a decimal number ("-1.5e3"; not hex floats, inf, nan or blanks around it).
+// -0 is read as 0.
+enum class Parsed { ok, not_decimal, unrepresentable };
+Parsed parse_decimal(const std::string& s, double& out);
+// parse_decimal(s, out) == Parsed::ok.
 bool parse_finite(const std::string& s, double& out);
 
 // A finite number inside `r`; the message quotes the value and the range.
 CLI::Validator number_in(Range r);
+
+// Comma-separated numbers, each inside `r`; an empty item ("0,,30", "0,") is an error, not skipped.
+CLI::Validator number_list_in(Range r);
+
+// The option --name: comma-separated numbers in `r` (number_list_in) into `out`.
+CLI::Option* add_number_list(CLI::App& cmd, const std::string& name, std::vector<double>& out, Range r,
+                             const std::string& help);
+
+// A file name: anything but the empty string (which would otherwise read as "not given").
+CLI::Validator file_name();
 
 // An integer in [lo, hi].
 CLI::Validator integer_in(long lo, long hi);

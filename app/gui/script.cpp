@@ -1,6 +1,7 @@
 #include "script.hpp"
 
 #include "fv/figures.hpp"
+#include "fv/input_file.hpp"
 #include "fv/units.hpp"
 
 #include <cmath>
@@ -30,8 +31,9 @@ constexpr const char* kActions =
 } // namespace
 
 Script load_script(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) throw std::runtime_error(path + ": cannot read the script");
+    std::string text;
+    if (auto why = read_input_file(path, text); !why.empty()) throw std::runtime_error(path + ": " + why);
+    std::istringstream in(text);
     Script s;
     std::string line;
     int no = 0;

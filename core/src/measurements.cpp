@@ -1,5 +1,7 @@
 #include "fv/measurements.hpp"
 
+#include "fv/input_file.hpp"
+
 #include "fv/units.hpp"
 
 #include <array>
@@ -238,13 +240,12 @@ MeasurementSet parse_measurements(std::string_view text, const std::string& name
 }
 
 MeasurementSet read_measurements(const std::string& path, const ReadOptions& opt) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw DataError(path, 0, 0, "cannot open the file for reading");
-    // Read at most one byte past the limit: enough to know the file is too big, without reading a huge one.
-    std::string text(opt.max_file_bytes + 1, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    if (in.bad()) throw DataError(path, 0, 0, "read error");
-    text.resize(static_cast<std::size_t>(in.gcount()));
+    // At most one byte past the limit: enough to know the file is too big, without reading a huge one. A
+    // directory, a socket, a terminal or a FIFO nobody writes to is an error, not a hang (input_file.hpp).
+    std::string text;
+    InputLimits limits;
+    limits.max_bytes = opt.max_file_bytes;
+    if (auto why = read_input_file(path, text, limits); !why.empty()) throw DataError(path, 0, 0, why);
     return parse_measurements(text, path, opt);
 }
 

@@ -31,8 +31,7 @@ bool env_set(const char* name) {
 
 WindowContext::WindowContext(int width, int height, const std::string& title, bool visible) {
     if (!env_set("DISPLAY") && !env_set("WAYLAND_DISPLAY"))
-        throw std::runtime_error("no display (DISPLAY is not set): use headless mode, or run under "
-                                 "xvfb-run -a -s \"-screen 0 1280x800x24\"");
+        throw std::runtime_error("no display (neither DISPLAY nor WAYLAND_DISPLAY is set)");
     glfwSetErrorCallback(&on_glfw_error);
     if (g_glfw_users == 0 && glfwInit() != GLFW_TRUE)
         throw std::runtime_error("GLFW init failed: " + g_last_glfw_error);

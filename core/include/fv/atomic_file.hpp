@@ -1,4 +1,22 @@
-// Writing result files so that a failed run never leaves a half-written or clobbered file.
+// The output-path policy: every file the program writes (CLI, app, tests' tools) goes through here, so that a
+// failed or killed run never leaves a half-written file, never clobbers something it was not asked to write,
+// and never hangs on a special file.
+//
+//   path                         what happens
+//   ---------------------------  -------------------------------------------------------------------------
+//   empty, or ending in '/'      refused
+//   regular file or new name     written to a temporary file beside it, flushed, renamed over it (atomic);
+//                                an existing file keeps its permission bits (and owner, where allowed)
+//   symbolic link (any chain)    followed; its final target is replaced atomically, the link itself is kept
+//   /dev/stdout, /dev/fd/N,      the process's own open descriptor N is written directly (what a shell
+//   /proc/self/fd/N                redirect `>` set up stays in charge; nothing is renamed or truncated)
+//   character device, FIFO       written directly (nothing to make atomic); a FIFO without a reader is an
+//                                error, never a hang
+//   directory, socket,           refused
+//   block device, a missing or
+//   unwritable directory
+//
+// docs/reliability.md explains the choices; tests/reliability checks them.
 #pragma once
 
 #include <string>
@@ -6,13 +24,33 @@
 
 namespace fv {
 
-// Empty if `path` can be created or replaced (its directory exists and is writable, and `path` is not a
-// directory), else a one-line reason. Used to reject a bad --out before any work is done.
+// Where an output path leads once symbolic links are followed.
+struct OutputTarget {
+    enum class Kind {
+        regular,    // replaced atomically: `path` is the resolved file (it may not exist yet)
+        special,    // character device or FIFO at `path`: opened and written directly
+        descriptor, // the process's own descriptor `fd` (/dev/stdout, /dev/fd/N, /proc/self/fd/N)
+    };
+    Kind kind = Kind::regular;
+    std::string path;
+    int fd = -1;
+};
+
+// Resolves `path` by the policy above into `target`. Returns an empty string, or a one-line reason why the
+// path cannot be written (nothing is created or changed either way, apart from a probe file created and
+// removed at once in the target's directory to learn whether files can be created there).
+std::string resolve_output(const std::string& path, OutputTarget& target);
+
+// Empty if `path` can be written by the policy above, else a one-line reason. Used to reject a bad --out
+// before any work is done.
 std::string check_writable(const std::string& path);
 
-// Writes `data` to a temporary file beside `path`, flushes it to disk and renames it over `path`.
-// Returns an empty string on success, else a one-line reason; on failure `path` is untouched and the
-// temporary file is removed.
+// Empty if `dir` is an existing directory (symbolic links followed) in which files can be created, else a
+// one-line reason. For commands that write several files into a directory.
+std::string check_output_dir(const std::string& dir);
+
+// Writes `data` to `path` by the policy above. Returns an empty string on success, else a one-line reason;
+// on failure a regular target is untouched and no temporary file is left behind.
 std::string write_file_atomic(const std::string& path, std::string_view data);
 
 } // namespace fv
