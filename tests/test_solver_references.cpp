@@ -676,11 +676,8 @@ TEST_CASE("h. property: 300 random points over the domain: finite, ok, |F| bound
 //    at 90 deg, the exact law at 0 and 180 deg, and the mirror pairs 30/150 and 60/120 deg agree.
 // ---------------------------------------------------------------------------------------------------------
 
-// [!mayfail]: the solver does not yet settle every grid point at the default tolerance; 8 of 5880 (tiny zeta
-// at 90 deg, rdisp <= 1, near-grazing orbits; all reported not_converged, none wrong) are open in issue 11.
-// The test runs and lists them on every run; remove the tag when they pass.
 TEST_CASE("i. the whole benchmark grid (5880 points): contract, bounds, exact at 0/180 deg, mirror pairs",
-          "[solver-ref][grid][slow][!mayfail]") {
+          "[solver-ref][grid][slow]") {
     std::vector<double> zetas{0.0};
     for (int k = 0; k <= 8; ++k) zetas.push_back(std::pow(10.0, -3.0 + 5.0 * k / 8));
     // Not judged: zeta = 10^(-15/8) = 0.075, theta = 30 and 150 deg, rdisp = 100, i = 10. There the motion

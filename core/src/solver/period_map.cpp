@@ -38,7 +38,8 @@ enum class StepEnd { reached_end, event, failed };
 
 struct PhaseOutcome {
     StepEnd how = StepEnd::reached_end;
-    int event = -1; // index into the event list
+    int event = -1;      // index into the event list
+    double short_by = 0; // how far the event function still was on the old side where the event was taken
 };
 
 // Integrates y' = f from tau to tau1 with Radau IIA steps until tau1 or the first event.
@@ -113,6 +114,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
         if (hit >= 0) {
             // Earliest crossing in (s_lo, s_hi] among the functions that leave their side there.
             double best = s_hi;
+            double roots[4] = {s_hi, s_hi, s_hi, s_hi}; // located crossing of each function (n_ev <= 4)
             for (int j = 0; j < n_ev; ++j) {
                 auto gj = [&](double s) {
                     return evs[j].sign * g(j, tau + s * hh, s == 1 ? st.y1() : st.at(s));
@@ -137,6 +139,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                         side = 1;
                     }
                 }
+                if (j < 4) roots[j] = b;
                 if (b < best || (b == best && j < hit)) {
                     best = b;
                     hit = j;
@@ -151,8 +154,13 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             // corrections of its length put it on the new side, so that the next phase starts where its law
             // holds (else it would switch back at once).
             double he = best * hh;
-            // No further than a hair past the located root, and never past another event.
-            const double h_cap = std::min(s_hi, best + 0.01) * hh;
+            // No further than a hair past the located root, and never past another event: where two events
+            // fall within that hair (the tip grazes the circle just as v turns), stepping past the other one
+            // would integrate its stretch with the wrong law.
+            double s_cap = std::min(s_hi, best + 0.01);
+            for (int j = 0; j < n_ev && j < 4; ++j)
+                if (j != hit && roots[j] > best) s_cap = std::min(s_cap, roots[j]);
+            const double h_cap = s_cap * hh;
             const double slope = [&] {
                 const double d = std::min(1e-3, best);
                 const double g1 = evs[hit].sign * g(hit, tau + best * hh, st.at(best));
@@ -161,12 +169,14 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             }();
             RadauStep<N> se;
             bool have_se = false;
+            double short_by = 0;
             for (int it = 0; it < 6 && he > 1e-13 * (1 + std::abs(tau)); ++it) {
                 RadauStep<N> trial = radau_step<N>(pb, tau, y, he, rq.atol, &st, rq.sensitivity, false);
                 if (!trial.solved) break;
                 se = trial;
                 have_se = true;
                 const double ge = evs[hit].sign * g(hit, tau + he, se.y1());
+                short_by = std::max(0.0, ge);
                 if (ge <= 0 || !(slope < 0) || he >= h_cap) break;
                 bool other = false;
                 for (int j = 0; j < n_ev; ++j)
@@ -187,6 +197,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 }
                 se.dy1_dy0_minus_i = st.dy1_dy0_minus_i * best; // first order in the fraction of the step
                 have_se = true;
+                short_by = std::max(0.0, evs[hit].sign * g(hit, tau + he, se.y1()));
             }
             if (he > 1e-13 * (1 + std::abs(tau))) {
                 ++out.steps;
@@ -199,6 +210,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             }
             res.how = StepEnd::event;
             res.event = hit;
+            res.short_by = short_by;
             return res;
         }
         ++out.steps;
@@ -315,6 +327,7 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             const double ta = tau;
             record(ta, tb, [&](double t) { return Vec2(la + r * m.dispP(ta, t)); });
             out.force_integral += la * (tb - ta) + r * m.int_dispP(ta, tb);
+            if (rq.sensitivity) out.G += (tb - ta) * (Eigen::Matrix2d::Identity() + E); // T fixed: dl/dl0 too
             out.dL += m.dispP(ta, tb);
             l = la + r * m.dispP(ta, tb);
             tau = tb;
@@ -334,7 +347,12 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             };
             auto on_step = [&](const RadauStep<1>& st, const Eigen::Vector2d& integral) {
                 out.force_integral += integral;
-                if (rq.sensitivity) R *= 1 + st.dy1_dy0_minus_i(0, 0);
+                if (rq.sensitivity) {
+                    // dl/dl0 = e_perp R on the circle; its integral by the trapezoidal rule.
+                    const Eigen::Matrix2d m0 = perp(pb.force(st.y0)) * R;
+                    R *= 1 + st.dy1_dy0_minus_i(0, 0);
+                    out.G += 0.5 * st.h * (m0 + perp(pb.force(st.y1())) * R);
+                }
                 record(st.tau0, st.tau0 + st.h,
                        [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
             };
@@ -366,7 +384,11 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
         };
         auto on_step = [&](const RadauStep<2>& st, const Eigen::Vector2d& integral) {
             out.force_integral += integral;
-            if (rq.sensitivity) E += st.dy1_dy0_minus_i * (Eigen::Matrix2d::Identity() + E);
+            if (rq.sensitivity) {
+                const Eigen::Matrix2d m0 = Eigen::Matrix2d::Identity() + E;
+                E += st.dy1_dy0_minus_i * m0;
+                out.G += 0.5 * st.h * (m0 + Eigen::Matrix2d::Identity() + E);
+            }
             record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
         };
         const PhaseOutcome oc =
@@ -379,6 +401,11 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
                 s = -s;
                 event(OdeEventKind::velocity_sign);
             } else {
+                // Reached where the step had to stop short (the tip grazes the circle just as v turns, and
+                // the velocity event comes first): for i >= 1 the remainder dropped by pinning is an error
+                // of its own. For i < 1 the law closes a gap d in a time ~ d^(1 - i) (finite-time reach), so
+                // dropping it only moves the reach that much earlier.
+                if (m.i >= 1) out.pin_drop = std::max(out.pin_drop, oc.short_by);
                 to_circle();
                 event(OdeEventKind::reach_zss);
             }

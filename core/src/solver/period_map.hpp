@@ -35,9 +35,13 @@ struct PeriodResult {
     Vec2 dL{0, 0};             // L(tau1) - L(tau0) in x_v, summed phase by phase (no cancellation)
     Vec2 force_integral{0, 0}; // int F dtau over [tau0, tau1]
     Eigen::Matrix2d E = Eigen::Matrix2d::Zero(); // dL(tau1)/dL(tau0) - I
+    // int dl(tau)/dl(tau0) dtau over [tau0, tau1] (trapezoidal over the steps, which overestimates the
+    // integral of a decaying sensitivity): force_integral moves by G dl0 when the start moves by dl0.
+    Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
     Phase start = Phase::stick, end = Phase::stick;
     bool visited_circle = false; // slipped at full deflection at some time
     bool left_circle = false;    // was on the circle and left it (v < 0: relaxation or stick)
+    double pin_drop = 0;         // largest 1 - |l| dropped beyond kPin where a grazing reach was taken
     long steps = 0, rejected = 0;
     int events = 0;
 };
