@@ -86,8 +86,12 @@ struct InteriorProblem {
     double s;    // sgn v of this piece
     double bmin; // floor of the base 1 - s rho (a stage may stray past the circle)
 
+    int whole_i; // i when it is a whole number up to 16 (powers by multiplication), else 0
+
     InteriorProblem(const LagModel& model, Vec2 la, double sign)
-        : m(&model), l_a(la), s(sign), bmin(0.25 * kPin) {}
+        : m(&model), l_a(la), s(sign), bmin(0.25 * kPin),
+          whole_i(model.i >= 2 && model.i <= 16 && model.i == std::floor(model.i) ? static_cast<int>(model.i)
+                                                                                  : 0) {}
 
     Vec2 force(const Vec& D) const { return l_a + m->r * D; }
     // dF/dtau given the state's rate.
@@ -100,6 +104,19 @@ struct InteriorProblem {
         if (i == 1) {
             q = rho > 0 ? (1 - b) / rho : s;
             dk = s;
+            return;
+        }
+        if (whole_i > 0) {
+            // 1 - b^n = (1 - b)(1 + b + ... + b^(n-1)), and 1 - b = s rho where b is not floored: no
+            // cancellation for small rho, no exp/log.
+            double sum = 0, pw = 1; // pw = b^k
+            for (int k = 0; k < whole_i; ++k) {
+                sum += pw;
+                if (k + 1 < whole_i) pw *= b;
+            }
+            // sum = sum_{k<n} b^k, pw = b^(n-1)
+            q = b > bmin ? s * sum : (rho > 1e-300 ? (1 - pw * b) / rho : s * i);
+            dk = s * i * pw;
             return;
         }
         // -expm1(i log1p(-s rho)) / rho: accurate for small rho.
