@@ -15,11 +15,16 @@
 
 #include "fv/gfx/png.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <deque>
+#include <future>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace fv::cli {
 namespace {
@@ -29,6 +34,18 @@ struct Size {
 };
 
 constexpr int kMinW = 320, kMinH = 240, kMaxW = 7680, kMaxH = 4320;
+
+// PNG encodings run in parallel as long as their frames fit in this budget: each holds about two frames (the
+// pixels and stb's filtered copy of them). At least one runs, at most one per core: 2 at 1280x800 (3.9 MiB
+// frames), 1 above 2^20 pixels (1920x1080, 7680x4320). tests/reliability/render_memory_test.cpp holds the
+// growth of memory with the number of figures to this budget plus one frame.
+constexpr std::size_t kEncodeBudget = std::size_t{16} << 20;
+
+std::size_t encoders_for(int w, int h) {
+    const std::size_t job = std::size_t{2} * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
+    const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    return std::clamp<std::size_t>(kEncodeBudget / job, 1, cores);
+}
 
 CLI::Validator size_spec() {
     return CLI::Validator(
@@ -221,66 +238,62 @@ Command add_render_command(CLI::App& root) {
                 } catch (const std::exception& e) {
                     throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
                 }
-                // Compute and draw one figure at a time (GL is single-threaded); PNG encoding, the slow
-                // part, runs on all cores at the end.
+                // One figure at a time, so that memory does not grow with the number of figures: figure k is
+                // computed and drawn (GL is single-threaded) while the frames before it are PNG-encoded (the
+                // slow part) and written on other threads; it is handed over when fewer than `encoders` are
+                // in flight, and the frame is freed once encoded. Alive at any time: the context's
+                // framebuffer, the frame being drawn, the encoders' frames, the data of one figure.
                 struct Output {
                     std::string id;
                     gfx::Image image;
                     std::vector<std::pair<std::string, std::string>> csv; // file, content
                 };
-                std::vector<Output> outs;
-                std::vector<FigureData> figures;
-                std::vector<char> statuses_known; // per figure (every figure's ratio rows keep it now)
-                for (const FigureSpec& spec : specs) {
-                    figures.push_back(compute_figure(spec));
-                    statuses_known.push_back(true);
-                }
-                if (fig19) {
-                    figures.push_back(std::move(*fig19));
-                    statuses_known.push_back(true);
-                    apply_test_hook(fig19_fit);
-                }
-                for (std::size_t k = 0; k < figures.size(); ++k)
-                    if (statuses_known[k])
-                        for (TableData& t : figures[k].tables) apply_test_hook(t.ratios);
-                for (std::size_t k = 0; k < figures.size(); ++k) {
-                    const FigureData& data = figures[k];
-                    Output o{data.id, session->render_figure(data), {}};
-                    for (const TableData& t : data.tables)
-                        o.csv.push_back(
-                            {dir + "/" + data.id + t.suffix + ".csv", csv_of(t, statuses_known[k] != 0)});
-                    outs.push_back(std::move(o));
-                }
-                std::vector<std::string> errors(outs.size());
-                parallel_for(static_cast<int>(outs.size()), [&](int k) {
-                    const Output& o = outs[static_cast<std::size_t>(k)];
-                    const auto png = gfx::encode_png(o.image);
+                auto write = [dir](Output o) { // owns the frame and frees it as soon as it is encoded
+                    const std::vector<unsigned char> png = gfx::encode_png(o.image);
+                    std::vector<std::uint8_t>().swap(o.image.rgba);
                     std::string err = write_file_atomic(
                         dir + "/" + o.id + ".png",
                         std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
                     for (const auto& [file, content] : o.csv)
                         if (err.empty()) err = write_file_atomic(file, content);
-                    errors[static_cast<std::size_t>(k)] = err;
-                });
-                for (std::size_t k = 0; k < outs.size(); ++k) {
-                    if (!errors[k].empty()) throw RuntimeFailure(errors[k]);
-                    std::printf("wrote %s/%s.png (%dx%d) and its CSV\n", dir.c_str(), outs[k].id.c_str(),
-                                outs[k].image.width, outs[k].image.height);
-                }
-                std::fflush(stdout);
+                    return err;
+                };
+                const std::size_t encoders = encoders_for(sz.w, sz.h);
+                std::deque<std::pair<std::future<std::string>, std::string>> pending; // jobs, "wrote" lines
+                auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
+                    std::string err = pending.front().first.get(), line = std::move(pending.front().second);
+                    pending.pop_front();
+                    if (!err.empty()) throw RuntimeFailure(err);
+                    std::printf("%s\n", line.c_str());
+                };
+                if (fig19) apply_test_hook(fig19_fit);
                 // Every figure is written; those with failed points make the exit status 3.
+                const std::size_t nfigures = specs.size() + (fig19 ? 1 : 0);
                 std::string failed;
                 int nfailed = 0;
-                for (std::size_t k = 0; k < figures.size(); ++k) {
-                    const bool is_fit = data_fig && k + 1 == figures.size();
-                    const std::string w =
-                        check_figure(figures[k], statuses_known[k] != 0, is_fit ? &fig19_fit : nullptr);
-                    if (w.empty()) continue;
-                    ++nfailed;
-                    failed += (failed.empty() ? "" : "; ") + w;
+                for (std::size_t k = 0; k < nfigures; ++k) {
+                    const bool is_fit = k == specs.size(); // fig19 comes last
+                    FigureData data = is_fit ? std::move(*fig19) : compute_figure(specs[k]);
+                    for (TableData& t : data.tables) apply_test_hook(t.ratios);
+                    Output o{data.id, session->render_figure(data), {}};
+                    for (const TableData& t : data.tables)
+                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t, true)});
+                    if (const std::string w = check_figure(data, true, is_fit ? &fig19_fit : nullptr);
+                        !w.empty()) {
+                        ++nfailed;
+                        failed += (failed.empty() ? "" : "; ") + w;
+                    }
+                    while (pending.size() >= encoders) finish_oldest();
+                    std::string line = "wrote " + dir + "/" + o.id + ".png (" +
+                                       std::to_string(o.image.width) + "x" + std::to_string(o.image.height) +
+                                       ") and its CSV";
+                    auto job = std::async(std::launch::async, write, std::move(o));
+                    pending.emplace_back(std::move(job), std::move(line));
                 }
+                while (!pending.empty()) finish_oldest();
+                std::fflush(stdout);
                 if (nfailed > 0)
-                    throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(figures.size()) +
+                    throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(nfigures) +
                                            " figures have failed points (" + failed +
                                            "); all figures are written");
             }};
