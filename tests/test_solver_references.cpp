@@ -478,6 +478,74 @@ TEST_CASE("d. rdisp -> 0, theta = 0: r_x -> zeta / mean|zeta + cos tau| (i = 1),
     FV_REPORT(f);
 }
 
+// The small-amplitude limit (rdisp -> 0 at fixed zeta > 0) of the period mean of F, derived here by
+// quadrature, not from the solver's closed form: the force hardly moves in a period, T moves only along
+// e = l/|l|, and on average it must move along e_x at speed zeta, so e = e_x and rho = |l| balances
+// (1/2 pi) int v k(v, rho) dtau = zeta with v = zeta + cos(tau) cos(theta), k = 1 - (1 - sgn(v) rho)^i
+// (rho = 1, the circle, when no rho < 1 does). i = 0: the tip slips at full deflection, (1, 0). zeta = 0:
+// i > 0 symmetric, (0, 0); i = 0 the zeta -> 0+ lens limit, (1, 0) + O(rdisp).
+fv::Vec2 small_amplitude_reference(double zeta, double theta, double i) {
+    if (i == 0) return {1, 0};
+    if (zeta == 0) return {0, 0};
+    const double c = std::cos(theta);
+    // v > 0 throughout: the balance is zeta (1 - (1 - rho)^i) = zeta, only rho = 1.
+    if (std::fabs(c) <= zeta) return {1, 0};
+    // Pieces between the zeros of v, Simpson on each (v k is smooth there).
+    std::vector<double> cuts{0.0, 2 * kPi};
+    if (std::fabs(c) > zeta) {
+        const double t = std::acos(-zeta / c);
+        cuts = {0.0, t, 2 * kPi - t, 2 * kPi};
+    }
+    const auto drift = [&](double rho) {
+        double sum = 0;
+        for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+            const int n = 2000;
+            const double a = cuts[k], h = (cuts[k + 1] - a) / n;
+            const double mid = a + 0.5 * (cuts[k + 1] - a);
+            const double sg = zeta + std::cos(mid) * c < 0 ? -1.0 : 1.0;
+            const auto g = [&](double tau) {
+                const double v = zeta + std::cos(tau) * c;
+                return v * (1 - std::pow(1 - sg * rho, i));
+            };
+            double s = g(a) + g(cuts[k + 1]);
+            for (int m = 1; m < n; ++m) s += (m % 2 ? 4 : 2) * g(a + m * h);
+            sum += s * h / 3;
+        }
+        return sum / (2 * kPi) - zeta;
+    };
+    if (!(drift(1.0) > 0)) return {1, 0};
+    double lo = 0, hi = 1;
+    for (int it = 0; it < 60; ++it) {
+        const double m = 0.5 * (lo + hi);
+        (drift(m) > 0 ? hi : lo) = m;
+    }
+    return {0.5 * (lo + hi), 0};
+}
+
+TEST_CASE(
+    "d. rdisp -> 0 down to the smallest subnormal: every i, theta, zeta meets the small-amplitude limit",
+    "[solver-ref][compliant-limit]") {
+    // The exact state differs from the limit by O(rdisp): allowed 100 rdisp on top of the error estimate.
+    Failures f;
+    for (double rdisp : {5e-10, 1e-12, 1e-15, 1e-20, 1e-100, 1e-300, 5e-324})
+        for (double i : {0.0, 0.5, 1.0, 2.0, 5.0, 10.0})
+            for (double zeta : {0.0, 1e-3, 0.5, 100.0})
+                for (double theta_deg : {0.0, 30.0, 60.0, 90.0, 120.0, 150.0, 180.0}) {
+                    const Params p{zeta, theta_deg * kDeg, rdisp, i};
+                    const auto r = solve(p);
+                    if (!contract_check(f, p, r)) continue;
+                    const fv::Vec2 lim = small_amplitude_reference(zeta, theta_deg * kDeg, i);
+                    const double err = std::max(std::fabs(r.rx - lim.x()), std::fabs(r.ry - lim.y()));
+                    if (!(err <= r.error_estimate + 100 * rdisp + 1e-13))
+                        f.fail(p,
+                               fmt("r_x=%.15f r_y=%.3e, limit r_x=%.15f: |error| %.3e", r.rx, r.ry, lim.x(),
+                                   err) +
+                                   fmt(" > est %.2e + 100 rdisp", r.error_estimate),
+                               err);
+                }
+    FV_REPORT(f);
+}
+
 // ---------------------------------------------------------------------------------------------------------
 // e. The paper's scheme, Richardson-extrapolated to dtau -> 0, at moderate points.
 // ---------------------------------------------------------------------------------------------------------

@@ -69,6 +69,9 @@ struct OdeSolution {
 // periods = total_periods = periods integrated (Newton's and the error estimate's, not the skipped ones);
 // steps_per_period = accepted steps of the last period; levels = 1; steady_error = estimated effect on r of
 // the distance to L*; error_estimate = steady_error + integration error (+ the 1e-12 pinning allowance).
+// rdisp < 1e-9 (a period's motion lost in the rounding of the force): the small-amplitude limit corrected
+// to first order from two verified solves at rdisp = 1e-9 and 1e-8 (docs/model.md, "r_disp below 1e-9");
+// steady_error is then the anchors' disagreement with that linear model, and `lag` may be infinite.
 // zeta = 0 with i = 0 and rdisp <= 1: the steady state is not unique (the tip never slips); the result is the
 // limit zeta -> 0+ in closed form (docs/model.md).
 OdeSolution ode_solve(const Params& p, const OdeOptions& opt = {});
