@@ -172,10 +172,11 @@ TEST_CASE("CLI: trace gives one steady period with the documented columns", "[cl
     std::istringstream in(r.out);
     std::string header, line;
     std::getline(in, header);
-    CHECK(header == "tau,Px,Py,Tx,Ty,z,Fx,Fy");
+    CHECK(header == "tau,Px,Py,Tx,Ty,z,Fx,Fy,status");
     int rows = 0;
     double first_tau = 0, last_tau = 0;
     while (std::getline(in, line)) {
+        CHECK(line.substr(line.rfind(',')) == ",ok");
         const double tau = std::stod(line.substr(0, line.find(',')));
         if (rows++ == 0) first_tau = tau;
         last_tau = tau;

@@ -64,44 +64,36 @@ CLI::Validator size_spec() {
         "WxH");
 }
 
-// statuses_known: false for ratio rows whose producer did not keep the solver's status (status empty).
-std::string csv_of(const TableData& t, bool statuses_known) {
+std::string csv_of(const TableData& t) {
     if (!t.text.empty()) return t.text;
-    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv, {}, statuses_known);
+    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
     SweepPoint row;
     row.result.period = t.trace;
+    row.result.status = t.status;
     return trace_table(row, Format::csv);
 }
 
-// The numerical failures behind one figure, as far as its data show them: ratio rows (the map's grid too)
-// carry the solver's status; trace tables carry only numbers, so there only values that are not finite
-// can be seen. Prints one stderr line per failure (at most a few
-// rows per table) and returns a one-line summary, empty when nothing failed.
-std::string check_figure(const FigureData& fig, bool statuses_known, const FitResult* fit) {
+// The numerical failures behind one figure: ratio rows (the map's grid too) carry the solver's status per
+// point, trace tables the status of their steady period (and values that are not finite count as failed).
+// Prints one stderr line per failure (at most a few rows per table) and returns a one-line summary, empty
+// when nothing failed.
+std::string check_figure(const FigureData& fig, const FitResult* fit) {
     std::vector<std::string> what;
     for (const TableData& t : fig.tables) {
         const std::string name = fig.id + t.suffix;
-        if (!t.ratios.empty() && statuses_known) {
+        if (!t.ratios.empty()) {
             if (const Failures f = failures_of(t.ratios); f.count > 0) {
                 print_failures(t.ratios, name + ": ", 5);
                 what.push_back(name + ": " + std::to_string(f.count) + " of " +
                                std::to_string(t.ratios.size()) + " points (" + f.by_reason + ")");
             }
-        } else if (!t.ratios.empty()) {
-            int bad = 0;
-            for (const SweepPoint& r : t.ratios) bad += !std::isfinite(r.result.rx);
-            if (bad > 0) {
-                std::fprintf(stderr, "frictionviz: %s: failed: non_finite: %d grid values of r_x\n",
-                             name.c_str(), bad);
-                what.push_back(name + ": " + std::to_string(bad) + " of " + std::to_string(t.ratios.size()) +
-                               " points (non_finite " + std::to_string(bad) + ")");
-            }
-        } else if (!t.trace.empty() && !all_finite(t.trace)) {
-            std::fprintf(stderr,
-                         "frictionviz: %s: failed: non_finite: the steady period has values that are "
-                         "not finite numbers\n",
-                         name.c_str());
-            what.push_back(name + ": the steady period (non_finite)");
+        } else if (!t.trace.empty()) {
+            const SteadyStatus st =
+                ok(t.status) && !all_finite(t.trace) ? SteadyStatus::non_finite : t.status;
+            if (ok(st)) continue;
+            std::fprintf(stderr, "frictionviz: %s: failed: %s: the steady period drawn is not verified\n",
+                         name.c_str(), to_string(st));
+            what.push_back(name + ": the steady period (" + to_string(st) + ")");
         }
     }
     if (fit)
@@ -274,12 +266,11 @@ Command add_render_command(CLI::App& root) {
                 for (std::size_t k = 0; k < nfigures; ++k) {
                     const bool is_fit = k == specs.size(); // fig19 comes last
                     FigureData data = is_fit ? std::move(*fig19) : compute_figure(specs[k]);
-                    for (TableData& t : data.tables) apply_test_hook(t.ratios);
+                    for (TableData& t : data.tables) apply_test_hook(t);
                     Output o{data.id, session->render_figure(data), {}};
                     for (const TableData& t : data.tables)
-                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t, true)});
-                    if (const std::string w = check_figure(data, true, is_fit ? &fig19_fit : nullptr);
-                        !w.empty()) {
+                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t)});
+                    if (const std::string w = check_figure(data, is_fit ? &fig19_fit : nullptr); !w.empty()) {
                         ++nfailed;
                         failed += (failed.empty() ? "" : "; ") + w;
                     }

@@ -236,11 +236,15 @@ std::string trace_table(const SweepPoint& row, Format f) {
         j["trace"] = cols;
         return j.dump(1) + "\n";
     }
-    std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy\n";
-    s.reserve(samples.size() * 120);
+    // The status on every row, as in ratio tables: a row read alone still says whether it is a result.
+    const SteadyStatus st =
+        ok(row.result.status) && !all_finite(samples) ? SteadyStatus::non_finite : row.result.status;
+    const std::string status = "," + std::string(to_string(st)) + "\n";
+    std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy,status\n";
+    s.reserve(samples.size() * 130);
     for (const auto& x : samples) {
         s += num(x.tau) + "," + num(x.P.x()) + "," + num(x.P.y()) + "," + num(x.T.x()) + "," + num(x.T.y()) +
-             "," + num(x.z) + "," + num(x.F.x()) + "," + num(x.F.y()) + "\n";
+             "," + num(x.z) + "," + num(x.F.x()) + "," + num(x.F.y()) + status;
     }
     return s;
 }

@@ -41,7 +41,8 @@ std::string ratio_text(const SweepPoint& row, const Vibration& v = {});
 // True when every number of every sample is finite.
 bool all_finite(const std::vector<Sample>& period);
 
-// Columns tau,Px,Py,Tx,Ty,z,Fx,Fy of one steady-state period.
+// Columns tau,Px,Py,Tx,Ty,z,Fx,Fy,status of one steady-state period (status: of the steady state, on every
+// row; JSON: the ratio keys, status among them, and the columns under "trace").
 std::string trace_table(const SweepPoint& row, Format f);
 
 // The --out FILE option of the commands that print one result (ratio, sweep, trace, fit). `out` starts as

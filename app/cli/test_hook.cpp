@@ -62,6 +62,13 @@ void apply_test_hook(std::vector<SweepPoint>& rows) {
         for (SweepPoint& r : rows) apply(*f, r);
 }
 
+void apply_test_hook(TableData& table) {
+    const auto f = forced();
+    if (!f) return;
+    for (SweepPoint& r : table.ratios) apply(*f, r);
+    if (!table.trace.empty() && !f->zeta) table.status = f->status;
+}
+
 void apply_test_hook(FitResult& fit) {
     if (!forced()) return;
     for (FitCandidate& c : fit.candidates) c.unsteady = c.evaluations;

@@ -320,6 +320,7 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
     case FigureKind::period_view:
     case FigureKind::period_force: {
         const SteadyResult r = steady_trace(p, spec.steps_per_period);
+        SteadyStatus status = r.status;
         if (spec.kind == FigureKind::period_force) {
             fig.panels.push_back(force_panel(r.period));
         } else if (spec.overlay_other_i) {
@@ -327,10 +328,11 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
             q.i = p.i == 0 ? 1 : 0;
             const SteadyResult r2 = steady_trace(q, spec.steps_per_period);
             fig.panels.push_back(top_view(p, r.period, &r2.period));
+            if (ok(r.status)) status = r2.status;
         } else {
             fig.panels.push_back(top_view(p, r.period, nullptr));
         }
-        fig.tables.push_back({"", {}, r.period, ""});
+        fig.tables.push_back({"", {}, r.period, "", status});
         break;
     }
     case FigureKind::map: {
@@ -354,7 +356,7 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
-        fig.tables.push_back({"", {}, r.period, ""});
+        fig.tables.push_back({"", {}, r.period, "", r.status});
         fig.tables.push_back(std::move(ratios));
         break;
     }

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <string>
 #include <sys/stat.h>
@@ -23,12 +24,13 @@ struct Run {
 };
 
 // Runs `frictionviz ARGS` through sh in `cwd`; stdout and stderr are captured in files there unless `args`
-// redirects stdout itself; stdin is `stdin_from`.
+// redirects stdout itself; stdin is `stdin_from`; `env`: assignments put before the command.
 Run run(const Scratch& cwd, const std::string& args, bool capture_stdout = true,
-        const std::string& stdin_from = "/dev/null") {
+        const std::string& stdin_from = "/dev/null", const std::string& env = "") {
     const std::string o = cwd / ".stdout", e = cwd / ".stderr";
-    const std::string cmd = "cd '" + cwd.dir() + "' && " + std::string(FV_EXE) + " " + args +
-                            (capture_stdout ? " >" + o : std::string()) + " 2>" + e + " <" + stdin_from;
+    const std::string cmd = "cd '" + cwd.dir() + "' && " + (env.empty() ? "" : "env " + env + " ") +
+                            std::string(FV_EXE) + " " + args + (capture_stdout ? " >" + o : std::string()) +
+                            " 2>" + e + " <" + stdin_from;
     const auto t0 = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -175,4 +177,51 @@ TEST_CASE("CLI reliability: messages name what is allowed", "[reliability]") {
     const int status = p ? ::pclose(p) : -1;
     CHECK(WEXITSTATUS(status) == 1);
     CHECK_THAT(err, Catch::Contains("--headless"));
+}
+
+TEST_CASE("CLI reliability: render's status reaches trace CSVs and the exit status", "[reliability]") {
+    Scratch s;
+    const std::string cmd =
+        "render --figure fig8,scene --zeta 0.3 --theta 30 --rdisp 2 --i 1 --size 320x240 --out .";
+    Run r = run(s, cmd);
+    CHECK(r.code == 0);
+    CHECK_THAT(slurp(s / "fig8.csv"),
+               Catch::StartsWith("tau,Px,Py,Tx,Ty,z,Fx,Fy,status\n") && Catch::EndsWith(",ok\n"));
+    r = run(s, cmd, true, "/dev/null", "FV_TEST_FORCE_STATUS=integration_failed");
+    CHECK(r.code == 3);
+    CHECK_THAT(r.err, Catch::Contains("fig8: failed: integration_failed"));
+    CHECK_THAT(slurp(s / "fig8.csv"), Catch::EndsWith(",integration_failed\n"));
+    CHECK_THAT(slurp(s / "scene.csv"), Catch::EndsWith(",integration_failed\n"));
+}
+
+TEST_CASE("CLI reliability: progress lines are out before the run ends (a kill -9 keeps them)",
+          "[reliability]") {
+    // stdout is a pipe here, where the C library would buffer by blocks: the first "wrote" line must arrive
+    // while the run is still busy with the next figures (at this size one frame is encoded at a time, so the
+    // last figure's PNG cannot exist yet when the first line is printed), and killing it then keeps the line.
+    Scratch s;
+    const std::string out = s.dir();
+    int p[2];
+    REQUIRE(::pipe(p) == 0);
+    const pid_t child = ::fork();
+    if (child == 0) {
+        ::dup2(p[1], 1);
+        ::close(p[0]);
+        ::close(p[1]);
+        ::execl(FV_EXE, FV_EXE, "render", "--figure", "fig5,fig8,fig9", "--size", "3840x2160", "--out",
+                out.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    ::close(p[1]);
+    std::string line;
+    char c = 0;
+    while (::read(p[0], &c, 1) == 1 && c != '\n') line += c;
+    const bool last_written = ::access((s / "fig9.png").c_str(), F_OK) == 0;
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);
+    ::close(p[0]);
+    CHECK_THAT(line, Catch::StartsWith("wrote " + out + "/fig5.png"));
+    CHECK_FALSE(last_written); // the line came before the end
+    CHECK(WIFSIGNALED(status));
 }

@@ -91,6 +91,8 @@ struct TableData {
     std::vector<SweepPoint> ratios; // ratio rows (model,i,theta_deg,...), or
     std::vector<Sample> trace;      // trace rows (tau,Px,...), or
     std::string text;               // a ready-made table (the map's theta*(zeta) curve)
+    // Trace rows of a steady period: the solver's status for it (the worse of the two for an overlay).
+    SteadyStatus status = SteadyStatus::converged;
 };
 
 struct FigureData {
