@@ -9,7 +9,8 @@
 // r_x, r_y or error estimate); the slowest points. Then the (zeta, theta) map figure (fv::map_figure:
 // 200 zeta x 91 theta, all cores) at rdisp = 1, 100, 1e4.
 // This prints figures; it asserts nothing (timings are not tests).
-//   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map] [--tolerance T]
+//   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
+//                          [--tolerance T]
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
 #include "fv/figure_data.hpp"
@@ -96,7 +97,7 @@ std::string describe(const Point& q) {
 } // namespace
 
 int main(int argc, char** argv) {
-    bool quick = false, map = true;
+    bool quick = false, map = true, grid = true;
     int repeats = 3, worst = 15;
     double map_i = 1;
     fv::SteadyOptions opt; // --tolerance: the solver's target (default 1e-8; the targets are at 1e-6)
@@ -106,6 +107,8 @@ int main(int argc, char** argv) {
             quick = true;
         else if (k == "--no-map")
             map = false;
+        else if (k == "--map-only")
+            grid = false;
         else if (k == "--repeats" && a + 1 < argc)
             repeats = std::max(1, std::atoi(argv[++a]));
         else if (k == "--worst" && a + 1 < argc)
@@ -115,10 +118,10 @@ int main(int argc, char** argv) {
         else if (k == "--tolerance" && a + 1 < argc)
             opt.ode_tolerance = std::atof(argv[++a]);
         else {
-            std::fprintf(
-                stderr,
-                "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map] [--tolerance T]\n",
-                argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
+                         "[--tolerance T]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -153,83 +156,85 @@ int main(int argc, char** argv) {
                     q.p = {z, th, std::pow(10.0, e), i};
                     pts.push_back(q);
                 }
-    std::printf(
-        "fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu theta x %zu "
-        "rdisp x %zu i)%s, median of %d call(s) per point, one thread\n",
-        opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
-        quick ? " [--quick]" : "", repeats);
-    std::fflush(stdout);
+    if (grid) {
+        std::printf(
+            "fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu theta x %zu "
+            "rdisp x %zu i)%s, median of %d call(s) per point, one thread\n",
+            opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
+            quick ? " [--quick]" : "", repeats);
+        std::fflush(stdout);
 
-    const auto t_start = std::chrono::steady_clock::now();
-    for (Point& q : pts) {
-        std::vector<double> t;
-        for (int k = 0; k < repeats; ++k) {
-            const auto a = std::chrono::steady_clock::now();
-            q.r = fv::steady_ratio(fv::Model::dahl, q.p, opt);
-            const auto b = std::chrono::steady_clock::now();
-            t.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+        const auto t_start = std::chrono::steady_clock::now();
+        for (Point& q : pts) {
+            std::vector<double> t;
+            for (int k = 0; k < repeats; ++k) {
+                const auto a = std::chrono::steady_clock::now();
+                q.r = fv::steady_ratio(fv::Model::dahl, q.p, opt);
+                const auto b = std::chrono::steady_clock::now();
+                t.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+            }
+            q.ms = quantile(t, 0.5);
         }
-        q.ms = quantile(t, 0.5);
-    }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
 
-    std::printf("\nBy rdisp decade\n");
-    header("rdisp");
-    for (int e : decades)
-        row(num("1e%+03.0f", e),
-            stats(pts, [&](const Point& q) { return std::lround(std::log10(q.p.rdisp)) == e; }));
-    std::printf("\nBy i\n");
-    header("i");
-    for (double i : is) row(num("%g", i), stats(pts, [&](const Point& q) { return q.p.i == i; }));
-    std::printf("\nBy theta\n");
-    header("theta deg");
-    for (double th : thetas)
-        row(num("%.0f", th / kDeg), stats(pts, [&](const Point& q) { return q.p.theta == th; }));
-    std::printf("\nBy zeta\n");
-    header("zeta");
-    for (double z : zetas) row(num("%.4g", z), stats(pts, [&](const Point& q) { return q.p.zeta == z; }));
-    std::printf("\nOverall\n");
-    header("");
-    const Stats all = stats(pts, [](const Point&) { return true; });
-    row("all", all);
-    std::printf("  wall time of the whole grid (all repeats): %.1f s\n", wall);
+        std::printf("\nBy rdisp decade\n");
+        header("rdisp");
+        for (int e : decades)
+            row(num("1e%+03.0f", e),
+                stats(pts, [&](const Point& q) { return std::lround(std::log10(q.p.rdisp)) == e; }));
+        std::printf("\nBy i\n");
+        header("i");
+        for (double i : is) row(num("%g", i), stats(pts, [&](const Point& q) { return q.p.i == i; }));
+        std::printf("\nBy theta\n");
+        header("theta deg");
+        for (double th : thetas)
+            row(num("%.0f", th / kDeg), stats(pts, [&](const Point& q) { return q.p.theta == th; }));
+        std::printf("\nBy zeta\n");
+        header("zeta");
+        for (double z : zetas) row(num("%.4g", z), stats(pts, [&](const Point& q) { return q.p.zeta == z; }));
+        std::printf("\nOverall\n");
+        header("");
+        const Stats all = stats(pts, [](const Point&) { return true; });
+        row("all", all);
+        std::printf("  wall time of the whole grid (all repeats): %.1f s\n", wall);
 
-    // Failures by kind.
-    std::map<std::string, int> kinds;
-    std::vector<const Point*> failed;
-    for (const Point& q : pts)
-        if (q.failed()) {
-            failed.push_back(&q);
-            const bool finite =
-                std::isfinite(q.r.rx) && std::isfinite(q.r.ry) && std::isfinite(q.r.error_estimate);
-            ++kinds[finite ? fv::to_string(q.r.status)
-                           : std::string("non-finite (status ") + fv::to_string(q.r.status) + ")"];
+        // Failures by kind.
+        std::map<std::string, int> kinds;
+        std::vector<const Point*> failed;
+        for (const Point& q : pts)
+            if (q.failed()) {
+                failed.push_back(&q);
+                const bool finite =
+                    std::isfinite(q.r.rx) && std::isfinite(q.r.ry) && std::isfinite(q.r.error_estimate);
+                ++kinds[finite ? fv::to_string(q.r.status)
+                               : std::string("non-finite (status ") + fv::to_string(q.r.status) + ")"];
+            }
+        std::printf("\nFailures (status not ok or non-finite): %zu of %zu\n", failed.size(), pts.size());
+        for (const auto& [k, n] : kinds) std::printf("  %-36s %6d\n", k.c_str(), n);
+        // Worst failures: non-finite values first, then by error estimate.
+        const auto badness = [](const Point* q) {
+            if (!std::isfinite(q->r.rx) || !std::isfinite(q->r.ry)) return 2.0;
+            const double e = q->r.error_estimate;
+            return std::isfinite(e) ? std::min(1.0, e) : 1.0;
+        };
+        std::stable_sort(failed.begin(), failed.end(),
+                         [&](const Point* a, const Point* b) { return badness(a) > badness(b); });
+        for (std::size_t k = 0; k < failed.size() && k < static_cast<std::size_t>(worst); ++k) {
+            const Point& q = *failed[k];
+            std::printf("  %s  %-18s r_x=%-14.8g est=%-10.2e %8.3f ms\n", describe(q).c_str(),
+                        fv::to_string(q.r.status), q.r.rx, q.r.error_estimate, q.ms);
         }
-    std::printf("\nFailures (status not ok or non-finite): %zu of %zu\n", failed.size(), pts.size());
-    for (const auto& [k, n] : kinds) std::printf("  %-36s %6d\n", k.c_str(), n);
-    // Worst failures: non-finite values first, then by error estimate.
-    const auto badness = [](const Point* q) {
-        if (!std::isfinite(q->r.rx) || !std::isfinite(q->r.ry)) return 2.0;
-        const double e = q->r.error_estimate;
-        return std::isfinite(e) ? std::min(1.0, e) : 1.0;
-    };
-    std::stable_sort(failed.begin(), failed.end(),
-                     [&](const Point* a, const Point* b) { return badness(a) > badness(b); });
-    for (std::size_t k = 0; k < failed.size() && k < static_cast<std::size_t>(worst); ++k) {
-        const Point& q = *failed[k];
-        std::printf("  %s  %-18s r_x=%-14.8g est=%-10.2e %8.3f ms\n", describe(q).c_str(),
-                    fv::to_string(q.r.status), q.r.rx, q.r.error_estimate, q.ms);
-    }
 
-    // Slowest points.
-    std::vector<const Point*> slow;
-    for (const Point& q : pts) slow.push_back(&q);
-    std::sort(slow.begin(), slow.end(), [](const Point* a, const Point* b) { return a->ms > b->ms; });
-    std::printf("\nSlowest points\n");
-    for (std::size_t k = 0; k < slow.size() && k < static_cast<std::size_t>(worst); ++k) {
-        const Point& q = *slow[k];
-        std::printf("  %s  %8.3f ms  %-14s r_x=%-14.8g est=%.2e periods=%d\n", describe(q).c_str(), q.ms,
-                    fv::to_string(q.r.status), q.r.rx, q.r.error_estimate, q.r.periods);
+        // Slowest points.
+        std::vector<const Point*> slow;
+        for (const Point& q : pts) slow.push_back(&q);
+        std::sort(slow.begin(), slow.end(), [](const Point* a, const Point* b) { return a->ms > b->ms; });
+        std::printf("\nSlowest points\n");
+        for (std::size_t k = 0; k < slow.size() && k < static_cast<std::size_t>(worst); ++k) {
+            const Point& q = *slow[k];
+            std::printf("  %s  %8.3f ms  %-14s r_x=%-14.8g est=%.2e periods=%d\n", describe(q).c_str(), q.ms,
+                        fv::to_string(q.r.status), q.r.rx, q.r.error_estimate, q.r.periods);
+        }
     }
 
     // The (zeta, theta) map (fv::map_figure: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg]), all cores.

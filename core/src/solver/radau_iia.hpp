@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 
 namespace fv::solver {
@@ -30,6 +31,21 @@ struct RadauTableau {
     static constexpr double dd1 = -(13 + 7 * s6) / 3, dd2 = (-13 + 7 * s6) / 3, dd3 = -1.0 / 3;
     // u1 = 1 / gamma, gamma the real eigenvalue of A: 30 / (6 + 81^(1/3) - 9^(1/3)).
     static constexpr double u1 = 30.0 / (6.0 + 4.3267487109222245 - 2.0800838230519041);
+    // A^-1 = T diag(u1, [alpha -beta; beta alpha]) T^-1 (RADAU5's T and TI): the stage system splits into
+    // one real and one complex system of the problem's size. alpha +- i beta are the complex eigenvalues
+    // of A^-1: (12 - 81^(1/3) + 9^(1/3))/60 and (81^(1/3) + 9^(1/3)) sqrt(3)/60, divided by their modulus^2.
+    static constexpr double alpha_raw = (12.0 - 4.3267487109222245 + 2.0800838230519041) / 60.0;
+    static constexpr double beta_raw = (4.3267487109222245 + 2.0800838230519041) * 1.7320508075688772 / 60.0;
+    static constexpr double alpha = alpha_raw / (alpha_raw * alpha_raw + beta_raw * beta_raw);
+    static constexpr double beta = beta_raw / (alpha_raw * alpha_raw + beta_raw * beta_raw);
+    static constexpr double t[3][3] = {
+        {9.1232394870892942792e-02, -0.14125529502095420843, -3.0029194105147424492e-02},
+        {0.24171793270710701896, 0.20412935229379993199, 0.38294211275726193779},
+        {0.96604818261509293619, 1.0, 0.0}};
+    static constexpr double ti[3][3] = {
+        {4.3255798900631553510, 0.33919925181580986954, 0.54177053993587487119},
+        {-4.1787185915519047273, -0.32768282076106238708, 0.47662355450055045196},
+        {-0.50287263494578687595, 2.5719269498556054292, -0.59603920482822492497}};
 };
 
 template <int N> struct RadauStep {
@@ -68,7 +84,6 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     using S = RadauStep<N>;
     using Vec = typename S::Vec;
     using Mat = typename S::Mat;
-    using BigVec = typename S::BigVec;
     using BigMat = typename S::BigMat;
     static constexpr double A[3][3] = {
         {T::a11, T::a12, T::a13}, {T::a21, T::a22, T::a23}, {T::a31, T::a32, T::a33}};
@@ -88,29 +103,49 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     } else {
         for (int j = 0; j < 3; ++j) st.z[j] = C[j] * h * st.f0;
     }
-    // Simplified Newton: the Jacobian at the step's start, factored once.
+    // Simplified Newton with the Jacobian at the step's start, in RADAU5's transformed variables
+    // W = (T^-1 x I) Z: the 3N x 3N system (I - h A x J0) dZ = -(Z - h (A x I) F) becomes
+    //   (u1/h - J0) dW1 = (T^-1 F)_1 - u1/h W1                      (real, N x N),
+    //   ((alpha + i beta)/h - J0) (dW2 + i dW3) = ... (complex, N x N),
+    // the same iterates (Hairer & Wanner, Sec. IV.8). E1 serves the error estimate below as well.
+    using CVec = Eigen::Matrix<std::complex<double>, N, 1>;
+    using CMat = Eigen::Matrix<std::complex<double>, N, N>;
     const Mat J0 = pb.jac(tau0, y0);
-    BigMat G;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-            G.template block<N, N>(N * i, N * j) =
-                (i == j ? Mat(Mat::Identity()) : Mat(Mat::Zero())) - h * A[i][j] * J0;
-    const Eigen::PartialPivLU<BigMat> lu(G);
+    const double fac1 = T::u1 / h, alphn = T::alpha / h, betan = T::beta / h;
+    Mat E1 = -J0;
+    E1.diagonal().array() += fac1;
+    CMat E2 = -J0.template cast<std::complex<double>>();
+    E2.diagonal().array() += std::complex<double>(alphn, betan);
+    const Eigen::PartialPivLU<Mat> lu1(E1);
+    const Eigen::PartialPivLU<CMat> lu2(E2);
+    Vec w[3];
+    for (int i = 0; i < 3; ++i) w[i] = T::ti[i][0] * st.z[0] + T::ti[i][1] * st.z[1] + T::ti[i][2] * st.z[2];
     const double stop = 1e-2 * atol;
     st.solved = false;
     double prev_norm = 0;
     for (int it = 0; it < 10; ++it) {
         for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
-        BigVec res;
-        for (int i = 0; i < 3; ++i) {
-            Vec r = st.z[i];
-            for (int j = 0; j < 3; ++j) r -= h * A[i][j] * st.fz[j];
-            res.template segment<N>(N * i) = r;
+        Vec r[3];
+        for (int i = 0; i < 3; ++i)
+            r[i] = T::ti[i][0] * st.fz[0] + T::ti[i][1] * st.fz[1] + T::ti[i][2] * st.fz[2];
+        r[0] -= fac1 * w[0];
+        r[1] -= alphn * w[1] - betan * w[2];
+        r[2] -= betan * w[1] + alphn * w[2];
+        const Vec dw1 = lu1.solve(r[0]);
+        const CVec dw23 =
+            lu2.solve(CVec(r[1].template cast<std::complex<double>>() +
+                           std::complex<double>(0, 1) * r[2].template cast<std::complex<double>>()));
+        const Vec dw[3] = {dw1, dw23.real(), dw23.imag()};
+        double nrm = 0;
+        bool finite = true;
+        for (int j = 0; j < 3; ++j) {
+            w[j] += dw[j];
+            const Vec dz = T::t[j][0] * dw[0] + T::t[j][1] * dw[1] + T::t[j][2] * dw[2];
+            finite = finite && dz.allFinite();
+            st.z[j] += dz;
+            nrm = std::max(nrm, dz.cwiseAbs().maxCoeff());
         }
-        const BigVec dz = lu.solve(-res);
-        if (!dz.allFinite()) break;
-        for (int j = 0; j < 3; ++j) st.z[j] += dz.template segment<N>(N * j);
-        const double nrm = dz.cwiseAbs().maxCoeff();
+        if (!finite) break;
         if (nrm <= stop) {
             st.solved = true;
             for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
@@ -126,9 +161,7 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     }
     // Error estimate (RADAU5's ESTRAD), filtered through (u1/h - J)^-1 so that it stays meaningful for
     // stiff components.
-    Mat E1 = -J0;
-    E1.diagonal().array() += T::u1 / h;
-    const Eigen::PartialPivLU<Mat> lue(E1);
+    const Eigen::PartialPivLU<Mat>& lue = lu1;
     const Vec f2 = (T::dd1 * st.z[0] + T::dd2 * st.z[1] + T::dd3 * st.z[2]) / h;
     Vec err = lue.solve(Vec(f2 + st.f0));
     auto norm = [&](const Vec& e) { return e.cwiseAbs().maxCoeff() / atol; };
@@ -143,6 +176,7 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
         // (I - h (A x I) diag(J_j)) dZ = h (A x I) [J_1; J_2; J_3].
         Mat js[3];
         for (int j = 0; j < 3; ++j) js[j] = pb.jac(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+        BigMat G;
         Eigen::Matrix<double, 3 * N, N> rhs;
         for (int i = 0; i < 3; ++i) {
             Mat b = Mat::Zero();
