@@ -8,6 +8,8 @@ PACKAGES=(
   libeigen3-dev libcli11-dev nlohmann-json3-dev  # core + command line
   catch2                                    # tests (Catch2 v2)
   libimgui-dev libglfw3-dev libgl-dev libosmesa6-dev libstb-dev fonts-dejavu-core  # drawing
+  libcairo2-dev                             # SVG and PDF output (cairo with FreeType)
+  librsvg2-bin poppler-utils                # tests: rsvg-convert, pdftoppm, pdftotext check SVG and PDF
   xvfb xauth libx11-dev                     # window tests without a display (xvfb-run needs xauth; the
                                             # drag-and-drop test speaks XDND through Xlib)
   bc                                        # scripts/bench.sh arithmetic

@@ -40,9 +40,23 @@ bool same_rect(const Rect& a, const Rect& b) {
     return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
 }
 
-struct DashPattern {
-    float on = 0, period = 0; // Arc-length pattern of dash cores; period 0 = solid.
-};
+bool finite(Vec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+// A dashed circle as a fine closed polyline, counter-clockwise on screen from angle 0.
+std::vector<Vec2> circle_points(Vec2 center, float radius) {
+    const int n = std::max(48, static_cast<int>(std::ceil(2.0f * 3.14159265f * radius / 3.0f)));
+    std::vector<Vec2> pts(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+        const double t = 2.0 * 3.141592653589793 * i / n;
+        pts[static_cast<std::size_t>(i)] = {center.x + radius * static_cast<float>(std::cos(t)),
+                                            center.y - radius * static_cast<float>(std::sin(t))};
+    }
+    return pts;
+}
+
+} // namespace
 
 // Dash lengths scale with the width but keep a minimum so thin lines still read as dashed.
 DashPattern dash_pattern(const Stroke& s) {
@@ -60,14 +74,62 @@ DashPattern dash_pattern(const Stroke& s) {
     return {};
 }
 
-bool finite(Vec2 p) {
-    return std::isfinite(p.x) && std::isfinite(p.y);
+std::vector<Vec2> marker_outline(MarkerShape shape, float size) {
+    // The shapes of shapes.frag.glsl (marker_alpha), r = size / 2.
+    const float r = 0.5f * size;
+    auto rotate45 = [](std::vector<Vec2> v) {
+        const float k = 0.70710678f;
+        for (Vec2& p : v) p = {(p.x - p.y) * k, (p.x + p.y) * k};
+        return v;
+    };
+    switch (shape) {
+    case MarkerShape::None:
+    case MarkerShape::Circle:
+        return {};
+    case MarkerShape::Square: {
+        const float h = 0.88f * r;
+        return {{-h, -h}, {h, -h}, {h, h}, {-h, h}};
+    }
+    case MarkerShape::Triangle:
+        return {{0.0f, -1.25f * r}, {1.08f * r, 0.62f * r}, {-1.08f * r, 0.62f * r}};
+    case MarkerShape::Diamond: {
+        const float h = 0.85f * r;
+        return rotate45({{-h, -h}, {h, -h}, {h, h}, {-h, h}});
+    }
+    case MarkerShape::Cross:
+    case MarkerShape::Plus: {
+        const float a = shape == MarkerShape::Cross ? 1.1f * r : r, t = std::max(0.75f, 0.1f * size);
+        std::vector<Vec2> v = {{t, -a}, {t, -t}, {a, -t}, {a, t},   {t, t},   {t, a},
+                               {-t, a}, {-t, t}, {-a, t}, {-a, -t}, {-t, -t}, {-t, -a}};
+        return shape == MarkerShape::Cross ? rotate45(std::move(v)) : v;
+    }
+    }
+    return {};
 }
 
-} // namespace
+ArrowGeometry arrow_geometry(Vec2 from, Vec2 to, const ArrowStyle& s) {
+    ArrowGeometry g;
+    Vec2 d = to - from;
+    const float len = std::hypot(d.x, d.y);
+    if (!(len > 0)) return g;
+    d = d * (1.0f / len);
+    const float head = std::min(s.head_length, len);
+    const Vec2 n{-d.y, d.x};
+    const Vec2 base = to - d * head;
+    g.valid = true;
+    g.shaft_from = from;
+    g.shaft_to = base + d * (0.4f * head);
+    g.tip = to;
+    g.left = base + n * (0.5f * s.head_width);
+    g.right = base - n * (0.5f * s.head_width);
+    return g;
+}
 
+// The GL backend: replays a display list into batches (shapes by kind, text and images through the ImGui
+// renderer) and draws them.
 struct Canvas::Impl {
     const GlApi& gl;
+    const FontSet& fonts;
     ImGuiRenderer& imgui;
     detail::ShapeRenderer shapes;
     ImDrawListSharedData shared; // Our own: text is emitted without an ImGui frame.
@@ -76,14 +138,17 @@ struct Canvas::Impl {
     std::vector<Batch> batches;
     std::vector<std::unique_ptr<ImDrawList>> lists;
     std::size_t lists_used = 0;
-    std::vector<GLuint> textures; // Pool for image(); reused from frame to frame.
+    std::vector<GLuint> textures; // Pool for images; reused from frame to frame.
     std::size_t textures_used = 0;
-    std::vector<Rect> clips;
+    std::vector<Rect> clips; // Replay's clip stack.
     float ratio = 1;
-    Color background;
+
+    // Recording.
+    DisplayList list;
+    std::vector<Rect> rec_clips;
     bool recording = false;
 
-    Impl(const GlApi& g, ImGuiRenderer& r) : gl(g), imgui(r), shapes(g) {}
+    Impl(const GlApi& g, const FontSet& f, ImGuiRenderer& r) : gl(g), fonts(f), imgui(r), shapes(g) {}
     ~Impl() {
         if (!textures.empty()) gl.DeleteTextures(static_cast<GLsizei>(textures.size()), textures.data());
     }
@@ -114,7 +179,6 @@ struct Canvas::Impl {
     // Appends a quad (corners q0..q3) carrying the same shape parameters on all four vertices.
     void quad(const Vec2 (&q)[4], int kind, const float (&a)[4], const float (&b)[4], const float (&c)[4],
               const float (&d3)[3], Color col) {
-        if (!recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
         Batch& batch = batch_for(false, static_cast<detail::ShapeKind>(kind), nullptr);
         const auto base = static_cast<std::uint32_t>(verts.size());
         const std::uint32_t packed = col.packed();
@@ -173,10 +237,258 @@ struct Canvas::Impl {
             arc += std::hypot(static_cast<double>(p1.x - p0.x), static_cast<double>(p1.y - p0.y));
         }
     }
+
+    void clear_rect(const Rect& area, Color col) {
+        const Rect& cur = clips.back();
+        Batch b;
+        b.clear = true;
+        b.clear_color = col;
+        b.clip = {std::max(area.x0, cur.x0), std::max(area.y0, cur.y0), std::min(area.x1, cur.x1),
+                  std::min(area.y1, cur.y1)};
+        batches.push_back(b);
+    }
+
+    // --- One function per display-list command. ---
+
+    void draw(const dl::FillRect& cmd) {
+        const Rect& r = cmd.rect;
+        const Color c = cmd.color;
+        auto on_pixel = [this](float v) { return std::floor(v * ratio) == v * ratio; };
+        if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
+            // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
+            clear_rect(r, c);
+            return;
+        }
+        const float e = 2;
+        // Opaque and large: the pixels fully inside (with a pixel to spare) get the same colour from a
+        // scissored clear as from the SDF; only the border bands need the shader. llvmpipe pays per shaded
+        // pixel, and plot backgrounds are large.
+        const float ix0 = (std::ceil(r.x0 * ratio) + 1) / ratio, iy0 = (std::ceil(r.y0 * ratio) + 1) / ratio;
+        const float ix1 = (std::floor(r.x1 * ratio) - 1) / ratio,
+                    iy1 = (std::floor(r.y1 * ratio) - 1) / ratio;
+        if (c.a >= 1.0f && ix1 - ix0 > 4 && iy1 - iy0 > 4) {
+            clear_rect({ix0, iy0, ix1, iy1}, c);
+            const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {0, 1, 0, 0};
+            box_quad(r.x0 - e, r.y0 - e, r.x1 + e, iy0, detail::kRect, a, b, c); // top
+            box_quad(r.x0 - e, iy1, r.x1 + e, r.y1 + e, detail::kRect, a, b, c); // bottom
+            box_quad(r.x0 - e, iy0, ix0, iy1, detail::kRect, a, b, c);           // left
+            box_quad(ix1, iy0, r.x1 + e, iy1, detail::kRect, a, b, c);           // right
+            return;
+        }
+        box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
+                 {0, 1, 0, 0}, c);
+    }
+
+    void draw(const dl::StrokeRect& cmd) {
+        const Rect& r = cmd.rect;
+        const Stroke& s = cmd.stroke;
+        if (s.style != LineStyle::Solid) {
+            polyline({{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}}, s, true);
+            return;
+        }
+        const float hw = 0.5f * s.width, e = hw + 2;
+        const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {hw, 0, 0, 0};
+        if (r.width() > 2 * e + 2 && r.height() > 2 * e + 2) {
+            // The outline's SDF evaluated only on four bands along the edges (same pixels as one quad over
+            // the whole rectangle, whose inside would all be discarded, at a fraction of the cost).
+            box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y0 + e, detail::kRect, a, b, s.color);
+            box_quad(r.x0 - e, r.y1 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
+            box_quad(r.x0 - e, r.y0 + e, r.x0 + e, r.y1 - e, detail::kRect, a, b, s.color);
+            box_quad(r.x1 - e, r.y0 + e, r.x1 + e, r.y1 - e, detail::kRect, a, b, s.color);
+            return;
+        }
+        box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
+    }
+
+    void polyline(const std::vector<Vec2>& pts, const Stroke& s, bool closed) {
+        // Split at non-finite points and drop repeated points (zero-length segments have no direction).
+        std::vector<Vec2> run;
+        run.reserve(pts.size());
+        bool broken = false;
+        for (const Vec2& p : pts) {
+            if (!finite(p)) {
+                polyline_run(run, s, false);
+                run.clear();
+                broken = true;
+                continue;
+            }
+            if (!run.empty() && std::fabs(run.back().x - p.x) < 1e-4f &&
+                std::fabs(run.back().y - p.y) < 1e-4f)
+                continue;
+            run.push_back(p);
+        }
+        if (closed && run.size() >= 2) {
+            const Vec2 f = run.front(), l = run.back();
+            if (std::fabs(f.x - l.x) < 1e-4f && std::fabs(f.y - l.y) < 1e-4f) run.pop_back();
+        }
+        polyline_run(run, s, closed && !broken);
+    }
+
+    void draw(const dl::Polyline& cmd) { polyline(cmd.points, cmd.stroke, cmd.closed); }
+
+    void draw(const dl::Circle& cmd) {
+        const Vec2 center = cmd.center;
+        const float radius = cmd.radius;
+        const Stroke& s = cmd.stroke;
+        if (s.style == LineStyle::Solid) {
+            const float hw = 0.5f * s.width, e = radius + hw + 2;
+            box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
+                     {center.x, center.y, radius, hw}, {1, 0, 0, 0}, s.color);
+            return;
+        }
+        // Dashed circles: a fine closed polyline keeps the dash pattern continuous all round.
+        polyline(circle_points(center, radius), s, true);
+    }
+
+    void draw(const dl::FillCircle& cmd) {
+        const float e = cmd.radius + 2;
+        box_quad(cmd.center.x - e, cmd.center.y - e, cmd.center.x + e, cmd.center.y + e, detail::kMarker,
+                 {cmd.center.x, cmd.center.y, cmd.radius, 0}, {1, 1, 0, 0}, cmd.color);
+    }
+
+    void fill_triangle(Vec2 a, Vec2 b, Vec2 c, Color col) {
+        const float e = 2;
+        const float x0 = std::min({a.x, b.x, c.x}) - e, x1 = std::max({a.x, b.x, c.x}) + e;
+        const float y0 = std::min({a.y, b.y, c.y}) - e, y1 = std::max({a.y, b.y, c.y}) + e;
+        box_quad(x0, y0, x1, y1, detail::kTriangle, {a.x, a.y, b.x, b.y}, {c.x, c.y, 0, 0}, col);
+    }
+
+    void draw(const dl::FillTriangle& cmd) { fill_triangle(cmd.a, cmd.b, cmd.c, cmd.color); }
+
+    void draw(const dl::Marker& cmd) {
+        const MarkerStyle& m = cmd.style;
+        const Vec2 center = cmd.center;
+        const float r = 0.5f * m.size;
+        const float shape =
+            static_cast<float>(static_cast<int>(m.shape)); // Circle=1 ... Plus=6, as in the shader.
+        const float e = 1.6f * r + m.edge_width + 2;
+        const float x0 = center.x - e, y0 = center.y - e, x1 = center.x + e, y1 = center.y + e;
+        // Cross and plus are filled bars whose thickness follows the size; they take fill and edge like
+        // the others.
+        const float bar = std::max(0.75f, 0.1f * m.size);
+        if (m.fill.a > 0)
+            box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0}, {shape, 1, bar, 0}, m.fill);
+        if (m.edge_width > 0 && m.edge.a > 0)
+            box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0.5f * m.edge_width},
+                     {shape, 0, bar, 0}, m.edge);
+    }
+
+    void draw(const dl::Arrow& cmd) {
+        const ArrowGeometry g = arrow_geometry(cmd.from, cmd.to, cmd.style);
+        if (!g.valid) return;
+        polyline({g.shaft_from, g.shaft_to}, cmd.style.shaft, false);
+        fill_triangle(g.tip, g.left, g.right, cmd.style.shaft.color);
+    }
+
+    void draw(const dl::Picture& cmd) {
+        const Image& pixels = *cmd.pixels;
+        if (textures_used == textures.size()) {
+            GLuint t = 0;
+            gl.GenTextures(1, &t);
+            textures.push_back(t);
+        }
+        const GLuint tex = textures[textures_used++];
+        const GLint filter = cmd.smooth ? GL_LINEAR : GL_NEAREST;
+        gl.ActiveTexture(GL_TEXTURE0);
+        gl.BindTexture(GL_TEXTURE_2D, tex);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, pixels.width, pixels.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                      pixels.rgba.data());
+        // Images go through the ImGui renderer (texture per command), as textured quads in a draw list.
+        Batch& b = batch_for(true, detail::kSegment, fonts.atlas().TexID);
+        ImDrawList& l = *lists[b.list];
+        const Rect& dst = cmd.dst;
+        l.PushTextureID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(tex)));
+        l.PrimReserve(6, 4);
+        l.PrimRectUV(ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0, 0), ImVec2(1, 1),
+                     IM_COL32_WHITE);
+        l.PopTextureID();
+    }
+
+    void draw(const dl::Text& cmd) {
+        Batch& b = batch_for(true, detail::kSegment, fonts.atlas().TexID);
+        emit_text(*lists[b.list], fonts, cmd.anchor, cmd.text, cmd.style);
+    }
+
+    void draw(const dl::PushClip& cmd) { clips.push_back(cmd.rect); }
+    void draw(const dl::PopClip&) {
+        if (clips.size() > 1) clips.pop_back();
+    }
+
+    void render(const DisplayList& dl, float pixel_ratio);
 };
 
+void Canvas::Impl::render(const DisplayList& dl, float pixel_ratio) {
+    ratio = pixel_ratio;
+    verts.clear();
+    indices.clear();
+    batches.clear();
+    lists_used = 0;
+    textures_used = 0;
+    const Vec2 size = dl.size;
+    clips.assign(1, Rect{0, 0, size.x, size.y});
+    shared.ClipRectFullscreen = ImVec4(0, 0, size.x, size.y);
+    shared.TexUvWhitePixel = fonts.atlas().TexUvWhitePixel;
+    shared.Font = fonts.font_for(14);
+    shared.FontSize = 14;
+    for (const dl::Command& c : dl.commands) std::visit([this](const auto& cmd) { draw(cmd); }, c);
+
+    const int fb_w = static_cast<int>(std::lround(size.x * ratio));
+    const int fb_h = static_cast<int>(std::lround(size.y * ratio));
+    gl.Viewport(0, 0, fb_w, fb_h);
+    gl.Disable(GL_SCISSOR_TEST);
+    gl.ClearColor(dl.background.r, dl.background.g, dl.background.b, dl.background.a);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    shapes.upload(verts, indices);
+    bool shapes_bound = false;
+    for (const Batch& b : batches) {
+        if (b.text) {
+            ImDrawList* l = lists[b.list].get();
+            ImDrawData dd;
+            dd.Valid = true;
+            dd.CmdListsCount = 1;
+            dd.CmdLists = &l;
+            dd.TotalVtxCount = l->VtxBuffer.Size;
+            dd.TotalIdxCount = l->IdxBuffer.Size;
+            dd.DisplayPos = ImVec2(0, 0);
+            dd.DisplaySize = ImVec2(size.x, size.y);
+            dd.FramebufferScale = ImVec2(ratio, ratio);
+            imgui.render(dd);
+            shapes_bound = false; // The ImGui renderer changed program, VAO and scissor.
+            continue;
+        }
+        if (!shapes_bound) {
+            shapes.bind(size.x, size.y, ratio, fb_h);
+            gl.Enable(GL_SCISSOR_TEST);
+            gl.Viewport(0, 0, fb_w, fb_h);
+            shapes_bound = true;
+        }
+        // Same rounding as the ImGui renderer so text and shapes clip identically.
+        const float fw = static_cast<float>(fb_w), fh = static_cast<float>(fb_h);
+        const float x0 = std::clamp(b.clip.x0 * ratio, 0.0f, fw),
+                    y0 = std::clamp(b.clip.y0 * ratio, 0.0f, fh);
+        const float x1 = std::clamp(b.clip.x1 * ratio, 0.0f, fw),
+                    y1 = std::clamp(b.clip.y1 * ratio, 0.0f, fh);
+        if (x1 <= x0 || y1 <= y0) continue;
+        gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fh - y1), static_cast<GLsizei>(x1 - x0),
+                   static_cast<GLsizei>(y1 - y0));
+        if (b.clear) {
+            gl.ClearColor(b.clear_color.r, b.clear_color.g, b.clear_color.b, b.clear_color.a);
+            gl.Clear(GL_COLOR_BUFFER_BIT);
+            continue;
+        }
+        shapes.draw(b.kind, b.first, b.count);
+    }
+    gl.BindVertexArray(0);
+    gl.Disable(GL_SCISSOR_TEST);
+}
+
 Canvas::Canvas(const GlApi& gl, const FontSet& fonts, ImGuiRenderer& renderer)
-    : impl_(std::make_unique<Impl>(gl, renderer)), fonts_(fonts) {
+    : impl_(std::make_unique<Impl>(gl, fonts, renderer)), fonts_(fonts) {
     if (!fonts.atlas().TexID)
         throw std::logic_error("Canvas: upload the font atlas to the ImGuiRenderer first");
 }
@@ -187,273 +499,101 @@ void Canvas::begin(Vec2 logical_size, float pixel_ratio, Color background) {
     Impl& m = *impl_;
     size_ = logical_size;
     m.ratio = pixel_ratio;
-    m.background = background;
-    m.verts.clear();
-    m.indices.clear();
-    m.batches.clear();
-    m.lists_used = 0;
-    m.textures_used = 0;
-    m.clips.assign(1, Rect{0, 0, logical_size.x, logical_size.y});
-    m.shared.ClipRectFullscreen = ImVec4(0, 0, logical_size.x, logical_size.y);
-    m.shared.TexUvWhitePixel = fonts_.atlas().TexUvWhitePixel;
-    m.shared.Font = fonts_.font_for(14);
-    m.shared.FontSize = 14;
+    m.list.size = logical_size;
+    m.list.background = background;
+    m.list.commands.clear();
+    m.rec_clips.assign(1, Rect{0, 0, logical_size.x, logical_size.y});
     m.recording = true;
 }
 
+void Canvas::end_recording() {
+    impl_->recording = false;
+}
+
 void Canvas::end() {
-    Impl& m = *impl_;
-    m.recording = false;
-    const int fb_w = static_cast<int>(std::lround(size_.x * m.ratio));
-    const int fb_h = static_cast<int>(std::lround(size_.y * m.ratio));
-    const GlApi& gl = m.gl;
-    gl.Viewport(0, 0, fb_w, fb_h);
-    gl.Disable(GL_SCISSOR_TEST);
-    gl.ClearColor(m.background.r, m.background.g, m.background.b, m.background.a);
-    gl.Clear(GL_COLOR_BUFFER_BIT);
-    m.shapes.upload(m.verts, m.indices);
-    bool shapes_bound = false;
-    for (const Batch& b : m.batches) {
-        if (b.text) {
-            ImDrawList* list = m.lists[b.list].get();
-            ImDrawData dd;
-            dd.Valid = true;
-            dd.CmdListsCount = 1;
-            dd.CmdLists = &list;
-            dd.TotalVtxCount = list->VtxBuffer.Size;
-            dd.TotalIdxCount = list->IdxBuffer.Size;
-            dd.DisplayPos = ImVec2(0, 0);
-            dd.DisplaySize = ImVec2(size_.x, size_.y);
-            dd.FramebufferScale = ImVec2(m.ratio, m.ratio);
-            m.imgui.render(dd);
-            shapes_bound = false; // The ImGui renderer changed program, VAO and scissor.
-            continue;
-        }
-        if (!shapes_bound) {
-            m.shapes.bind(size_.x, size_.y, m.ratio, fb_h);
-            gl.Enable(GL_SCISSOR_TEST);
-            gl.Viewport(0, 0, fb_w, fb_h);
-            shapes_bound = true;
-        }
-        // Same rounding as the ImGui renderer so text and shapes clip identically.
-        const float fw = static_cast<float>(fb_w), fh = static_cast<float>(fb_h);
-        const float x0 = std::clamp(b.clip.x0 * m.ratio, 0.0f, fw),
-                    y0 = std::clamp(b.clip.y0 * m.ratio, 0.0f, fh);
-        const float x1 = std::clamp(b.clip.x1 * m.ratio, 0.0f, fw),
-                    y1 = std::clamp(b.clip.y1 * m.ratio, 0.0f, fh);
-        if (x1 <= x0 || y1 <= y0) continue;
-        gl.Scissor(static_cast<GLint>(x0), static_cast<GLint>(fh - y1), static_cast<GLsizei>(x1 - x0),
-                   static_cast<GLsizei>(y1 - y0));
-        if (b.clear) {
-            gl.ClearColor(b.clear_color.r, b.clear_color.g, b.clear_color.b, b.clear_color.a);
-            gl.Clear(GL_COLOR_BUFFER_BIT);
-            continue;
-        }
-        m.shapes.draw(b.kind, b.first, b.count);
-    }
-    gl.BindVertexArray(0);
-    gl.Disable(GL_SCISSOR_TEST);
+    end_recording();
+    impl_->render(impl_->list, impl_->ratio);
+}
+
+const DisplayList& Canvas::display_list() const {
+    return impl_->list;
+}
+
+void Canvas::draw(const DisplayList& list, float pixel_ratio) {
+    impl_->render(list, pixel_ratio);
+}
+
+void Canvas::record(dl::Command c) {
+    if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+    impl_->list.commands.push_back(std::move(c));
 }
 
 void Canvas::push_clip(const Rect& r, bool intersect) {
     Rect c = r;
     if (intersect) {
-        const Rect& cur = impl_->clips.back();
+        const Rect& cur = impl_->rec_clips.back();
         c = {std::max(c.x0, cur.x0), std::max(c.y0, cur.y0), std::min(c.x1, cur.x1), std::min(c.y1, cur.y1)};
     }
-    impl_->clips.push_back(c);
+    record(dl::PushClip{c});
+    impl_->rec_clips.push_back(c);
 }
 
 void Canvas::pop_clip() {
-    if (impl_->clips.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
-    impl_->clips.pop_back();
+    if (impl_->rec_clips.size() <= 1) throw std::logic_error("Canvas::pop_clip without push_clip");
+    record(dl::PopClip{});
+    impl_->rec_clips.pop_back();
 }
 
 const Rect& Canvas::clip() const {
-    return impl_->clips.back();
+    return impl_->rec_clips.back();
 }
 
 void Canvas::fill_rect(const Rect& r, Color c) {
-    const float ratio = impl_->ratio;
-    auto on_pixel = [ratio](float v) { return std::floor(v * ratio) == v * ratio; };
-    auto clear = [this](const Rect& area, Color col) {
-        if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
-        const Rect& cur = impl_->clips.back();
-        Batch b;
-        b.clear = true;
-        b.clear_color = col;
-        b.clip = {std::max(area.x0, cur.x0), std::max(area.y0, cur.y0), std::min(area.x1, cur.x1),
-                  std::min(area.y1, cur.y1)};
-        impl_->batches.push_back(b);
-    };
-    if (c.a >= 1.0f && on_pixel(r.x0) && on_pixel(r.y0) && on_pixel(r.x1) && on_pixel(r.y1)) {
-        // Same pixels as the SDF path would give (full coverage inside, none outside), much cheaper.
-        clear(r, c);
-        return;
-    }
-    const float e = 2;
-    // Opaque and large: the pixels fully inside (with a pixel to spare) get the same colour from a
-    // scissored clear as from the SDF; only the border bands need the shader. llvmpipe pays per shaded
-    // pixel, and plot backgrounds are large.
-    const float ix0 = (std::ceil(r.x0 * ratio) + 1) / ratio, iy0 = (std::ceil(r.y0 * ratio) + 1) / ratio;
-    const float ix1 = (std::floor(r.x1 * ratio) - 1) / ratio, iy1 = (std::floor(r.y1 * ratio) - 1) / ratio;
-    if (c.a >= 1.0f && ix1 - ix0 > 4 && iy1 - iy0 > 4) {
-        clear({ix0, iy0, ix1, iy1}, c);
-        const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {0, 1, 0, 0};
-        impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, iy0, detail::kRect, a, b, c); // top
-        impl_->box_quad(r.x0 - e, iy1, r.x1 + e, r.y1 + e, detail::kRect, a, b, c); // bottom
-        impl_->box_quad(r.x0 - e, iy0, ix0, iy1, detail::kRect, a, b, c);           // left
-        impl_->box_quad(ix1, iy0, r.x1 + e, iy1, detail::kRect, a, b, c);           // right
-        return;
-    }
-    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, {r.x0, r.y0, r.x1, r.y1},
-                    {0, 1, 0, 0}, c);
+    record(dl::FillRect{r, c});
 }
 
 void Canvas::stroke_rect(const Rect& r, const Stroke& s) {
-    if (s.style != LineStyle::Solid) {
-        const std::vector<Vec2> pts = {{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}};
-        polyline(pts, s, true);
-        return;
-    }
-    const float hw = 0.5f * s.width, e = hw + 2;
-    const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {hw, 0, 0, 0};
-    if (r.width() > 2 * e + 2 && r.height() > 2 * e + 2) {
-        // The outline's SDF evaluated only on four bands along the edges (same pixels as one quad over
-        // the whole rectangle, whose inside would all be discarded, at a fraction of the cost).
-        impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y0 + e, detail::kRect, a, b, s.color);
-        impl_->box_quad(r.x0 - e, r.y1 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
-        impl_->box_quad(r.x0 - e, r.y0 + e, r.x0 + e, r.y1 - e, detail::kRect, a, b, s.color);
-        impl_->box_quad(r.x1 - e, r.y0 + e, r.x1 + e, r.y1 - e, detail::kRect, a, b, s.color);
-        return;
-    }
-    impl_->box_quad(r.x0 - e, r.y0 - e, r.x1 + e, r.y1 + e, detail::kRect, a, b, s.color);
+    record(dl::StrokeRect{r, s});
 }
 
 void Canvas::line(Vec2 a, Vec2 b, const Stroke& s) {
-    const Vec2 pts[2] = {a, b};
-    polyline(pts, 2, s, false);
+    record(dl::Polyline{{a, b}, s, false});
 }
 
 void Canvas::polyline(const Vec2* pts, std::size_t n, const Stroke& s, bool closed) {
-    // Split at non-finite points and drop repeated points (zero-length segments have no direction).
-    std::vector<Vec2> run;
-    run.reserve(n);
-    bool broken = false;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!finite(pts[i])) {
-            impl_->polyline_run(run, s, false);
-            run.clear();
-            broken = true;
-            continue;
-        }
-        if (!run.empty() && std::fabs(run.back().x - pts[i].x) < 1e-4f &&
-            std::fabs(run.back().y - pts[i].y) < 1e-4f)
-            continue;
-        run.push_back(pts[i]);
-    }
-    if (closed && run.size() >= 2) {
-        const Vec2 f = run.front(), l = run.back();
-        if (std::fabs(f.x - l.x) < 1e-4f && std::fabs(f.y - l.y) < 1e-4f) run.pop_back();
-    }
-    impl_->polyline_run(run, s, closed && !broken);
+    record(dl::Polyline{std::vector<Vec2>(pts, pts + n), s, closed});
 }
 
 void Canvas::circle(Vec2 center, float radius, const Stroke& s) {
-    if (s.style == LineStyle::Solid) {
-        const float hw = 0.5f * s.width, e = radius + hw + 2;
-        impl_->box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
-                        {center.x, center.y, radius, hw}, {1, 0, 0, 0}, s.color);
-        return;
-    }
-    // Dashed circles: a fine closed polyline keeps the dash pattern continuous all round.
-    const int n = std::max(48, static_cast<int>(std::ceil(2.0f * 3.14159265f * radius / 3.0f)));
-    std::vector<Vec2> pts(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        const double t = 2.0 * 3.141592653589793 * i / n;
-        pts[static_cast<std::size_t>(i)] = {center.x + radius * static_cast<float>(std::cos(t)),
-                                            center.y - radius * static_cast<float>(std::sin(t))};
-    }
-    polyline(pts, s, true);
+    record(dl::Circle{center, radius, s});
 }
 
 void Canvas::fill_circle(Vec2 center, float radius, Color c) {
-    const float e = radius + 2;
-    impl_->box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
-                    {center.x, center.y, radius, 0}, {1, 1, 0, 0}, c);
+    record(dl::FillCircle{center, radius, c});
 }
 
 void Canvas::fill_triangle(Vec2 a, Vec2 b, Vec2 c, Color col) {
-    const float e = 2;
-    const float x0 = std::min({a.x, b.x, c.x}) - e, x1 = std::max({a.x, b.x, c.x}) + e;
-    const float y0 = std::min({a.y, b.y, c.y}) - e, y1 = std::max({a.y, b.y, c.y}) + e;
-    impl_->box_quad(x0, y0, x1, y1, detail::kTriangle, {a.x, a.y, b.x, b.y}, {c.x, c.y, 0, 0}, col);
+    record(dl::FillTriangle{a, b, c, col});
 }
 
 void Canvas::marker(Vec2 center, const MarkerStyle& m) {
     if (m.shape == MarkerShape::None || !finite(center)) return;
-    const float r = 0.5f * m.size;
-    const float shape =
-        static_cast<float>(static_cast<int>(m.shape)); // Circle=1 ... Plus=6, as in the shader.
-    const float e = 1.6f * r + m.edge_width + 2;
-    const float x0 = center.x - e, y0 = center.y - e, x1 = center.x + e, y1 = center.y + e;
-    // Cross and plus are filled bars whose thickness follows the size; they take fill and edge like the
-    // others.
-    const float bar = std::max(0.75f, 0.1f * m.size);
-    if (m.fill.a > 0)
-        impl_->box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0}, {shape, 1, bar, 0},
-                        m.fill);
-    if (m.edge_width > 0 && m.edge.a > 0)
-        impl_->box_quad(x0, y0, x1, y1, detail::kMarker, {center.x, center.y, r, 0.5f * m.edge_width},
-                        {shape, 0, bar, 0}, m.edge);
+    record(dl::Marker{center, m});
 }
 
 void Canvas::arrow(Vec2 from, Vec2 to, const ArrowStyle& s) {
-    Vec2 d = to - from;
-    const float len = std::hypot(d.x, d.y);
-    if (!(len > 0)) return;
-    d = d * (1.0f / len);
-    const float head = std::min(s.head_length, len);
-    const Vec2 n{-d.y, d.x};
-    const Vec2 base = to - d * head;
-    // The shaft stops inside the head so its round cap never pokes out of the tip.
-    line(from, base + d * (0.4f * head), s.shaft);
-    fill_triangle(to, base + n * (0.5f * s.head_width), base - n * (0.5f * s.head_width), s.shaft.color);
+    record(dl::Arrow{from, to, s});
 }
 
 void Canvas::text(Vec2 anchor, std::string_view str, const TextStyle& style) {
     if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
-    Batch& b = impl_->batch_for(true, detail::kSegment, fonts_.atlas().TexID);
-    emit_text(*impl_->lists[b.list], fonts_, anchor, str, style);
+    record(dl::Text{anchor, std::string(str), style, text_runs(fonts_, anchor, str, style)});
 }
 
 void Canvas::image(const Rect& dst, const Image& pixels, bool smooth) {
-    Impl& m = *impl_;
-    if (!m.recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
+    if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
     if (pixels.empty()) return;
-    if (m.textures_used == m.textures.size()) {
-        GLuint t = 0;
-        m.gl.GenTextures(1, &t);
-        m.textures.push_back(t);
-    }
-    const GLuint tex = m.textures[m.textures_used++];
-    const GLint filter = smooth ? GL_LINEAR : GL_NEAREST;
-    m.gl.ActiveTexture(GL_TEXTURE0);
-    m.gl.BindTexture(GL_TEXTURE_2D, tex);
-    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
-    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
-    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    m.gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    m.gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    m.gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, pixels.width, pixels.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                    pixels.rgba.data());
-    // Images go through the ImGui renderer (texture per command), as textured quads in a draw list.
-    Batch& b = m.batch_for(true, detail::kSegment, fonts_.atlas().TexID);
-    ImDrawList& l = *m.lists[b.list];
-    l.PushTextureID(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(tex)));
-    l.PrimReserve(6, 4);
-    l.PrimRectUV(ImVec2(dst.x0, dst.y0), ImVec2(dst.x1, dst.y1), ImVec2(0, 0), ImVec2(1, 1), IM_COL32_WHITE);
-    l.PopTextureID();
+    record(dl::Picture{dst, std::make_shared<const Image>(pixels), smooth});
 }
 
 Vec2 Canvas::measure_text(std::string_view str, float size, bool markup) const {

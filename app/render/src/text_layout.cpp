@@ -1,5 +1,7 @@
 #include "fv/gfx/text.hpp"
 
+#include "fv/gfx/display_list.hpp"
+
 #include <imgui.h>
 #include <imgui_internal.h> // ImTextCharFromUtf8
 
@@ -48,8 +50,14 @@ struct Glyph {
     float x, top, k; // Pen x and line top of the run (logical, relative to the text's top-left), scale.
 };
 
+struct RunStart {
+    std::string_view text;
+    float size, x, baseline; // Pen x and baseline below the line top of the run's first glyph (logical).
+};
+
 struct Layout {
     std::vector<Glyph> glyphs;
+    std::vector<RunStart> runs;
     float width = 0;
     float ascent = 0;  // Main font ascent (logical).
     float cap_top = 0; // Top of capital 'H' below the line top (logical).
@@ -67,6 +75,7 @@ Layout layout(const FontSet& fonts, std::string_view text, float size, bool mark
         const ImFont* f = fonts.font_for(run.size);
         const float k = run.size / f->FontSize;
         const float top = out.ascent + run.baseline - f->Ascent * k; // Align run baselines.
+        out.runs.push_back({run.text, run.size, x, out.ascent + run.baseline});
         const char* p = run.text.data();
         const char* end = p + run.text.size();
         while (p < end) {
@@ -90,46 +99,79 @@ Vec2 measure_text(const FontSet& fonts, std::string_view text, float size, bool 
     return {layout(fonts, text, size, markup).width, size};
 }
 
-void emit_text(ImDrawList& list, const FontSet& fonts, Vec2 anchor, std::string_view text,
-               const TextStyle& style) {
-    const Layout lay = layout(fonts, text, style.size, style.markup);
-    // Offset of the text's top-left corner from the anchor, in the text's own (unrotated) frame.
-    float ox = 0, oy = 0;
-    if (style.halign == HAlign::Center) ox = -0.5f * lay.width;
-    if (style.halign == HAlign::Right) ox = -lay.width;
+namespace {
+
+// Where a laid-out text goes: the offset of its top-left corner from the anchor in its own (unrotated)
+// frame, and the rotation.
+struct Placement {
+    Vec2 anchor;
+    float ox = 0, oy = 0, c = 1, s = 0;
+    // Screen y is down, so a counter-clockwise angle maps local (u,v) to (u c + v s, -u s + v c).
+    Vec2 at(float u, float v) const { return {anchor.x + u * c + v * s, anchor.y - u * s + v * c}; }
+};
+
+Placement place(const FontSet& fonts, const Layout& lay, Vec2 anchor, const TextStyle& style) {
+    Placement p;
+    if (style.halign == HAlign::Center) p.ox = -0.5f * lay.width;
+    if (style.halign == HAlign::Right) p.ox = -lay.width;
     switch (style.valign) {
     case VAlign::Top:
         break;
     case VAlign::Middle:
-        oy = -0.5f * (lay.cap_top + lay.ascent);
+        p.oy = -0.5f * (lay.cap_top + lay.ascent);
         break;
     case VAlign::Baseline:
-        oy = -lay.ascent;
+        p.oy = -lay.ascent;
         break;
     case VAlign::Bottom:
-        oy = -style.size;
+        p.oy = -style.size;
         break;
     }
     // Rotation: exact for multiples of 90 degrees, so axis titles can be pixel-snapped.
     const float a = std::fmod(std::fmod(style.angle_deg, 360.0f) + 360.0f, 360.0f);
-    float c = std::cos(a * 3.14159265f / 180.0f), s = std::sin(a * 3.14159265f / 180.0f);
+    p.c = std::cos(a * 3.14159265f / 180.0f), p.s = std::sin(a * 3.14159265f / 180.0f);
     const bool right_angle = std::fmod(a, 90.0f) == 0.0f;
     if (right_angle) {
         const int q = static_cast<int>(a / 90.0f);
         const float cs[4] = {1, 0, -1, 0}, sn[4] = {0, 1, 0, -1};
-        c = cs[q];
-        s = sn[q];
+        p.c = cs[q];
+        p.s = sn[q];
     }
     // Snap anchor and offsets to whole framebuffer pixels so unrotated (and 90°) glyphs stay crisp.
     const float r = fonts.pixel_ratio();
     if (right_angle) {
         anchor = {std::round(anchor.x * r) / r, std::round(anchor.y * r) / r};
-        ox = std::round(ox * r) / r;
-        oy = std::round(oy * r) / r;
+        p.ox = std::round(p.ox * r) / r;
+        p.oy = std::round(p.oy * r) / r;
     }
-    // Screen y is down, so a counter-clockwise angle maps local (u,v) to (u c + v s, -u s + v c).
-    auto xf = [&](float u, float v) { return ImVec2(anchor.x + u * c + v * s, anchor.y - u * s + v * c); };
+    p.anchor = anchor;
+    return p;
+}
+
+} // namespace
+
+std::vector<dl::TextRun> text_runs(const FontSet& fonts, Vec2 anchor, std::string_view text,
+                                   const TextStyle& style) {
+    const Layout lay = layout(fonts, text, style.size, style.markup);
+    const Placement p = place(fonts, lay, anchor, style);
+    std::vector<dl::TextRun> runs;
+    runs.reserve(lay.runs.size());
+    for (const RunStart& r : lay.runs)
+        if (!r.text.empty())
+            runs.push_back({std::string(r.text), r.size, p.at(p.ox + r.x, p.oy + r.baseline)});
+    return runs;
+}
+
+void emit_text(ImDrawList& list, const FontSet& fonts, Vec2 anchor, std::string_view text,
+               const TextStyle& style) {
+    const Layout lay = layout(fonts, text, style.size, style.markup);
+    const Placement p = place(fonts, lay, anchor, style);
     const ImU32 col = style.color.packed();
+    auto xf = [&p](float u, float v) {
+        const Vec2 q = p.at(u, v);
+        return ImVec2(q.x, q.y);
+    };
+    const float ox = p.ox, oy = p.oy;
     for (const Glyph& gl : lay.glyphs) {
         if (!gl.g->Visible) continue;
         const float u0 = ox + gl.x + gl.g->X0 * gl.k, u1 = ox + gl.x + gl.g->X1 * gl.k;

@@ -1,8 +1,10 @@
 #pragma once
 // Canvas: immediate-style 2D drawing in logical pixels (top-left origin) with antialiased,
-// shader-based primitives and text. Calls are recorded in order between begin() and end();
-// end() draws everything through GL, so shapes and text interleave exactly as called.
+// shader-based primitives and text. Calls are recorded in order between begin() and end() into a
+// DisplayList (display_list.hpp); end() replays it through GL, so shapes and text interleave exactly as
+// called. The same list replays to SVG and PDF (vector_output.hpp).
 // The canvas does not know which backend (headless or window) it renders on.
+#include "fv/gfx/display_list.hpp"
 #include "fv/gfx/gl_api.hpp"
 #include "fv/gfx/image.hpp"
 #include "fv/gfx/text.hpp"
@@ -17,30 +19,6 @@ namespace fv::gfx {
 class FontSet;
 class ImGuiRenderer;
 
-enum class LineStyle { Solid, Dashed, Dotted };
-
-struct Stroke {
-    Color color = colors::black;
-    float width = 1.5f; ///< Logical pixels.
-    LineStyle style = LineStyle::Solid;
-};
-
-enum class MarkerShape { None, Circle, Square, Triangle, Diamond, Cross, Plus };
-
-struct MarkerStyle {
-    MarkerShape shape = MarkerShape::Circle;
-    float size = 7;             ///< Diameter-like extent in logical pixels.
-    Color fill = colors::black; ///< Alpha 0 for an outline-only marker.
-    Color edge = colors::black;
-    float edge_width = 0; ///< 0: no outline (fill only).
-};
-
-struct ArrowStyle {
-    Stroke shaft;
-    float head_length = 12; ///< Logical pixels.
-    float head_width = 9;
-};
-
 class Canvas {
   public:
     /// `renderer` must have uploaded `fonts.atlas()` already (it holds the texture).
@@ -53,6 +31,13 @@ class Canvas {
     void begin(Vec2 logical_size, float pixel_ratio, Color background);
     /// Renders everything recorded since begin() into the current framebuffer.
     void end();
+    /// Stops recording without drawing (the list is for another backend).
+    void end_recording();
+    /// What was recorded since the last begin() (complete after end() or end_recording()).
+    const DisplayList& display_list() const;
+    /// Replays any display list through GL into the current framebuffer, `pixel_ratio` framebuffer pixels
+    /// per logical unit (what end() does with the recorded one).
+    void draw(const DisplayList& list, float pixel_ratio);
 
     /// Clip rectangle stack (scissor per draw). The initial clip is the whole canvas.
     void push_clip(const Rect& r, bool intersect = true);
@@ -77,7 +62,7 @@ class Canvas {
     void arrow(Vec2 from, Vec2 to, const ArrowStyle& s);
 
     /// Draws an RGBA image stretched over `dst` (nearest-neighbour when `smooth` is false, e.g. heat-map
-    /// cells). The pixels are uploaded to a texture right away (the GL context must be current).
+    /// cells). The pixels are copied into the display list and uploaded to a texture when drawn.
     void image(const Rect& dst, const Image& pixels, bool smooth = false);
 
     void text(Vec2 anchor, std::string_view str, const TextStyle& style);
@@ -86,6 +71,7 @@ class Canvas {
     Vec2 size() const { return size_; }
 
   private:
+    void record(dl::Command c);
     struct Impl;
     std::unique_ptr<Impl> impl_;
     const FontSet& fonts_;

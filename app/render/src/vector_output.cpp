@@ -1,0 +1,329 @@
+#include "fv/gfx/vector_output.hpp"
+
+#include "fv/gfx/fonts.hpp"
+
+#include <cairo-ft.h>
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <stdexcept>
+
+namespace fv::gfx {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// DejaVu Sans from the file the GL path's atlas is built from, loaded once for the process. `em_per_height`
+// turns the canvas's text size (ascent + descent, as ImGui/stb size a font) into cairo's em size.
+struct Font {
+    FT_Library lib = nullptr;
+    FT_Face face = nullptr;
+    cairo_font_face_t* cairo = nullptr;
+    double em_per_height = 1;
+};
+
+const Font& font() {
+    static const Font f = [] {
+        Font r;
+        const std::string path = FontSetOptions{}.path;
+        if (FT_Init_FreeType(&r.lib) != 0) throw std::runtime_error("FreeType could not be initialised");
+        if (FT_New_Face(r.lib, path.c_str(), 0, &r.face) != 0)
+            throw std::runtime_error("font not found: " + path + " (Debian: fonts-dejavu-core)");
+        const double height = static_cast<double>(r.face->ascender - r.face->descender);
+        r.em_per_height = height > 0 ? r.face->units_per_EM / height : 1.0;
+        r.cairo = cairo_ft_font_face_create_for_ft_face(r.face, 0);
+        return r; // Never freed: cairo may hold the face until exit.
+    }();
+    return f;
+}
+
+bool finite(Vec2 p) {
+    return std::isfinite(p.x) && std::isfinite(p.y);
+}
+
+void set_color(cairo_t* cr, Color c) {
+    cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a);
+}
+
+void set_stroke(cairo_t* cr, const Stroke& s) {
+    set_color(cr, s.color);
+    cairo_set_line_width(cr, s.width);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+    const DashPattern dp = dash_pattern(s);
+    if (dp.period > 0) {
+        const double dashes[2] = {dp.on, dp.period - dp.on};
+        cairo_set_dash(cr, dashes, 2, 0);
+    } else {
+        cairo_set_dash(cr, nullptr, 0, 0);
+    }
+}
+
+// The GL polyline's rules: non-finite points break the line, repeated points are dropped, `closed` closes
+// an unbroken line; each run restarts the dash pattern.
+void polyline_path(cairo_t* cr, const std::vector<Vec2>& pts, bool closed) {
+    std::vector<Vec2> run;
+    bool broken = false;
+    auto flush = [&](bool close) {
+        if (run.size() >= 2) {
+            cairo_move_to(cr, run[0].x, run[0].y);
+            for (std::size_t i = 1; i < run.size(); ++i) cairo_line_to(cr, run[i].x, run[i].y);
+            if (close && run.size() >= 3) cairo_close_path(cr);
+        }
+        run.clear();
+    };
+    for (const Vec2& p : pts) {
+        if (!finite(p)) {
+            flush(false);
+            broken = true;
+            continue;
+        }
+        if (!run.empty() && std::fabs(run.back().x - p.x) < 1e-4f && std::fabs(run.back().y - p.y) < 1e-4f)
+            continue;
+        run.push_back(p);
+    }
+    flush(closed && !broken);
+}
+
+void polygon_path(cairo_t* cr, const std::vector<Vec2>& pts, Vec2 at) {
+    cairo_move_to(cr, at.x + pts[0].x, at.y + pts[0].y);
+    for (std::size_t i = 1; i < pts.size(); ++i) cairo_line_to(cr, at.x + pts[i].x, at.y + pts[i].y);
+    cairo_close_path(cr);
+}
+
+struct Replay {
+    cairo_t* cr;
+    bool svg = false; // SVG viewers smooth every image: nearest-neighbour ones are sent enlarged.
+
+    void operator()(const dl::FillRect& c) {
+        cairo_rectangle(cr, c.rect.x0, c.rect.y0, c.rect.width(), c.rect.height());
+        set_color(cr, c.color);
+        cairo_fill(cr);
+    }
+    void operator()(const dl::StrokeRect& c) {
+        cairo_rectangle(cr, c.rect.x0, c.rect.y0, c.rect.width(), c.rect.height());
+        set_stroke(cr, c.stroke);
+        cairo_stroke(cr);
+    }
+    void operator()(const dl::Polyline& c) {
+        polyline_path(cr, c.points, c.closed);
+        set_stroke(cr, c.stroke);
+        cairo_stroke(cr);
+    }
+    void operator()(const dl::Circle& c) {
+        cairo_new_sub_path(cr);
+        cairo_arc_negative(cr, c.center.x, c.center.y, c.radius, 0, -2 * kPi); // From angle 0, as on GL.
+        cairo_close_path(cr);
+        set_stroke(cr, c.stroke);
+        cairo_stroke(cr);
+    }
+    void operator()(const dl::FillCircle& c) {
+        cairo_new_sub_path(cr);
+        cairo_arc(cr, c.center.x, c.center.y, c.radius, 0, 2 * kPi);
+        set_color(cr, c.color);
+        cairo_fill(cr);
+    }
+    void operator()(const dl::FillTriangle& c) {
+        polygon_path(cr, {c.a, c.b, c.c}, {0, 0});
+        set_color(cr, c.color);
+        cairo_fill(cr);
+    }
+    void operator()(const dl::Marker& c) {
+        const MarkerStyle& m = c.style;
+        auto path = [&] {
+            const std::vector<Vec2> outline = marker_outline(m.shape, m.size);
+            if (outline.empty()) {
+                cairo_new_sub_path(cr);
+                cairo_arc(cr, c.center.x, c.center.y, 0.5 * m.size, 0, 2 * kPi);
+                cairo_close_path(cr);
+            } else {
+                polygon_path(cr, outline, c.center);
+            }
+        };
+        if (m.fill.a > 0) {
+            path();
+            set_color(cr, m.fill);
+            cairo_fill(cr);
+        }
+        if (m.edge_width > 0 && m.edge.a > 0) {
+            path();
+            set_stroke(cr, {m.edge, m.edge_width, LineStyle::Solid});
+            cairo_stroke(cr);
+        }
+    }
+    void operator()(const dl::Arrow& c) {
+        const ArrowGeometry g = arrow_geometry(c.from, c.to, c.style);
+        if (!g.valid) return;
+        cairo_move_to(cr, g.shaft_from.x, g.shaft_from.y);
+        cairo_line_to(cr, g.shaft_to.x, g.shaft_to.y);
+        set_stroke(cr, c.style.shaft);
+        cairo_stroke(cr);
+        polygon_path(cr, {g.tip, g.left, g.right}, {0, 0});
+        set_color(cr, c.style.shaft.color);
+        cairo_fill(cr);
+    }
+    void operator()(const dl::Picture& c) {
+        const Image& img = *c.pixels;
+        if (img.empty() || c.dst.width() == 0 || c.dst.height() == 0) return;
+        // Each cell k x k pixels, so that smoothing blurs only a pixel at the cells' edges (at most 4 Mpx).
+        int kx = 1, ky = 1;
+        if (svg && !c.smooth) {
+            kx = std::clamp(
+                static_cast<int>(std::ceil(std::fabs(static_cast<double>(c.dst.width())) / img.width)), 1,
+                16);
+            ky = std::clamp(
+                static_cast<int>(std::ceil(std::fabs(static_cast<double>(c.dst.height())) / img.height)), 1,
+                16);
+            while (static_cast<double>(kx) * kx * ky * img.width * img.height > 4e6 && kx * ky > 1)
+                kx > ky ? --kx : --ky;
+        }
+        const int w = img.width * kx, h = img.height * ky;
+        cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+        cairo_surface_flush(s);
+        unsigned char* data = cairo_image_surface_get_data(s);
+        const int stride = cairo_image_surface_get_stride(s);
+        for (int y = 0; y < h; ++y) {
+            auto* row = reinterpret_cast<std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+            for (int x = 0; x < w; ++x) {
+                const std::uint8_t* p = img.pixel(x / kx, y / ky);
+                const std::uint32_t a = p[3];
+                auto pm = [a](std::uint32_t v) { return (v * a + 127) / 255; }; // Cairo wants premultiplied.
+                row[x] = (a << 24) | (pm(p[0]) << 16) | (pm(p[1]) << 8) | pm(p[2]);
+            }
+        }
+        cairo_surface_mark_dirty(s);
+        cairo_save(cr);
+        cairo_translate(cr, c.dst.x0, c.dst.y0);
+        cairo_scale(cr, static_cast<double>(c.dst.width()) / w, static_cast<double>(c.dst.height()) / h);
+        cairo_set_source_surface(cr, s, 0, 0);
+        cairo_pattern_set_filter(cairo_get_source(cr),
+                                 c.smooth ? CAIRO_FILTER_BILINEAR : CAIRO_FILTER_NEAREST);
+        cairo_pattern_set_extend(cairo_get_source(cr), CAIRO_EXTEND_PAD);
+        cairo_rectangle(cr, 0, 0, w, h);
+        cairo_fill(cr);
+        cairo_restore(cr);
+        cairo_surface_destroy(s);
+    }
+    void operator()(const dl::Text& c) {
+        const Font& f = font();
+        set_color(cr, c.style.color);
+        cairo_set_font_face(cr, f.cairo);
+        for (const dl::TextRun& r : c.runs) {
+            cairo_save(cr);
+            cairo_translate(cr, r.origin.x, r.origin.y);
+            if (c.style.angle_deg != 0) cairo_rotate(cr, -c.style.angle_deg * kPi / 180.0);
+            cairo_set_font_size(cr, r.size * f.em_per_height);
+            cairo_move_to(cr, 0, 0);
+            cairo_show_text(cr, r.text.c_str());
+            cairo_restore(cr);
+        }
+    }
+    void operator()(const dl::PushClip& c) {
+        cairo_save(cr);
+        cairo_rectangle(cr, c.rect.x0, c.rect.y0, std::max(0.0f, c.rect.width()),
+                        std::max(0.0f, c.rect.height()));
+        cairo_clip(cr);
+    }
+    void operator()(const dl::PopClip&) { cairo_restore(cr); }
+};
+
+void replay(cairo_t* cr, const DisplayList& list, bool svg) {
+    cairo_font_options_t* fo = cairo_font_options_create();
+    cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
+    cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
+    cairo_set_font_options(cr, fo);
+    cairo_font_options_destroy(fo);
+    set_color(cr, list.background);
+    cairo_paint(cr);
+    cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+    Replay r{cr, svg};
+    int depth = 0;
+    for (const dl::Command& c : list.commands) {
+        if (std::holds_alternative<dl::PopClip>(c)) {
+            if (depth == 0) continue; // Unbalanced pop: ignored, as on GL.
+            --depth;
+        } else if (std::holds_alternative<dl::PushClip>(c)) {
+            ++depth;
+        }
+        std::visit(r, c);
+    }
+    while (depth-- > 0) cairo_restore(cr);
+}
+
+cairo_status_t append(void* closure, const unsigned char* data, unsigned int length) {
+    static_cast<std::string*>(closure)->append(reinterpret_cast<const char*>(data), length);
+    return CAIRO_STATUS_SUCCESS;
+}
+
+} // namespace
+
+std::string render_vector(const DisplayList& list, VectorFormat format) {
+    font(); // Throws if the font is missing, before a surface exists.
+    std::string out;
+    const double w = list.size.x, h = list.size.y;
+    cairo_surface_t* s = format == VectorFormat::Pdf
+                             ? cairo_pdf_surface_create_for_stream(append, &out, w, h)
+                             : cairo_svg_surface_create_for_stream(append, &out, w, h);
+    if (format == VectorFormat::Pdf) {
+        cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATOR, "frictionviz");
+    } else {
+        cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
+    }
+    cairo_t* cr = cairo_create(s);
+    replay(cr, list, format == VectorFormat::Svg);
+    cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_finish(s); // Writes the rest of the document.
+    if (st == CAIRO_STATUS_SUCCESS) st = cairo_surface_status(s);
+    cairo_surface_destroy(s);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+    return out;
+}
+
+Image render_cairo_image(const DisplayList& list, float scale) {
+    font();
+    const int w = static_cast<int>(std::lround(list.size.x * scale)),
+              h = static_cast<int>(std::lround(list.size.y * scale));
+    cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+    cairo_t* cr = cairo_create(s);
+    cairo_scale(cr, scale, scale);
+    replay(cr, list, false);
+    cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_flush(s);
+    Image img(w, h);
+    if (st == CAIRO_STATUS_SUCCESS) {
+        const unsigned char* data = cairo_image_surface_get_data(s);
+        const int stride = cairo_image_surface_get_stride(s);
+        for (int y = 0; y < h; ++y) {
+            const auto* row =
+                reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+            for (int x = 0; x < w; ++x) {
+                const std::uint32_t v = row[x], a = v >> 24;
+                auto un = [a](std::uint32_t c) {
+                    return a ? std::min<std::uint32_t>(255, (c * 255 + a / 2) / a) : 0;
+                };
+                std::uint8_t* p = img.pixel(x, y);
+                p[0] = static_cast<std::uint8_t>(un((v >> 16) & 0xFF));
+                p[1] = static_cast<std::uint8_t>(un((v >> 8) & 0xFF));
+                p[2] = static_cast<std::uint8_t>(un(v & 0xFF));
+                p[3] = static_cast<std::uint8_t>(a);
+            }
+        }
+    }
+    cairo_surface_destroy(s);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+    return img;
+}
+
+} // namespace fv::gfx
