@@ -17,10 +17,23 @@ RenderSession::RenderSession(const gfx::ContextOptions& options)
     : ctx_(gfx::create_context(options)), fonts_(font_options(ctx_->pixel_ratio())), imgui_(ctx_->gl()),
       canvas_((imgui_.upload_font_atlas(fonts_.atlas()), ctx_->gl()), fonts_, imgui_) {}
 
-gfx::Image RenderSession::render_figure(const FigureData& fig) {
+gfx::Vec2 RenderSession::logical_page() const {
     const float ratio = ctx_->pixel_ratio();
     const gfx::Size fb = ctx_->framebuffer_size();
-    const gfx::Vec2 logical{static_cast<float>(fb.width) / ratio, static_cast<float>(fb.height) / ratio};
+    return {static_cast<float>(fb.width) / ratio, static_cast<float>(fb.height) / ratio};
+}
+
+gfx::DisplayList RenderSession::record_figure(const FigureData& fig) {
+    const gfx::Vec2 logical = logical_page();
+    canvas_.begin(logical, ctx_->pixel_ratio(), gfx::colors::white);
+    paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
+    canvas_.end_recording();
+    return canvas_.display_list();
+}
+
+gfx::Image RenderSession::render_figure(const FigureData& fig) {
+    const float ratio = ctx_->pixel_ratio();
+    const gfx::Vec2 logical = logical_page();
     gfx::Image img;
     for (int frame = 0; frame < 2; ++frame) {
         canvas_.begin(logical, ratio, gfx::colors::white);

@@ -26,6 +26,11 @@ class RenderSession {
     // Draws a figure over the whole logical page and reads it back. Two frames are drawn: ImGui lays out
     // some things only on the second (toolchain notes); the second frame is the one returned.
     gfx::Image render_figure(const FigureData& fig);
+    // The figure's display list over the logical page, recorded without drawing (for SVG and PDF). After
+    // render_figure(), canvas().display_list() holds the same list.
+    gfx::DisplayList record_figure(const FigureData& fig);
+    // The logical page: framebuffer / pixel ratio.
+    gfx::Vec2 logical_page() const;
 
   private:
     std::unique_ptr<gfx::GpuContext> ctx_;

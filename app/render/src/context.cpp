@@ -37,7 +37,7 @@ std::unique_ptr<GpuContext> create_context(const ContextOptions& options) {
     case Backend::Headless:
         break;
     }
-    return std::make_unique<HeadlessContext>(options.width, options.height);
+    return std::make_unique<HeadlessContext>(options.width, options.height, options.scale);
 }
 
 } // namespace fv::gfx

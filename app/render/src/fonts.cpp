@@ -32,7 +32,10 @@ FontSet::FontSet(const FontSetOptions& options)
     std::sort(sizes.begin(), sizes.end());
     for (float s : sizes) {
         ImFontConfig cfg;
-        cfg.OversampleH = 3; // Sub-pixel horizontal positioning keeps proportional text even.
+        // Sub-pixel horizontal positioning keeps proportional text even; from 2 pixels per unit up whole
+        // pixels are fine enough, and the atlas (which grows with the square of the ratio) stays within GL
+        // limits up to a ratio of 8.
+        cfg.OversampleH = ratio_ >= 2 ? 1 : 3;
         cfg.OversampleV = 1;
         cfg.PixelSnapH = false;
         ImFont* f =

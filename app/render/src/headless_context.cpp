@@ -4,6 +4,7 @@
 
 #include <dlfcn.h>
 
+#include <cmath>
 #include <cstdlib>
 
 #include <stdexcept>
@@ -67,9 +68,11 @@ struct HeadlessContext::Impl {
     std::vector<unsigned char> buffer; // The default framebuffer lives here (RGBA8, bottom-up).
 };
 
-HeadlessContext::HeadlessContext(int width, int height)
-    : impl_(std::make_unique<Impl>()), width_(width), height_(height) {
+HeadlessContext::HeadlessContext(int width, int height, float scale)
+    : impl_(std::make_unique<Impl>()), width_(width), height_(height), scale_(scale) {
     if (width <= 0 || height <= 0) throw std::runtime_error("headless context: size must be positive");
+    if (!(scale > 0) || !std::isfinite(scale))
+        throw std::runtime_error("headless context: scale must be > 0");
     const OsmesaLib& lib = osmesa();
     const int attribs[] = {kOsmesaFormat,
                            GL_RGBA,
@@ -93,6 +96,11 @@ HeadlessContext::HeadlessContext(int width, int height)
 
 HeadlessContext::~HeadlessContext() {
     if (impl_->ctx) osmesa().destroy(impl_->ctx);
+}
+
+Size HeadlessContext::logical_size() const {
+    return {static_cast<int>(std::lround(static_cast<double>(width_) / scale_)),
+            static_cast<int>(std::lround(static_cast<double>(height_) / scale_))};
 }
 
 void HeadlessContext::make_current() {

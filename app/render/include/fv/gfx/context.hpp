@@ -20,6 +20,9 @@ struct ContextOptions {
     int height = 800;
     std::string title = "frictionviz"; ///< Window only.
     bool visible = true;               ///< Window only.
+    /// Headless only: framebuffer pixels per logical unit (device pixel ratio); the logical page is
+    /// width/scale x height/scale. A window takes its ratio from the screen.
+    float scale = 1.0f;
 };
 
 struct Size {
@@ -39,8 +42,8 @@ class GpuContext {
     virtual Size framebuffer_size() const = 0;
     /// Size in logical units (window size; equals the framebuffer size headless).
     virtual Size logical_size() const = 0;
-    /// Framebuffer pixels per logical unit (2 on a HiDPI screen, 1 headless).
-    float pixel_ratio() const;
+    /// Framebuffer pixels per logical unit (2 on a HiDPI screen; headless: ContextOptions::scale).
+    virtual float pixel_ratio() const;
     virtual void make_current() = 0;
     /// Ends a frame: swaps buffers in a window, glFinish headless.
     virtual void present() = 0;
@@ -59,10 +62,12 @@ class GpuContext {
 /// made.
 class HeadlessContext final : public GpuContext {
   public:
-    HeadlessContext(int width, int height);
+    HeadlessContext(int width, int height, float scale = 1.0f);
     ~HeadlessContext() override;
     Size framebuffer_size() const override { return {width_, height_}; }
-    Size logical_size() const override { return {width_, height_}; }
+    /// Rounded; the exact logical page is framebuffer_size() / pixel_ratio().
+    Size logical_size() const override;
+    float pixel_ratio() const override { return scale_; }
     void make_current() override;
     void present() override;
     std::string describe() const override;
@@ -72,6 +77,7 @@ class HeadlessContext final : public GpuContext {
     std::unique_ptr<Impl> impl_;
     int width_;
     int height_;
+    float scale_;
 };
 
 /// GLFW 3.3 window with a core forward-compatible 3.3 context. HiDPI aware: the framebuffer may
