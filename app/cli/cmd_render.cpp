@@ -3,6 +3,7 @@
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "render_output.hpp"
 #include "test_hook.hpp"
 
 #include "figures/render_session.hpp"
@@ -124,6 +125,7 @@ Command add_render_command(CLI::App& root) {
         std::string size = "1280x800";
         ModelArgs model; // its units: --amplitude, --frequency (fig19, scene, map), --vb, --zss (scene, map)
         std::string data;
+        OutputArgs output; // --format, --scale
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand(
@@ -143,6 +145,7 @@ Command add_render_command(CLI::App& root) {
     add_vibration_options(*cmd, a->model.units,
                           "fig19: for a vb column (A and f) and z_ss (A); scene, map: for --vb, --zss");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
+    add_output_options(*cmd, a->output);
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
     a->model.zeta_opt =
         cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
@@ -193,12 +196,17 @@ Command add_render_command(CLI::App& root) {
                 }
                 if (specs.empty() && !data_fig)
                     throw UsageError("--figure: no figure named; allowed: " + figure_names());
+                Size sz;
+                std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
+                check_output_args(a->output, sz.w, sz.h);
                 check_out_dir(a->out);
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
                 // Each image's own name too (say a directory or a socket called fig8.png is in the way).
-                for (const FigureSpec& f : specs) check_out(dir + "/" + f.id + ".png");
-                if (data_fig) check_out(dir + "/fig19.png");
+                for (const std::string& ext : a->output.extensions()) {
+                    for (const FigureSpec& f : specs) check_out(dir + "/" + f.id + "." + ext);
+                    if (data_fig) check_out(dir + "/fig19." + ext);
+                }
                 // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
                 std::optional<FigureData> fig19;
                 FitResult fig19_fit;
@@ -217,19 +225,18 @@ Command add_render_command(CLI::App& root) {
                         throw UsageError(std::string("--data: ") + e.what());
                     }
                 }
-                Size sz;
-                std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
-
                 gfx::ContextOptions co;
                 co.backend = gfx::Backend::Headless;
                 co.width = sz.w;
                 co.height = sz.h;
+                co.scale = static_cast<float>(a->output.scale);
                 std::unique_ptr<app::RenderSession> session;
                 try {
                     session = std::make_unique<app::RenderSession>(co);
                 } catch (const std::exception& e) {
                     throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
                 }
+                check_gl_limits(*session, a->output);
                 // One figure at a time, so that memory does not grow with the number of figures: figure k is
                 // computed and drawn (GL is single-threaded) while the frames before it are PNG-encoded (the
                 // slow part) and written on other threads; it is handed over when fewer than `encoders` are
@@ -238,14 +245,15 @@ Command add_render_command(CLI::App& root) {
                 struct Output {
                     std::string id;
                     gfx::Image image;
+                    gfx::DisplayList list;                                // for SVG and PDF
                     std::vector<std::pair<std::string, std::string>> csv; // file, content
                 };
-                auto write = [dir](Output o) { // owns the frame and frees it as soon as it is encoded
-                    const std::vector<unsigned char> png = gfx::encode_png(o.image);
+                const OutputArgs& output = a->output;
+                // Owns the frame and the display list, and frees them as soon as they are written.
+                auto write = [dir, &output](Output o) {
+                    std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
                     std::vector<std::uint8_t>().swap(o.image.rgba);
-                    std::string err = write_file_atomic(
-                        dir + "/" + o.id + ".png",
-                        std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+                    o.list = {};
                     for (const auto& [file, content] : o.csv)
                         if (err.empty()) err = write_file_atomic(file, content);
                     return err;
@@ -267,7 +275,13 @@ Command add_render_command(CLI::App& root) {
                     const bool is_fit = k == specs.size(); // fig19 comes last
                     FigureData data = is_fit ? std::move(*fig19) : compute_figure(specs[k]);
                     for (TableData& t : data.tables) apply_test_hook(t);
-                    Output o{data.id, session->render_figure(data), {}};
+                    Output o{data.id, {}, {}, {}};
+                    if (output.png) {
+                        o.image = session->render_figure(data);
+                        if (output.svg || output.pdf) o.list = session->canvas().display_list();
+                    } else {
+                        o.list = session->record_figure(data);
+                    }
                     for (const TableData& t : data.tables)
                         o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t)});
                     if (const std::string w = check_figure(data, is_fit ? &fig19_fit : nullptr); !w.empty()) {
@@ -275,9 +289,10 @@ Command add_render_command(CLI::App& root) {
                         failed += (failed.empty() ? "" : "; ") + w;
                     }
                     while (pending.size() >= encoders) finish_oldest();
-                    std::string line = "wrote " + dir + "/" + o.id + ".png (" +
-                                       std::to_string(o.image.width) + "x" + std::to_string(o.image.height) +
-                                       ") and its CSV";
+                    std::string line = "wrote " + dir + "/" + o.id + ".";
+                    for (const std::string& ext : output.extensions())
+                        line += (ext == output.extensions().front() ? "" : ", .") + ext;
+                    line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + ") and its CSV";
                     auto job = std::async(std::launch::async, write, std::move(o));
                     pending.emplace_back(std::move(job), std::move(line));
                 }

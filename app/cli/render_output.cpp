@@ -1,0 +1,133 @@
+#include "render_output.hpp"
+
+#include "errors.hpp"
+#include "validators.hpp"
+
+#include "figures/render_session.hpp"
+
+#include "fv/atomic_file.hpp"
+#include "fv/gfx/png.hpp"
+#include "fv/gfx/vector_output.hpp"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace fv::cli {
+namespace {
+
+constexpr const char* kFormats = "png, svg, pdf (comma separated)";
+
+// Every item a known format; the flags set as a side effect when `out` is given.
+std::string parse_formats(const std::string& s, OutputArgs* out) {
+    std::stringstream ss(s);
+    std::string item;
+    bool any = false;
+    while (std::getline(ss, item, ',')) {
+        any = true;
+        if (item == "png") {
+            if (out) out->png = true;
+        } else if (item == "svg") {
+            if (out) out->svg = true;
+        } else if (item == "pdf") {
+            if (out) out->pdf = true;
+        } else {
+            return "unknown format '" + item + "'; allowed: " + kFormats;
+        }
+    }
+    if (!any || s.back() == ',') return "'" + s + "' has an empty item; allowed: " + kFormats;
+    return {};
+}
+
+std::string pretty(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+} // namespace
+
+std::vector<std::string> OutputArgs::extensions() const {
+    std::vector<std::string> e;
+    if (png) e.push_back("png");
+    if (svg) e.push_back("svg");
+    if (pdf) e.push_back("pdf");
+    return e;
+}
+
+void add_output_options(CLI::App& cmd, OutputArgs& args) {
+    cmd.add_option(
+           "--format", args.format,
+           std::string("output formats: ") + kFormats +
+               "; FIGURE.png, FIGURE.svg, FIGURE.pdf (SVG and PDF: vectors and real text, the page the "
+               "logical size in points)")
+        ->check(CLI::Validator([](std::string& s) { return parse_formats(s, nullptr); }, "png|svg|pdf,.."))
+        ->capture_default_str();
+    cmd.add_option("--scale", args.scale,
+                   "device pixel ratio: image pixels per logical unit, in [" + pretty(kMinScale) + ", " +
+                       pretty(kMaxScale) +
+                       "]; lengths are logical, the page is --size / --scale (--size 2560x1600 --scale 2 is "
+                       "the 1280x800 picture at twice the resolution)")
+        ->check(number_in({kMinScale, kMaxScale}))
+        ->capture_default_str();
+}
+
+void check_output_args(OutputArgs& args, int width, int height) {
+    args.png = args.svg = args.pdf = false;
+    if (const std::string err = parse_formats(args.format, &args); !err.empty())
+        throw UsageError("--format: " + err);
+    if (!(args.scale >= kMinScale && args.scale <= kMaxScale))
+        throw UsageError("--scale: " + pretty(args.scale) + " is out of range; allowed: [" +
+                         pretty(kMinScale) + ", " + pretty(kMaxScale) + "]");
+    const double pw = width / args.scale, ph = height / args.scale;
+    if (pw < kMinPageW - 1e-9 || ph < kMinPageH - 1e-9 || pw > kMaxPageW + 1e-9 || ph > kMaxPageH + 1e-9) {
+        std::ostringstream m;
+        m << "--size " << width << "x" << height << " at --scale " << pretty(args.scale) << " is a page of "
+          << pretty(pw) << "x" << pretty(ph) << " logical units; allowed: --size / --scale between "
+          << kMinPageW << "x" << kMinPageH << " and " << kMaxPageW << "x" << kMaxPageH;
+        throw UsageError(m.str());
+    }
+}
+
+void check_gl_limits(app::RenderSession& session, const OutputArgs& args) {
+    const gfx::GlApi& gl = session.context().gl();
+    GLint renderbuffer = 0, texture = 0, viewport[2] = {0, 0};
+    gl.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    gl.GetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    const gfx::Size fb = session.context().framebuffer_size();
+    const int max_fb = std::min({renderbuffer, viewport[0], viewport[1]});
+    if (fb.width > max_fb || fb.height > max_fb)
+        throw UsageError("--size " + std::to_string(fb.width) + "x" + std::to_string(fb.height) +
+                         " passes the GL limit; allowed: at most " + std::to_string(max_fb) +
+                         " pixels a side");
+    const ImFontAtlas& atlas = session.fonts().atlas();
+    if (atlas.TexWidth > texture || atlas.TexHeight > texture)
+        throw UsageError("--scale " + pretty(args.scale) + ": the text at that scale needs a " +
+                         std::to_string(atlas.TexWidth) + "x" + std::to_string(atlas.TexHeight) +
+                         " font texture, past the GL limit of " + std::to_string(texture) +
+                         "; allowed: a smaller --scale");
+}
+
+std::string write_figure_files(const std::string& dir, const std::string& id, const OutputArgs& args,
+                               const gfx::Image& image, const gfx::DisplayList& list) {
+    const std::string base = dir + "/" + id;
+    std::string err;
+    try {
+        if (args.png) {
+            const std::vector<unsigned char> png = gfx::encode_png(image);
+            err = write_file_atomic(base + ".png",
+                                    std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
+        }
+        if (err.empty() && args.svg)
+            err = write_file_atomic(base + ".svg", gfx::render_vector(list, gfx::VectorFormat::Svg));
+        if (err.empty() && args.pdf)
+            err = write_file_atomic(base + ".pdf", gfx::render_vector(list, gfx::VectorFormat::Pdf));
+    } catch (const std::exception& e) {
+        err = id + ": " + e.what();
+    }
+    return err;
+}
+
+} // namespace fv::cli

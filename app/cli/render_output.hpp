@@ -1,0 +1,48 @@
+// render's output formats and resolution: --format png,svg,pdf and --scale, checked before anything is
+// drawn; each figure's files written through the output-path policy (fv::write_file_atomic).
+#pragma once
+
+#include "fv/gfx/display_list.hpp"
+#include "fv/gfx/image.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace fv::app {
+class RenderSession;
+}
+
+namespace fv::cli {
+
+inline constexpr double kMinScale = 0.25, kMaxScale = 8;
+// The logical page (--size / --scale) the figure layout needs at least, and at most.
+inline constexpr int kMinPageW = 320, kMinPageH = 240, kMaxPageW = 7680, kMaxPageH = 4320;
+
+struct OutputArgs {
+    std::string format = "png";
+    double scale = 1;
+    // Parsed from `format`, in the order png, svg, pdf.
+    bool png = false, svg = false, pdf = false;
+    // The file extensions asked for, "png", "svg", "pdf".
+    std::vector<std::string> extensions() const;
+};
+
+// Adds --format and --scale to `cmd`.
+void add_output_options(CLI::App& cmd, OutputArgs& args);
+
+// Parses the format list and checks the page of `width` x `height` pixels at the scale (UsageError, one
+// line naming the allowed values).
+void check_output_args(OutputArgs& args, int width, int height);
+
+// The GL path's limits for the session's framebuffer and font atlas (GL_MAX_RENDERBUFFER_SIZE,
+// GL_MAX_VIEWPORT_DIMS, GL_MAX_TEXTURE_SIZE): UsageError when --size at --scale passes them.
+void check_gl_limits(app::RenderSession& session, const OutputArgs& args);
+
+// Writes DIR/ID.png (encoded from `image`), DIR/ID.svg and DIR/ID.pdf (from `list`) as asked, each through
+// write_file_atomic. Returns the first error, empty on success. Thread-safe.
+std::string write_figure_files(const std::string& dir, const std::string& id, const OutputArgs& args,
+                               const gfx::Image& image, const gfx::DisplayList& list);
+
+} // namespace fv::cli
