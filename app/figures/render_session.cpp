@@ -34,14 +34,13 @@ gfx::DisplayList RenderSession::record_figure(const FigureData& fig) {
 gfx::Image RenderSession::render_figure(const FigureData& fig) {
     const float ratio = ctx_->pixel_ratio();
     const gfx::Vec2 logical = logical_page();
-    gfx::Image img;
-    for (int frame = 0; frame < 2; ++frame) {
-        canvas_.begin(logical, ratio, gfx::colors::white);
-        paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
-        canvas_.end();
-        if (frame == 1) img = ctx_->read_pixels();
-        ctx_->present();
-    }
+    // One frame: the canvas keeps no state between frames (an ImGui context, which lays some things out
+    // only on its second frame, is not involved).
+    canvas_.begin(logical, ratio, gfx::colors::white);
+    paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
+    canvas_.end();
+    gfx::Image img = ctx_->read_pixels();
+    ctx_->present();
     return img;
 }
 

@@ -23,8 +23,8 @@ class RenderSession {
     gfx::FontSet& fonts() { return fonts_; }
     gfx::ImGuiRenderer& imgui() { return imgui_; }
 
-    // Draws a figure over the whole logical page and reads it back. Two frames are drawn: ImGui lays out
-    // some things only on the second (toolchain notes); the second frame is the one returned.
+    // Draws a figure over the whole logical page and reads it back (one frame: the canvas keeps no state
+    // between frames; its display list is canvas().display_list() afterwards).
     gfx::Image render_figure(const FigureData& fig);
     // The figure's display list over the logical page, recorded without drawing (for SVG and PDF). After
     // render_figure(), canvas().display_list() holds the same list.
