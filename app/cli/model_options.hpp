@@ -13,11 +13,8 @@
 
 namespace fv::cli {
 
-// Allowed ranges, stated once so that help texts and error messages agree.
-inline constexpr Range kZetaRange{0, 100};
-inline constexpr Range kThetaRange{0, 180}; // degrees; other angles are mirror images
-inline constexpr Range kRdispRange{0, 1e4, true};
-inline constexpr Range kIRange{0, 10};
+// The parameters' ranges (kZetaRange, kThetaRange, kRdispRange, kIRange) are core's table,
+// fv/param_ranges.hpp, shared with the data reader and the app.
 inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
 inline constexpr int kMaxSweepPoints = 100000; // COUNT of a sweep's FROM:TO:COUNT
 

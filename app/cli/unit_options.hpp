@@ -19,10 +19,7 @@
 
 namespace fv::cli {
 
-inline constexpr Range kVbRange{0, 1e6};              // m/s
-inline constexpr Range kAmplitudeRange{0, 1e6, true}; // um
-inline constexpr Range kFrequencyRange{0, 1e6, true}; // kHz
-inline constexpr Range kZssRange{0, 1e6, true};       // um
+// kVbRange (m/s), kAmplitudeRange (um), kFrequencyRange (kHz), kZssRange (um): fv/param_ranges.hpp.
 
 struct UnitArgs {
     double vb = 0, amplitude = 0, frequency = 0, zss = 0;

@@ -50,16 +50,6 @@ bool parse_finite(const std::string& s, double& out) {
     return parse_decimal(s, out) == Parsed::ok;
 }
 
-std::string describe(Range r) {
-    std::ostringstream os;
-    os << (r.lo_open ? "(" : "[") << r.lo << ", " << r.hi << "]";
-    return os.str();
-}
-
-bool inside(double v, Range r) {
-    return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi;
-}
-
 namespace {
 
 std::string number_error(const std::string& s, Range r) {

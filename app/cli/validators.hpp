@@ -1,6 +1,8 @@
 // CLI11 validators that turn bad numbers into one-line messages naming the allowed range.
 #pragma once
 
+#include "fv/param_ranges.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -8,10 +10,10 @@
 
 namespace fv::cli {
 
-struct Range {
-    double lo, hi;
-    bool lo_open = false; // lo itself excluded
-};
+// The ranges themselves (kZetaRange, ...) are core's table, fv/param_ranges.hpp.
+using Range = ParamRange;
+using fv::describe;
+using fv::inside;
 
 // Parses a whole string as a decimal number ("-1.5e3"; not hex floats, inf, nan or blanks around it).
 // -0 is read as 0.
@@ -46,10 +48,5 @@ struct RangeSpec {
 };
 // Parse a string that range_spec() accepted.
 RangeSpec parse_range_spec(const std::string& s);
-
-std::string describe(Range r);
-
-// v lies in r.
-bool inside(double v, Range r);
 
 } // namespace fv::cli

@@ -1,6 +1,7 @@
 #include "controls.hpp"
 
 #include "fv/figures.hpp"
+#include "fv/param_ranges.hpp"
 
 #include <imgui.h>
 
@@ -11,7 +12,9 @@ namespace fv::app {
 
 void UiEdits::merge(const UiEdits& o) {
     if (o.model) model = o.model;
-    if (o.params) params = o.params;
+    if (o.params) params = o.params, vb_m_s.reset(), zss_um.reset();
+    if (o.vb_m_s) vb_m_s = o.vb_m_s;
+    if (o.zss_um) zss_um = o.zss_um;
     if (o.playing) playing = o.playing;
     if (o.show_map) show_map = o.show_map;
     if (o.speed) speed = o.speed;
@@ -42,6 +45,10 @@ bool slider_double(const char* label, double* v, double lo, double hi, const cha
     return ImGui::SliderScalar(label, ImGuiDataType_Double, v, &lo, &hi, format,
                                log ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
 }
+// A model parameter's slider spans a range of the shared table (fv/param_ranges.hpp).
+bool slider_double(const char* label, double* v, ParamRange r, const char* format, bool log = false) {
+    return slider_double(label, v, r.lo, r.hi, format, log);
+}
 
 void readout(const char* name, const char* fmt, double v) {
     ImGui::TextUnformatted(name);
@@ -66,9 +73,9 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
     ImGui::TextUnformatted("Parameters");
-    changed |= slider_double("ζ", &p.zeta, 0, 3, "%.3f");
+    changed |= slider_double("ζ", &p.zeta, kSliders.zeta, "%.3f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("velocity ratio ζ = v_b / v_v, Eq. (6)");
-    changed |= slider_double("θ [°]", &theta_deg, 0, 180, "%.1f");
+    changed |= slider_double("θ [°]", &theta_deg, kSliders.theta_deg, "%.1f");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("angle of the vibration to the sliding velocity, Eq. (1)");
     for (double q : {0.0, 30.0, 45.0, 60.0, 90.0}) {
         char b[16];
@@ -79,10 +86,10 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     ImGui::NewLine();
     const bool dahl = ui.model == Model::dahl;
     if (!dahl) ImGui::BeginDisabled();
-    changed |= slider_double("r_disp", &p.rdisp, 0.1, 100, "%.3g", true);
+    changed |= slider_double("r_disp", &p.rdisp, kSliders.rdisp, "%.3g", true);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact");
-    changed |= slider_double("i", &p.i, 0, 3, "%.2f");
+    changed |= slider_double("i", &p.i, kSliders.i, "%.2f");
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Dahl shape exponent, Eq. (12); i = 0 sticks below z_ss (Eq. 27)");
     if (ImGui::SmallButton("i = 0 (stiction)")) p.i = 0, changed = true;

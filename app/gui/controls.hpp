@@ -6,8 +6,16 @@
 #include "ui_state.hpp"
 
 #include "fv/live_sim.hpp"
+#include "fv/param_ranges.hpp"
 
 namespace fv::app {
+
+// What the panel's sliders span: parts of the shared range table (fv/param_ranges.hpp), which the CLI's
+// validators and AppState::sync check against too.
+struct SliderRanges {
+    ParamRange zeta, theta_deg, rdisp, i;
+};
+inline constexpr SliderRanges kSliders{kZetaSlider, kThetaSlider, kRdispSlider, kISlider};
 
 // Draws the panel at the left edge (width in logical pixels) and returns what the user changed.
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,

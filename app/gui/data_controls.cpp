@@ -41,8 +41,8 @@ std::vector<std::string> csv_files(const std::filesystem::path& dir) {
 
 UiEdits draw_vibration_controls(const UiState& ui) {
     UiEdits e;
-    const double vv = units::vibration_velocity(ui.amplitude_um, ui.frequency_khz);
-    ImGui::Text("Physical units  (v_v = 2π f A = %.4g m/s)", vv);
+    // The physical view was converted once this frame (AppState::sync); typed values go back as edits.
+    ImGui::Text("Physical units  (v_v = 2π f A = %.4g m/s)", ui.vv_m_s);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("ζ = v_b / (2π f A), Eq. (6); r_disp = A / z_ss, Eq. (34).\n"
                           "Changing A or f keeps v_b and z_ss: ζ and r_disp follow.");
@@ -57,20 +57,12 @@ UiEdits draw_vibration_controls(const UiState& ui) {
     ImGui::SameLine();
     if (input_positive("f [kHz]", &f, "%.4g")) e.frequency_khz = f;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("vibration frequency");
-    double vb = vb_of(ui), zss = zss_of(ui);
-    Params p = ui.params;
-    if (ImGui::InputDouble("v_b [m/s]", &vb, 0, 0, "%.4g") && std::isfinite(vb) && vb >= 0 &&
-        vb / vv <= kMaxZeta) {
-        p.zeta = vb / vv;
-        e.params = p;
-    }
+    double vb = ui.vb_m_s, zss = ui.zss_um;
+    if (ImGui::InputDouble("v_b [m/s]", &vb, 0, 0, "%.4g") && std::isfinite(vb)) e.vb_m_s = vb;
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("sliding velocity of the body; sets ζ = v_b / v_v");
     ImGui::SameLine();
     if (ui.model == Model::rigid) ImGui::BeginDisabled();
-    if (input_positive("z_ss [µm]", &zss, "%.4g") && ui.amplitude_um / zss <= 1e4) {
-        p.rdisp = ui.amplitude_um / zss;
-        e.params = p;
-    }
+    if (input_positive("z_ss [µm]", &zss, "%.4g")) e.zss_um = zss;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("steady deflection of the asperity F_c / σ₀, Eq. (15); sets r_disp = A / z_ss");
     if (ui.model == Model::rigid) ImGui::EndDisabled();

@@ -1,5 +1,6 @@
 #include "gui_app.hpp"
 
+#include "app_state.hpp"
 #include "controls.hpp"
 #include "dashboard.hpp"
 #include "measured_data.hpp"
@@ -49,20 +50,19 @@ std::string trace_csv(const LiveSim& sim) {
 
 // Mouse over the top view: wheel zooms, left-drag pans (and stops following the drift). Over the force plot
 // a tooltip reads the values under the cursor.
-void handle_mouse(UiState& ui, const LiveSim& sim, const DashboardTransforms& t) {
+void handle_mouse(ViewState& view, const LiveSim& sim, const DashboardTransforms& t) {
     ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return;
     const gfx::Vec2 m{io.MousePos.x, io.MousePos.y};
     const auto& tv = t.top_view;
     if (tv.area.contains(m)) {
-        if (io.MouseWheel != 0)
-            ui.view.zoom = std::clamp(ui.view.zoom * std::pow(0.85, io.MouseWheel), 0.05, 20.0);
+        if (io.MouseWheel != 0) view.zoom = std::clamp(view.zoom * std::pow(0.85, io.MouseWheel), 0.05, 20.0);
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             const double sx = (tv.x1 - tv.x0) / tv.area.width(), sy = (tv.y1 - tv.y0) / tv.area.height();
-            ui.view.pan += Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy);
+            view.pan += Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy);
         }
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
-            ui.view = ViewState{1, {0, 0}, true, ui.view.trail_periods};
+            view = ViewState{1, {0, 0}, true, view.trail_periods};
     }
     const auto& fp = t.force;
     if (fp.area.contains(m) && !sim.history().empty()) {
@@ -114,25 +114,11 @@ int run_gui(const GuiOptions& o) {
     ImGui::GetStyle().WindowRounding = 0;
     if (window) ImGui_ImplGlfw_InitForOpenGL(window->native(), true);
 
-    UiState ui;
-    ui.model = o.model;
-    ui.params = o.params;
-    ui.amplitude_um = o.amplitude_um;
-    ui.frequency_khz = o.frequency_khz;
-    if (o.data) ui.status = show_measured(ui, *o.data);
-    LiveSim sim(ui.model, ui.params);
-    sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
-    RatioWorker worker;
-    auto ratio_request = [&ui] {
-        return RatioRequest{ui.model, ui.params, ui.show_map, ratio_zeta_max(ui.data ? &*ui.data : nullptr)};
-    };
-    worker.request(ratio_request());
+    AppState app(o.model, o.params, o.amplitude_um, o.frequency_khz, o.data);
     OpenDataDialog dialog;
-    DataFit fit;
 
     UiEdits queued;
     DashboardTransforms transforms{};
-    double step_carry = 0;
     auto last = Clock::now();
     std::vector<double> frame_ms;
     double phase_ms[3] = {0, 0, 0}; // simulation + UI, dashboard layout, GL drawing (bench only)
@@ -148,60 +134,15 @@ int run_gui(const GuiOptions& o) {
             for (std::string& path : window->take_dropped_paths()) queued.load_data = std::move(path);
         }
         // 1. All edits of the previous frame (panel, keys, mouse) and of the script land here, at one point.
-        queued.merge(script_edits(script, frame, ui));
+        queued.merge(script_edits(script, frame, app.ui()));
         if (o.bench_frames > 0) {
             // Benchmark: a slider dragged every frame, the worst case for the UI thread.
-            Params p = ui.params;
+            Params p = app.ui().params;
             p.zeta = 0.1 + 0.8 * (0.5 + 0.5 * std::sin(frame * 0.05));
             queued.params = p;
         }
-        if (queued.preset) {
-            if (const FigureSpec* f = find_figure(*queued.preset)) {
-                queued.params = f->params;
-                queued.model = Model::dahl;
-                queued.reset = true;
-            }
-        }
-        bool model_changed = false, data_changed = false;
-        if (queued.model && *queued.model != ui.model) ui.model = *queued.model, model_changed = true;
-        if (queued.params) {
-            if (const std::string err = range_error(*queued.params); err.empty())
-                ui.params = *queued.params, model_changed = true;
-            else
-                ui.status = err;
-        }
-        if (queued.amplitude_um || queued.frequency_khz) {
-            const std::string err = set_vibration(ui, queued.amplitude_um, queued.frequency_khz);
-            if (err.empty())
-                model_changed = data_changed = true;
-            else
-                ui.status = err;
-        }
-        if (queued.load_data) ui.status = load_measured(ui, *queued.load_data), data_changed = true;
-        if (queued.clear_data && ui.data) ui.data.reset(), ui.status = "data cleared", data_changed = true;
-        if (queued.fit_data && ui.data && ui.model == Model::dahl) {
-            fit.start(ui);
-            ui.status = "fitting r_disp and i to " + std::to_string(ui.data->points.size()) + " points…";
-        }
-        // A finished fit sets r_disp and i (scripted runs wait for it, for reproducible pictures).
-        if (const auto done = fit.poll(ui, scripted)) {
-            ui.status = done->status;
-            if (done->params) ui.params = *done->params, model_changed = true;
-        }
-        ui.fitting = fit.running();
-        if (queued.playing) ui.playing = *queued.playing;
-        bool ask_worker = false;
-        if (queued.show_map && *queued.show_map != ui.show_map)
-            ui.show_map = *queued.show_map, ask_worker = true;
-        if (queued.speed) ui.speed = std::clamp(*queued.speed, 0.01, 10.0);
-        if (queued.trail_periods) {
-            ui.view.trail_periods = std::clamp(*queued.trail_periods, 0.1, 10.0);
-            sim.set_history_periods(std::max(ui.view.trail_periods, 2.0));
-        }
-        if (model_changed) sim.apply(ui.model, ui.params);
-        if (model_changed || ask_worker || data_changed) worker.request(ratio_request());
-        if (queued.reset) sim.reset(), step_carry = 0;
-        if (queued.quit) break;
+        const AppState::Actions act = app.sync(queued, scripted);
+        if (act.quit) break;
 
         // 2. Simulation time: a fixed dtau per step, the number of steps from the elapsed time (fixed 1/60 s
         //    per frame in scripted runs, so that they are reproducible).
@@ -210,16 +151,9 @@ int run_gui(const GuiOptions& o) {
                               ? 1.0 / 60
                               : std::min(0.1, std::chrono::duration<double>(now - last).count());
         last = now;
-        if (ui.playing) {
-            step_carry += dt * ui.speed * sim.steps_per_period();
-            const int n = static_cast<int>(step_carry);
-            step_carry -= n;
-            sim.step(n);
-        }
-        if (queued.step) sim.step(1);
-        const bool want_shot = queued.screenshot, want_csv = queued.export_csv;
+        app.advance(dt);
         queued = UiEdits{};
-        if (scripted && o.bench_frames == 0) worker.wait_idle(); // reproducible pictures
+        if (scripted && o.bench_frames == 0) app.worker().wait_idle(); // reproducible pictures
 
         // 3. Draw: the dashboard through the canvas, the panel through ImGui on top.
         const gfx::Size fb = ctx.framebuffer_size();
@@ -232,19 +166,20 @@ int run_gui(const GuiOptions& o) {
             io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // no stray hover: window and headless see the same
         }
         ImGui::NewFrame();
-        const auto curves = worker.latest();
-        queued.merge(draw_controls(ui, sim, curves, worker.busy(), kPanelWidth, logical.y, dialog));
+        const UiState& ui = app.ui();
+        const LiveSim& sim = app.sim();
+        const auto curves = app.worker().latest();
+        const bool busy = app.worker().busy();
+        queued.merge(draw_controls(ui, sim, curves, busy, kPanelWidth, logical.y, dialog));
         queued.merge(keyboard_edits(ui));
-        handle_mouse(ui, sim, transforms);
+        handle_mouse(app.ui().view, sim, transforms);
         ImGui::Render();
 
         const auto t_ui = Clock::now();
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, ratio, gfx::colors::white);
-        transforms = paint_dashboard(
-            canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view, curves, worker.busy(),
-            ui.show_map,
-            {ui.data ? &*ui.data : nullptr, units::vibration_velocity(ui.amplitude_um, ui.frequency_khz)});
+        transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, sim, ui.view,
+                                     curves, busy, ui.show_map, {ui.data ? &*ui.data : nullptr, ui.vv_m_s});
         const auto t_build = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());
@@ -252,18 +187,19 @@ int run_gui(const GuiOptions& o) {
         const auto t_gl = Clock::now();
 
         const bool last_frame = total_frames > 0 && frame + 1 == total_frames;
-        if (want_shot || (last_frame && !o.screenshot.empty())) {
+        if (act.screenshot || (last_frame && !o.screenshot.empty())) {
             const std::string path = last_frame && !o.screenshot.empty()
                                          ? o.screenshot
                                          : "frictionviz-screenshot-" + std::to_string(++shots) + ".png";
             const std::string err = write_file_atomic(path, png_string(ctx.read_pixels()));
-            ui.status = err.empty() ? "wrote " + path : err;
+            app.ui().status = err.empty() ? "wrote " + path : err;
             if (!err.empty()) std::fprintf(stderr, "frictionviz: %s\n", err.c_str());
         }
-        if (want_csv) {
+        if (act.export_csv) {
             const std::string path = "frictionviz-trace-" + std::to_string(++exports) + ".csv";
             const std::string err = write_file_atomic(path, trace_csv(sim));
-            ui.status = err.empty() ? "wrote " + path + " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)" : err;
+            app.ui().status =
+                err.empty() ? "wrote " + path + " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)" : err;
         }
         ctx.present();
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();

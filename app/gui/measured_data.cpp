@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 namespace fv::app {
 namespace {
@@ -60,14 +61,33 @@ std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
         return "A = " + format_number("%g", next.amplitude_um) +
                " µm, f = " + format_number("%g", next.frequency_khz) +
                " kHz at the same v_b and z_ss: " + why;
-    if (ui.data && ui.data->from_vb) {
-        try {
-            next.data = read_measurements(ui.data->file, read_options(next));
-        } catch (const DataError& e) {
-            return e.what();
-        }
-    }
+    if (next.data && next.data->from_vb)
+        if (std::string why = convert_vb(*next.data, next.amplitude_um, next.frequency_khz); !why.empty())
+            return why;
     ui = std::move(next);
+    return "";
+}
+
+std::string convert_vb(MeasurementSet& data, double amplitude_um, double frequency_khz) {
+    std::vector<double> zetas;
+    zetas.reserve(data.points.size());
+    for (const Measurement& m : data.points) {
+        if (!m.vb) return data.file + ": no v_b kept for line " + std::to_string(m.line);
+        double zeta = HUGE_VAL;
+        try {
+            zeta = units::zeta_from_vb(*m.vb, amplitude_um, frequency_khz);
+        } catch (const units::UnitError&) {
+            // v_b / v_v beyond the doubles: out of the zeta range below
+        }
+        if (!inside(zeta, kZetaRange))
+            return data.file + ":" + std::to_string(m.line) + ": v_b = " + format_number("%g", *m.vb) +
+                   " m/s gives zeta = " + format_number("%.4g", zeta) +
+                   " at A = " + format_number("%g", amplitude_um) +
+                   " µm, f = " + format_number("%g", frequency_khz) + " kHz; allowed: zeta in " +
+                   describe(kZetaRange);
+        zetas.push_back(zeta);
+    }
+    for (std::size_t k = 0; k < zetas.size(); ++k) data.points[k].zeta = zetas[k];
     return "";
 }
 
@@ -110,14 +130,6 @@ std::optional<DataFit::Outcome> DataFit::poll(const UiState& ui, bool wait) {
                  (b.weighted ? "reduced χ² = " : "RSS/dof = ") + format_number("%.3g", b.reduced_chi2);
     if (b.at_bound) out.status += "; r_disp is at the search bound: the data do not pin it";
     return out;
-}
-
-std::string range_error(const Params& p) {
-    // The CLI's ranges (zeta in [0, 100], r_disp in (0, 1e4]); validate() alone would admit any size.
-    if (std::string why = validate(p); !why.empty()) return why;
-    if (p.zeta > kMaxZeta) return "zeta = " + format_number("%.4g", p.zeta) + "; allowed: zeta in [0, 100]";
-    if (p.rdisp > 1e4) return "r_disp = " + format_number("%.4g", p.rdisp) + "; allowed: r_disp in (0, 1e4]";
-    return "";
 }
 
 double vb_of(const UiState& ui) {

@@ -5,6 +5,7 @@
 #include "ui_state.hpp"
 
 #include "fv/fit.hpp"
+#include "fv/param_ranges.hpp"
 
 #include <future>
 #include <optional>
@@ -20,15 +21,16 @@ std::string show_measured(UiState& ui, MeasurementSet data);
 // error the data shown before stay.
 std::string load_measured(UiState& ui, const std::string& path);
 
+// zeta of every point again from its v_b (Measurement::vb) under A and f, without reading the file; on an
+// error ("FILE:LINE: v_b = ... gives zeta = ...; allowed: ...") `data` is unchanged.
+std::string convert_vb(MeasurementSet& data, double amplitude_um, double frequency_khz);
+
 // New amplitude and/or frequency. v_b = zeta 2 pi f A and z_ss = A / r_disp stay what they were, so
-// zeta and r_disp follow (Eqs. (6), (34)); data read from a vb column are converted again. Returns an
+// zeta and r_disp follow (Eqs. (6), (34)); data read from a vb column are converted again from the v_b
+// kept per point (convert_vb), the file is not read again. Returns an
 // error line (and changes nothing) when the result leaves the allowed ranges, else "".
 std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
                           std::optional<double> frequency_khz);
-
-// Empty when p is inside the ranges the app (and the CLI) allow: validate() and zeta <= 100,
-// r_disp <= 1e4; else the one-line reason.
-std::string range_error(const Params& p);
 
 // ui.params in physical units: v_b in m/s and z_ss in um.
 double vb_of(const UiState& ui);

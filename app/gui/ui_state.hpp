@@ -24,9 +24,12 @@ struct UiState {
     // The physical view of zeta and r_disp: v_b = zeta 2 pi f A, z_ss = A / r_disp (units.hpp). Default:
     // the experiment of the paper's Fig. 19 (Littmann et al., Sec. 4: 0.7 um at 60 kHz).
     double amplitude_um = 0.7, frequency_khz = 60;
+    // The physical view of params under A and f, converted once per frame (AppState::sync): v_v = 2 pi f A
+    // and v_b in m/s, z_ss in um. What the panel shows; its inputs send UiEdits::vb_m_s and zss_um.
+    double vv_m_s = 0, vb_m_s = 0, zss_um = 0;
 
-    // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`).
-    // Re-read from data->file when A or f change and the file gives v_b.
+    // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`). A file that
+    // gives v_b keeps it per point (Measurement::vb): A or f changes convert again, never re-read the file.
     std::optional<MeasurementSet> data;
     bool fitting = false; // a fit of r_disp and i to the data is running
 };
@@ -38,6 +41,9 @@ struct UiEdits {
     std::optional<double> speed, trail_periods;
     // A or f: v_b and z_ss stay, zeta and r_disp follow (as when an experimenter turns up the amplitude).
     std::optional<double> amplitude_um, frequency_khz;
+    // v_b (m/s) or z_ss (um) typed in the panel: set zeta or r_disp, converted with the A and f in effect
+    // before this frame's A or f edits (as the panel shows them).
+    std::optional<double> vb_m_s, zss_um;
     std::optional<std::string> load_data; // a CSV path to read (replaces the data shown)
     bool clear_data = false, fit_data = false;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;

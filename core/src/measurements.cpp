@@ -173,6 +173,7 @@ void Parser::row(std::string_view line) {
         m.zeta = number(*f, Col::zeta, 0, kMaxZeta, false, "a number in [0, 100]");
     if (const Field* f = field(Col::vb)) {
         const double vb = number(*f, Col::vb, 0, inf, false, "a finite number >= 0 (m/s)");
+        m.vb = vb;
         try {
             m.zeta = units::zeta_from_vb(vb, *opt_.amplitude_um, *opt_.frequency_khz);
         } catch (const units::UnitError&) {
@@ -184,7 +185,7 @@ void Parser::row(std::string_view line) {
     }
     m.rx = number(*field(Col::rx), Col::rx, kMinRx, kMaxRx, false, "a number in [-0.5, 1.5]");
     if (const Field* f = field(Col::theta))
-        m.theta_deg = number(*f, Col::theta, 0, 180, false, "a number in [0, 180]");
+        m.theta_deg = number(*f, Col::theta, kThetaRange.lo, kThetaRange.hi, false, "a number in [0, 180]");
     if (const Field* f = field(Col::sigma))
         m.sigma = number(*f, Col::sigma, 0, inf, true, "a finite number > 0");
     if (const Field* f = field(Col::label)) m.label = std::string(f->text);

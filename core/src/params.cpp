@@ -1,5 +1,8 @@
 #include "fv/params.hpp"
 
+#include "fv/format.hpp"
+#include "fv/param_ranges.hpp"
+
 #include <cmath>
 #include <sstream>
 
@@ -25,6 +28,32 @@ std::string validate(const Params& p) {
     if (!std::isfinite(p.theta)) return bad("theta", p.theta, "need a finite angle");
     if (!std::isfinite(p.rdisp) || p.rdisp <= 0) return bad("rdisp", p.rdisp, "need a finite number > 0");
     if (!std::isfinite(p.i) || p.i < 0) return bad("i", p.i, "need a finite number >= 0");
+    return {};
+}
+
+std::string describe(ParamRange r) {
+    std::ostringstream os;
+    os << (r.lo_open ? "(" : "[") << r.lo << ", " << r.hi << "]";
+    return os.str();
+}
+
+bool inside(double v, ParamRange r) {
+    return (r.lo_open ? v > r.lo : v >= r.lo) && v <= r.hi;
+}
+
+std::string range_error(const Params& p) {
+    if (std::string why = validate(p); !why.empty()) return why;
+    auto outside = [](const char* name, double v, ParamRange r) {
+        return std::string(name) + " = " + format_number("%.4g", v) + "; allowed: " + name + " in " +
+               describe(r);
+    };
+    if (!inside(p.zeta, kZetaRange)) return outside("zeta", p.zeta, kZetaRange);
+    // Radians to degrees and back are not exact: 180 degrees may come back as 180 + 3e-14.
+    const double theta_deg = p.theta * 180 / kPi;
+    if (!(theta_deg >= kThetaRange.lo - 1e-9 && theta_deg <= kThetaRange.hi + 1e-9))
+        return outside("theta", theta_deg, kThetaRange) + " degrees";
+    if (!inside(p.rdisp, kRdispRange)) return outside("r_disp", p.rdisp, kRdispRange);
+    if (!inside(p.i, kIRange)) return outside("i", p.i, kIRange);
     return {};
 }
 

@@ -13,6 +13,8 @@
 //   - limits: at most ReadOptions::max_rows data rows, max_line_bytes bytes per line, max_file_bytes bytes.
 #pragma once
 
+#include "fv/param_ranges.hpp"
+
 #include <cstddef>
 #include <optional>
 #include <stdexcept>
@@ -33,7 +35,8 @@ struct DataError : std::runtime_error {
 };
 
 struct Measurement {
-    double zeta = 0; // given, or converted from vb
+    double zeta = 0;          // given, or converted from vb
+    std::optional<double> vb; // the file's v_b in m/s, as given (a vb column): zeta can be converted again
     double rx = 0;
     std::optional<double> theta_deg;
     std::optional<double> sigma;
@@ -56,7 +59,7 @@ struct ReadOptions {
     std::size_t max_file_bytes = 16u << 20;
 };
 
-inline constexpr double kMinRx = -0.5, kMaxRx = 1.5, kMaxZeta = 100;
+inline constexpr double kMinRx = -0.5, kMaxRx = 1.5, kMaxZeta = kZetaRange.hi;
 
 // Parses `text` as the contents of a file called `name` (used in errors only).
 MeasurementSet parse_measurements(std::string_view text, const std::string& name,

@@ -1,0 +1,59 @@
+// The app's state and the one point per frame where edits take effect (MuJoCo `simulate` style): the panel,
+// the keys, the mouse, a drop, the script and the benchmark all queue UiEdits during a frame; sync() applies
+// them at the start of the next one: checked against the shared range table (fv/param_ranges.hpp), physical
+// units converted once, the simulation and the background curves told once. No window or GL here: tests
+// drive it directly.
+#pragma once
+
+#include "measured_data.hpp"
+#include "ratio_worker.hpp"
+#include "ui_state.hpp"
+
+#include "fv/live_sim.hpp"
+
+#include <optional>
+
+namespace fv::app {
+
+// App-only ranges (not model parameters): animation speed in vibration periods per second, trail length in
+// periods. The panel's sliders span a part of them.
+inline constexpr ParamRange kSpeedRange{0.01, 10};
+inline constexpr ParamRange kTrailRange{0.1, 10};
+
+class AppState {
+  public:
+    AppState(Model model, const Params& params, double amplitude_um, double frequency_khz,
+             std::optional<MeasurementSet> data = std::nullopt);
+
+    // What a frame's edits ask of the loop rather than of the state (files, exit).
+    struct Actions {
+        bool screenshot = false, export_csv = false, quit = false;
+    };
+    // Applies one frame's edits, in a fixed order: preset, model, parameters, v_b/z_ss, A/f, data, fit,
+    // playback, view. An edit outside the ranges changes nothing and says why in ui().status. wait: block
+    // for a running fit (scripted runs, for reproducible pictures).
+    Actions sync(const UiEdits& edits, bool wait = false);
+    // Advances the simulation by dt seconds of wall time at ui().speed while playing, then the single step
+    // asked for by the last sync.
+    void advance(double dt_seconds);
+
+    const UiState& ui() const { return ui_; }
+    UiState& ui() { return ui_; } // the view (zoom, pan) is edited in place by the mouse
+    const LiveSim& sim() const { return sim_; }
+    RatioWorker& worker() { return worker_; }
+    int syncs() const { return syncs_; } // how many frames' edits were applied
+
+  private:
+    RatioRequest ratio_request() const;
+    void refresh_units();
+
+    UiState ui_;
+    LiveSim sim_;
+    RatioWorker worker_;
+    DataFit fit_;
+    double step_carry_ = 0;
+    bool step_pending_ = false;
+    int syncs_ = 0;
+};
+
+} // namespace fv::app

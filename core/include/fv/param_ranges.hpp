@@ -1,0 +1,47 @@
+// The allowed ranges of the model's parameters and of their physical counterparts, stated once: the CLI's
+// validators and help texts (app/cli), the data reader (measurements.hpp), the app's edits (AppState::sync)
+// and the app's sliders all take them from here, so that a message, a slider end and a check agree.
+#pragma once
+
+#include "fv/params.hpp"
+
+#include <string>
+
+namespace fv {
+
+struct ParamRange {
+    double lo, hi;
+    bool lo_open = false; // lo itself excluded
+};
+
+// What the model accepts (and the CLI, the data files and the app's edits).
+inline constexpr ParamRange kZetaRange{0, 100};
+inline constexpr ParamRange kThetaRange{0, 180}; // degrees; other angles are mirror images
+inline constexpr ParamRange kRdispRange{0, 1e4, true};
+inline constexpr ParamRange kIRange{0, 10};
+
+// Physical units (units.hpp): v_b in m/s, the vibration amplitude A and z_ss in um, the frequency f in kHz.
+inline constexpr ParamRange kVbRange{0, 1e6};
+inline constexpr ParamRange kAmplitudeRange{0, 1e6, true};
+inline constexpr ParamRange kFrequencyRange{0, 1e6, true};
+inline constexpr ParamRange kZssRange{0, 1e6, true};
+
+// The part of each range the app's sliders span (values beyond them are typed, scripted or given on the
+// command line); each lies inside the range above.
+inline constexpr ParamRange kZetaSlider{0, 3};
+inline constexpr ParamRange kThetaSlider = kThetaRange;
+inline constexpr ParamRange kRdispSlider{0.1, 100}; // logarithmic
+inline constexpr ParamRange kISlider{0, 3};
+
+// "[0, 100]", "(0, 10000]".
+std::string describe(ParamRange r);
+
+// v lies in r (false for NaN).
+bool inside(double v, ParamRange r);
+
+// Empty when p is admissible (validate()) and inside the ranges above (theta in degrees within
+// kThetaRange), else one line naming the parameter and its allowed range, e.g.
+// "zeta = 200; allowed: zeta in [0, 100]".
+std::string range_error(const Params& p);
+
+} // namespace fv

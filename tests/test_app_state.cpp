@@ -1,0 +1,199 @@
+// The app's state without a window: the range table shared by the CLI, the core and the sliders.
+#include "cli/validators.hpp"
+#include "gui/controls.hpp"
+
+#include "fv/param_ranges.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+using namespace fv;
+
+namespace {
+
+// The message CLI11 gets from the validator of a model flag for `value`.
+std::string cli_message(ParamRange r, std::string value) {
+    return cli::number_in(r)(value);
+}
+
+bool within(ParamRange inner, ParamRange outer) {
+    return inside(inner.lo, outer) && inside(inner.hi, outer);
+}
+
+} // namespace
+
+TEST_CASE("range table: the CLI's messages, the core's check and the sliders use the same constants",
+          "[gui][ranges]") {
+    // The CLI quotes the table's ranges...
+    CHECK(cli_message(kZetaRange, "200") == "'200' is out of range; allowed: a number in [0, 100]");
+    CHECK(cli_message(kZetaRange, "100").empty());
+    CHECK(cli_message(kRdispRange, "0").find(describe(kRdispRange)) != std::string::npos);
+    CHECK(cli_message(kIRange, "11").find(describe(kIRange)) != std::string::npos);
+    CHECK(cli_message(kThetaRange, "181").find(describe(kThetaRange)) != std::string::npos);
+    // ... the core's check quotes the same ...
+    Params p{0.5, kPi / 2, 2, 1};
+    CHECK(range_error(p).empty());
+    p.zeta = kZetaRange.hi * 2;
+    CHECK(range_error(p) == "zeta = 200; allowed: zeta in " + describe(kZetaRange));
+    p = {0.5, kPi / 2, kRdispRange.hi * 2, 1};
+    CHECK(range_error(p).find("r_disp in " + describe(kRdispRange)) != std::string::npos);
+    p = {0.5, kPi / 2, 2, kIRange.hi + 1};
+    CHECK(range_error(p).find("i in " + describe(kIRange)) != std::string::npos);
+    p = {0.5, kPi, 2, 1}; // 180 degrees, back and forth through radians
+    CHECK(range_error(p).empty());
+    p.theta = kPi * 1.01;
+    CHECK(range_error(p).find("theta in " + describe(kThetaRange)) != std::string::npos);
+    // ... and the panel's sliders span parts of those ranges, their ends admissible values.
+    CHECK(within(app::kSliders.zeta, kZetaRange));
+    CHECK(within(app::kSliders.theta_deg, kThetaRange));
+    CHECK(within(app::kSliders.rdisp, kRdispRange));
+    CHECK(within(app::kSliders.i, kIRange));
+    for (double z : {app::kSliders.zeta.lo, app::kSliders.zeta.hi})
+        CHECK(cli_message(kZetaRange, std::to_string(z)).empty());
+    for (double r : {app::kSliders.rdisp.lo, app::kSliders.rdisp.hi})
+        CHECK(cli_message(kRdispRange, std::to_string(r)).empty());
+}
+
+// ---- AppState::sync: the one point per frame where edits take effect ----
+
+#include "gui/app_state.hpp"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+#include <vector>
+
+using namespace fv::app;
+
+namespace {
+
+constexpr double kTwoPi = 2 * 3.14159265358979323846;
+double vv(double amplitude_um, double frequency_khz) {
+    return kTwoPi * (frequency_khz * 1e3) * (amplitude_um * 1e-6);
+}
+
+void pause(AppState& a) {
+    UiEdits e;
+    e.playing = false;
+    a.sync(e);
+}
+
+} // namespace
+
+TEST_CASE("AppState: edits take effect at sync, once, the later of the same field winning", "[gui][state]") {
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    pause(a);
+    const int syncs = a.syncs();
+    UiEdits queued;
+    Params p = a.ui().params;
+    p.zeta = 0.3;
+    UiEdits panel;
+    panel.params = p;
+    panel.step = true;
+    queued.merge(panel);
+    CHECK(a.ui().params.zeta == 0.15); // queued, not applied
+    CHECK(a.sim().params().zeta == 0.15);
+    UiEdits keys;
+    keys.step = true; // a second step in the same frame is still one step
+    p.zeta = 0.4;
+    keys.params = p;
+    queued.merge(keys);
+    const double tau0 = a.sim().tau();
+    a.sync(queued);
+    CHECK(a.syncs() == syncs + 1);
+    CHECK(a.ui().params.zeta == 0.4);
+    CHECK(a.sim().params().zeta == 0.4);
+    a.advance(1.0); // paused: only the single step
+    const double dtau = a.sim().tau() - tau0;
+    CHECK(dtau == Approx(a.sim().dtau()));
+    a.sync(UiEdits{});
+    a.advance(1.0);
+    CHECK(a.sim().tau() - tau0 == Approx(dtau)); // nothing left over from the last frame
+    // The physical view follows at the same point.
+    CHECK(a.ui().vb_m_s == Approx(0.4 * vv(0.7, 60)).epsilon(1e-14));
+    CHECK(a.ui().zss_um == Approx(0.7 / 2).epsilon(1e-14));
+}
+
+TEST_CASE("AppState: out-of-range edits change nothing and say the table's range", "[gui][state]") {
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    pause(a);
+    const Params before = a.ui().params;
+    auto rejected = [&](const UiEdits& e, const std::string& range) {
+        a.ui().status.clear();
+        a.sync(e);
+        CHECK(a.ui().status.find(range) != std::string::npos);
+        CHECK(a.ui().params.zeta == before.zeta);
+        CHECK(a.ui().params.rdisp == before.rdisp);
+        CHECK(a.ui().params.i == before.i);
+        CHECK(a.ui().params.theta == before.theta);
+        CHECK(a.sim().params().zeta == before.zeta);
+        CHECK(a.ui().amplitude_um == 0.7);
+    };
+    auto with = [&](auto set) {
+        UiEdits e;
+        Params p = before;
+        set(p);
+        e.params = p;
+        return e;
+    };
+    rejected(with([](Params& p) { p.zeta = kZetaRange.hi * 1.01; }), describe(kZetaRange));
+    rejected(with([](Params& p) { p.rdisp = kRdispRange.hi * 1.01; }), describe(kRdispRange));
+    rejected(with([](Params& p) { p.i = kIRange.hi + 0.5; }), describe(kIRange));
+    rejected(with([](Params& p) { p.theta = (kThetaRange.hi + 1) * kPi / 180; }), describe(kThetaRange));
+    UiEdits vb;
+    vb.vb_m_s = 1.01 * kZetaRange.hi * vv(0.7, 60); // zeta = 101
+    rejected(vb, describe(kZetaRange));
+    UiEdits zss;
+    zss.zss_um = 0.7 / (kRdispRange.hi * 1.01); // r_disp = 1.01e4
+    rejected(zss, describe(kRdispRange));
+    UiEdits amp;
+    amp.amplitude_um = 1e-6; // zeta = 0.15 * 0.7e6
+    rejected(amp, describe(kZetaRange));
+    // In range: applied, converted with the A and f in effect.
+    UiEdits ok;
+    ok.vb_m_s = 0.1;
+    a.sync(ok);
+    CHECK(a.ui().params.zeta == Approx(0.1 / vv(0.7, 60)).epsilon(1e-14));
+    CHECK(a.sim().params().zeta == a.ui().params.zeta);
+}
+
+TEST_CASE("AppState: an A or f change converts the kept v_b column, without reading the file again",
+          "[gui][state][data]") {
+    char tmpl[] = "/tmp/fv-app-state-XXXXXX";
+    const std::string dir = ::mkdtemp(tmpl);
+    const std::string path = dir + "/vb.csv";
+    {
+        std::ifstream in(std::string(FV_TEST_DATA_DIR) + "/synthetic_theta0_rdisp1_i1_vb.csv");
+        std::ofstream(path) << in.rdbuf();
+    }
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    pause(a);
+    UiEdits load;
+    load.load_data = path;
+    a.sync(load);
+    REQUIRE(a.ui().data);
+    std::vector<double> vbs;
+    for (const Measurement& m : a.ui().data->points) {
+        REQUIRE(m.vb);
+        vbs.push_back(*m.vb);
+        CHECK(m.zeta == Approx(*m.vb / vv(0.7, 60)).epsilon(1e-14));
+    }
+    REQUIRE(vbs.size() == 16);
+    REQUIRE(std::remove(path.c_str()) == 0); // the file is gone: a re-read would fail
+    UiEdits amp;
+    amp.amplitude_um = 0.8;
+    a.sync(amp);
+    CHECK(a.ui().amplitude_um == 0.8);
+    REQUIRE(a.ui().data);
+    for (std::size_t k = 0; k < vbs.size(); ++k)
+        CHECK(a.ui().data->points[k].zeta == Approx(vbs[k] / vv(0.8, 60)).epsilon(1e-14));
+    UiEdits freq;
+    freq.frequency_khz = 30;
+    a.sync(freq);
+    CHECK(a.ui().frequency_khz == 30);
+    for (std::size_t k = 0; k < vbs.size(); ++k)
+        CHECK(a.ui().data->points[k].zeta == Approx(vbs[k] / vv(0.8, 30)).epsilon(1e-14));
+    ::rmdir(dir.c_str());
+}
