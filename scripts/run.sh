@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: builds, then opens the interactive window where there is a display; where there is none,
-# renders every figure of the paper (PNG + CSV) into screenshots/, headless.
+# renders every registered figure (PNG + CSV + caption JSON; `frictionviz render --list`) into screenshots/,
+# headless, fig19 with the synthetic example data.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -9,9 +10,6 @@ if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec $FV gui
 fi
 mkdir -p screenshots
-$FV render --figure all --out screenshots
-$FV render --figure scene --zeta 0.3 --theta 30 --rdisp 2 --i 1 --out screenshots
-$FV render --figure map --rdisp 2 --i 1 --out screenshots
-$FV render --figure fig19 --data tests/data/synthetic_two_angles_rdisp2_i0.csv --amplitude 0.7 --out screenshots
+$FV render --figure all --data tests/data/synthetic_two_angles_rdisp2_i0.csv --amplitude 0.7 --out screenshots
 $FV gui --headless --frames 150 --script tests/gui_script.txt --screenshot screenshots/app.png
-echo "No display: figures rendered into screenshots/ (PNG with the data behind each one as CSV)."
+echo "No display: figures rendered into screenshots/ (PNG with the data behind each one as CSV, caption as JSON)."

@@ -367,6 +367,117 @@ TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad dat
     CHECK(bad.err.find("bad.csv:2:") != std::string::npos);
 }
 
+// ---- The figure registry through the executable: --list, every id rendered, captions, unknown ids
+
+namespace {
+
+// The ids of `render --list` (ID<TAB>TITLE per line), in order.
+std::vector<std::string> listed_ids() {
+    const Run r = run("render --list");
+    REQUIRE(r.code == 0);
+    std::vector<std::string> ids;
+    std::istringstream in(r.out);
+    for (std::string line; std::getline(in, line);) {
+        const auto tab = line.find('\t');
+        REQUIRE(tab != std::string::npos);
+        CHECK(tab > 0);
+        CHECK(tab + 1 < line.size()); // a title
+        ids.push_back(line.substr(0, tab));
+    }
+    return ids;
+}
+
+std::vector<std::string> files_in(const std::string& dir) {
+    std::vector<std::string> names;
+    if (DIR* d = ::opendir(dir.c_str())) {
+        while (const dirent* e = ::readdir(d))
+            if (std::string(e->d_name) != "." && std::string(e->d_name) != "..") names.push_back(e->d_name);
+        ::closedir(d);
+    }
+    return names;
+}
+
+} // namespace
+
+TEST_CASE("CLI registry: render --list prints every figure once; --figure and its messages take the same ids",
+          "[cli][render][registry]") {
+    const std::vector<std::string> ids = listed_ids();
+    std::vector<std::string> sorted = ids;
+    std::sort(sorted.begin(), sorted.end());
+    CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()); // unique
+    for (const char* id : {"fig5", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13", "fig14a", "fig14b",
+                           "fig15", "fig16", "fig17", "fig18", "fig19", "scene", "map"})
+        CHECK(std::count(ids.begin(), ids.end(), id) == 1);
+    // The unknown-id message and --help name exactly the listed ids (and "all").
+    const std::string dir = scratch_dir() + "/registry-unknown";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const Run bad = run("render --figure fig5,nope --out " + dir);
+    CHECK(bad.code == 2);
+    CHECK(bad.out.empty());
+    CHECK(lines(bad.err) == 1);
+    CHECK(bad.err.find("'nope'") != std::string::npos);
+    std::string allowed = "all";
+    for (const std::string& id : ids) allowed += ", " + id;
+    CHECK(bad.err.find("allowed: " + allowed + "\n") != std::string::npos);
+    CHECK(files_in(dir).empty()); // nothing written, not even fig5
+    const Run help = run("render --help");
+    CHECK(help.code == 0);
+    CHECK(help.out.find(allowed) != std::string::npos);
+    // The markdown table has one row per listed id, in the same order.
+    const Run md = run("render --list markdown");
+    REQUIRE(md.code == 0);
+    std::size_t at = 0;
+    for (const std::string& id : ids) {
+        at = md.out.find("| [" + id + "](screenshots/" + id + ".png) | ", at);
+        CHECK(at != std::string::npos);
+    }
+    CHECK(lines(md.out) == static_cast<long>(ids.size()) + 2);
+    CHECK(run("render --list xml").code == 2);
+    // A figure that needs flags says which.
+    const Run scene = run("render --figure scene --out " + dir);
+    CHECK(scene.code == 2);
+    CHECK(scene.err.find("--zeta or --vb") != std::string::npos);
+    CHECK(files_in(dir).empty());
+}
+
+TEST_CASE("CLI registry: --figure all renders every listed id with its CSV and a caption JSON",
+          "[cli][render][registry]") {
+    const std::vector<std::string> ids = listed_ids();
+    const std::string dir = scratch_dir() + "/registry-all";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const Run r = run("render --figure all --data " + std::string(FV_TEST_DATA_DIR) +
+                      "/synthetic_two_angles_rdisp2_i0.csv --amplitude 0.7 --size 320x240 --out " + dir);
+    REQUIRE(r.code == 0);
+    CHECK(lines(r.out) == static_cast<long>(ids.size())); // one "wrote" line per figure
+    const std::vector<std::string> written = files_in(dir);
+    for (const std::string& id : ids) {
+        CAPTURE(id);
+        CHECK(slurp(dir + "/" + id + ".png").substr(1, 3) == "PNG");
+        const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/" + id + ".json"));
+        CHECK(j.at("id") == id);
+        const std::string title = j.at("title"), caption = j.at("caption");
+        CHECK_FALSE(title.empty());
+        CHECK(title.find("_{") == std::string::npos); // plain text, no markup
+        // Every parameter named: the model(s), the solver, a tolerance, the sampling.
+        for (const char* word : {"Parameters: ", "model", "θ", "r_disp", "tolerance"})
+            CHECK(caption.find(word) != std::string::npos);
+        CHECK((caption.find("i = ") != std::string::npos ||
+               caption.find("i does not apply") != std::string::npos));
+        CHECK(j.at("status") == "ok");
+        CHECK(std::string(j.at("version")).rfind("frictionviz ", 0) == 0);
+        // The files it lists are the ones written, the image and the JSON among them.
+        const std::vector<std::string> files = j.at("files");
+        CHECK(std::count(files.begin(), files.end(), id + ".png") == 1);
+        CHECK(std::count(files.begin(), files.end(), id + ".json") == 1);
+        CHECK(std::count(files.begin(), files.end(), id + ".csv") == 1);
+        for (const std::string& f : files) CHECK(std::count(written.begin(), written.end(), f) == 1);
+    }
+    // Fixed figures' captions name every parameter by value.
+    const std::string fig15 = nlohmann::json::parse(slurp(dir + "/fig15.json")).at("caption");
+    for (const char* v : {"ζ = 0.15", "θ = 90°", "r_disp = 2", "i = 1", "1024"})
+        CHECK(fig15.find(v) != std::string::npos);
+}
+
 // ---- Physical units: --vb (m/s), --amplitude (um), --frequency (kHz), --zss (um)
 // ----------------------------
 

@@ -1,5 +1,6 @@
 // The figure definitions (data) and the numbers computed for them.
 #include "fv/figure_data.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
 #include "fv/rigid.hpp"
 
@@ -21,6 +22,57 @@ TEST_CASE("Every paper figure is defined once, with a unique id", "[figures]") {
                            "fig15", "fig16", "fig17", "fig18"})
         CHECK(ids.count(id) == 1);
     CHECK(fv::find_figure("fig99") == nullptr);
+}
+
+TEST_CASE("Registry: every figure registered once, in paper order, each defined by its example inputs",
+          "[figures][registry]") {
+    const auto& reg = fv::figure_registry();
+    std::vector<std::string> ids;
+    for (const fv::FigureEntry& e : reg) ids.push_back(e.id);
+    // Paper figures by number, then the others by id.
+    const std::vector<std::string> expected{"fig5",  "fig8",   "fig9",   "fig10", "fig11", "fig12",
+                                            "fig13", "fig14a", "fig14b", "fig15", "fig16", "fig17",
+                                            "fig18", "fig19",  "map",    "scene"};
+    CHECK(ids == expected);
+    std::string list;
+    for (const fv::FigureEntry& e : reg) {
+        CAPTURE(e.id);
+        CHECK(fv::find_registered(e.id) == &e);
+        CHECK_FALSE(e.title.empty());
+        CHECK(e.title.find('\t') == std::string::npos);
+        CHECK(static_cast<bool>(e.make));
+        for (const fv::FigureFlag& f : e.flags) CHECK(f.name.rfind("--", 0) == 0);
+        list += e.id + "\t" + e.title + "\n";
+        if (e.kind == fv::FigureKind::measurements) continue; // reads a file: see the CLI and snapshot tests
+        const fv::FigureSpec spec = e.make(e.example);
+        CHECK(spec.id == e.id);
+        CHECK(spec.kind == e.kind);
+        CHECK_FALSE(spec.caption.empty());
+        // The parameter sentence names every parameter that defines the figure.
+        const std::string p = fv::figure_parameters(spec);
+        for (const char* word : {"Parameters: ", "model", "θ", "r_disp", "tolerance", "1e-"})
+            CHECK(p.find(word) != std::string::npos);
+        CHECK((p.find("i = ") != std::string::npos || p.find("i does not apply") != std::string::npos));
+        if (e.kind != fv::FigureKind::map) CHECK(p.find("ζ") != std::string::npos);
+        // The image's title names the parameters of figures of one parameter set.
+        if (e.kind == fv::FigureKind::period_view || e.kind == fv::FigureKind::period_force ||
+            e.kind == fv::FigureKind::step_view || e.kind == fv::FigureKind::scene)
+            for (const char* word : {"ζ = ", "θ = ", "r_{disp} = ", "i = "})
+                CHECK(spec.title.find(word) != std::string::npos);
+    }
+    CHECK(fv::figure_list_tsv() == list);
+    CHECK(fv::find_registered("fig99") == nullptr);
+    // The fixed figures (no flags) are the app's presets' source and paper_figures().
+    std::size_t fixed = 0;
+    for (const fv::FigureEntry& e : reg) fixed += e.flags.empty() ? 1 : 0;
+    CHECK(fv::paper_figures().size() == fixed);
+    // Flags: scene needs the four model flags, fig19 needs --data and is left out of `all` without it.
+    const fv::FigureEntry* scene = fv::find_registered("scene");
+    REQUIRE(scene);
+    CHECK(std::count_if(scene->flags.begin(), scene->flags.end(), [](const auto& f) { return f.required; }) ==
+          4);
+    CHECK(fv::find_registered("fig19")->all_needs_flags);
+    CHECK(fv::plain_text("r_{disp} = 2, F_{x}, 10^{3}") == "r_disp = 2, F_x, 10^3");
 }
 
 TEST_CASE("Figs. 10 and 12: the rigid reference curves are the closed forms (11) and (10)", "[figures]") {

@@ -6,6 +6,7 @@
 
 #include "fv/atomic_file.hpp"
 #include "fv/figure_data.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
 #include "fv/gfx/compare.hpp"
 #include "fv/gfx/png.hpp"
@@ -72,15 +73,19 @@ void check_snapshot(fv::app::RenderSession& session, const fv::FigureSpec& spec)
 
 } // namespace
 
-TEST_CASE("Snapshot: every paper figure matches its baseline", "[snapshot]") {
+TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]") {
     fv::gfx::ContextOptions o;
     o.backend = fv::gfx::Backend::Headless;
     o.width = kWidth;
     o.height = kHeight;
     fv::app::RenderSession session(o);
-    for (const auto& spec : fv::paper_figures()) check_snapshot(session, spec);
-    check_snapshot(session, fv::scene_figure({0.3, fv::kPi / 6, 2, 1}));
-    check_snapshot(session, fv::map_figure(2, 1));
+    // Each with the inputs of its example (those of README.md and screenshots/); data files relative to the
+    // source tree.
+    for (const fv::FigureEntry& e : fv::figure_registry()) {
+        fv::FigureInputs in = e.example;
+        if (!in.data.empty() && in.data.front() != '/') in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
+        check_snapshot(session, e.make(in));
+    }
 }
 
 TEST_CASE("Snapshot comparison catches a changed picture", "[snapshot]") {

@@ -1,4 +1,4 @@
-// frictionviz render: every figure of the paper (or a scene of any parameters) as PNG + CSV, headless.
+// frictionviz render: the registered figures (fv/figure_registry.hpp) as PNG + CSV + caption JSON, headless.
 #include "commands.hpp"
 #include "errors.hpp"
 #include "model_options.hpp"
@@ -10,11 +10,13 @@
 
 #include "fv/atomic_file.hpp"
 #include "fv/figure_data.hpp"
-#include "fv/figures.hpp"
-#include "fv/fit_figure.hpp"
+#include "fv/figure_registry.hpp"
+#include "fv/fit.hpp"
 #include "fv/measurements.hpp"
 
 #include "fv/gfx/png.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +28,10 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+
+#ifndef FV_VERSION
+#define FV_VERSION "dev"
+#endif
 
 namespace fv::cli {
 namespace {
@@ -111,9 +117,84 @@ std::string check_figure(const FigureData& fig, const FitResult* fit) {
     return s;
 }
 
-// Every name --figure takes, for its help and its error messages.
+// Every name --figure takes, for its error messages.
 std::string figure_names() {
-    return "all, scene, map, fig19, " + figure_ids();
+    return "all, " + figure_ids();
+}
+
+std::string flag_text(const FigureFlag& f) {
+    return f.alt.empty() ? f.name : f.name + " or " + f.alt;
+}
+
+// "--zeta or --vb, --theta, ...; optional --amplitude" of the flags a figure takes.
+std::string flags_text(const FigureEntry& e) {
+    std::string need, take;
+    for (const FigureFlag& f : e.flags) {
+        std::string& to = f.required ? need : take;
+        to += (to.empty() ? "" : ", ") + flag_text(f);
+    }
+    return need.empty() ? "takes " + take : "needs " + need + (take.empty() ? "" : "; optional " + take);
+}
+
+// The first required flag of `e` that is not given on `cmd` (none given without it), empty if none.
+std::string missing_flag(const FigureEntry& e, const CLI::App* cmd) {
+    auto given = [&](const std::string& name) {
+        const CLI::Option* o = name.empty() || !cmd ? nullptr : cmd->get_option_no_throw(name);
+        return o && o->count() > 0;
+    };
+    for (const FigureFlag& f : e.flags)
+        if (f.required && !given(f.name) && !given(f.alt)) return flag_text(f);
+    return {};
+}
+
+// --figure's help: the ids, and which flags the figures that take flags need.
+std::string figure_help() {
+    std::string s = "figure ids, comma separated: " + figure_names() + " (titles: --list). all: every figure";
+    for (const FigureEntry& e : figure_registry()) {
+        if (e.flags.empty()) continue;
+        s += "; " + e.id + " (" + flags_text(e);
+        if (e.all_needs_flags)
+            s += "; in all only with them";
+        else if (!missing_flag(e, nullptr).empty())
+            s += "; in all " + plain_text(e.make(e.example).title) + " where not given";
+        s += ")";
+    }
+    return s;
+}
+
+// "scene, map": the figures that take `flag`, for the flag's help.
+std::string takers(const std::string& flag) {
+    std::string s;
+    for (const FigureEntry& e : figure_registry())
+        for (const FigureFlag& f : e.flags)
+            if (f.name == flag || f.alt == flag) s += (s.empty() ? "" : ", ") + e.id;
+    return s;
+}
+
+// The inputs given, over the example's.
+FigureInputs over(FigureInputs example, const FigureInputs& given) {
+    for (auto [to, from] : {std::pair{&example.zeta, &given.zeta},
+                            {&example.theta_deg, &given.theta_deg},
+                            {&example.rdisp, &given.rdisp},
+                            {&example.i, &given.i},
+                            {&example.amplitude_um, &given.amplitude_um},
+                            {&example.frequency_khz, &given.frequency_khz}})
+        if (*from) *to = *from;
+    if (!given.data.empty()) example.data = given.data;
+    return example;
+}
+
+// ID.json beside the image: what it shows and everything it depends on.
+std::string caption_json(const FigureSpec& spec, const std::vector<std::string>& files,
+                         const std::string& status) {
+    nlohmann::ordered_json j;
+    j["id"] = spec.id;
+    j["title"] = plain_text(spec.title);
+    j["caption"] = spec.caption + " " + figure_parameters(spec);
+    j["files"] = files;
+    j["status"] = status.empty() ? "ok" : status;
+    j["version"] = "frictionviz " FV_VERSION;
+    return j.dump(2) + "\n";
 }
 
 } // namespace
@@ -125,77 +206,90 @@ Command add_render_command(CLI::App& root) {
         std::string size = "1280x800";
         ModelArgs model; // its units: --amplitude, --frequency (fig19, scene, map), --vb, --zss (scene, map)
         std::string data;
+        std::string list;  // --list [tsv|markdown]
         OutputArgs output; // --format, --scale
     };
     auto a = std::make_shared<Args>();
-    CLI::App* cmd = root.add_subcommand(
-        "render", "render figures headless (OSMesa) as PNG, with the data behind each one as CSV beside it");
+    CLI::App* cmd =
+        root.add_subcommand("render", "render figures headless (OSMesa) as PNG, with the data behind "
+                                      "each one as CSV and its caption as JSON beside it");
+    cmd->add_option("--figure", a->figure, figure_help() + " (required unless --list)");
     cmd->add_option(
-           "--figure", a->figure,
-           "figure ids, comma separated: " + figure_names() +
-               " (all: every figure of the paper; scene: any parameters; map: r_x over zeta and theta; "
-               "fig19: measured data with --data)")
-        ->required();
-    cmd->add_option("--out", a->out,
-                    "output directory (must exist); FIGURE.png and its CSV are replaced atomically")
-        ->required();
+        "--out", a->out,
+        "output directory (must exist); ID.png, its CSV and ID.json (id, title, caption naming every "
+        "parameter, files, version) are replaced atomically (required unless --list)");
+    cmd->add_option(
+           "--list", a->list,
+           "print the figures and exit: ID<TAB>TITLE per line (tsv, the default), or the README's table "
+           "(markdown)")
+        ->expected(0, 1)
+        ->check(CLI::IsMember({"tsv", "markdown"}));
     cmd->add_option("--data", a->data,
-                    "fig19: CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)")
+                    takers("--data") +
+                        ": CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)")
         ->check(file_name());
     add_vibration_options(*cmd, a->model.units,
-                          "fig19: for a vb column (A and f) and z_ss (A); scene, map: for --vb, --zss");
+                          takers("--amplitude") + ": for --vb, --zss (and fig19: a vb column, z_ss)");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
-    a->model.zeta_opt =
-        cmd->add_option("--zeta", a->model.zeta, "scene: velocity ratio")->check(number_in(kZetaRange));
-    cmd->add_option("--theta", a->model.theta_deg, "scene: vibration angle in degrees")
+    a->model.zeta_opt = cmd->add_option("--zeta", a->model.zeta, takers("--zeta") + ": velocity ratio")
+                            ->check(number_in(kZetaRange));
+    cmd->add_option("--theta", a->model.theta_deg,
+                    takers("--theta") + ": vibration angle in degrees (fig19: of points without theta_deg)")
         ->check(number_in(kThetaRange));
-    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "scene, map: displacement ratio")
+    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp,
+                                         takers("--rdisp") + ": displacement ratio (map: default 2)")
                              ->check(number_in(kRdispRange));
-    a->model.i_opt =
-        cmd->add_option("--i", a->model.i, "scene, map: Dahl exponent")->check(number_in(kIRange));
+    a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
+                         ->check(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
     return {cmd, [a, cmd] {
-                // Resolve the list of figures first: an unknown id lists the valid ones.
-                std::vector<FigureSpec> specs;
-                bool data_fig = false;
+                if (cmd->get_option("--list")->count() > 0) {
+                    std::fputs((a->list == "markdown" ? figure_table_markdown() : figure_list_tsv()).c_str(),
+                               stdout);
+                    return;
+                }
+                if (a->figure.empty())
+                    throw UsageError("--figure is required (or --list); allowed: " + figure_names());
+                if (a->out.empty() && cmd->get_option("--out")->count() == 0)
+                    throw UsageError("--out is required: the directory to write the figures into");
+                // The inputs of the figures that take flags (--vb and --zss converted).
+                const UnitArgs& u = a->model.units;
+                FigureInputs in;
+                in.zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false);
+                if (cmd->get_option("--theta")->count()) in.theta_deg = a->model.theta_deg;
+                in.rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false);
+                if (a->model.i_opt->count()) in.i = a->model.i;
+                in.data = a->data;
+                if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
+                if (*u.frequency_opt) in.frequency_khz = u.frequency;
+                // Resolve the list of figures first (an unknown id lists the valid ones), each with its
+                // inputs.
+                std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
                 std::stringstream ids(a->figure);
                 std::string id;
                 while (std::getline(ids, id, ',')) {
                     if (id == "all") {
-                        for (const auto& f : paper_figures()) specs.push_back(f);
-                    } else if (id == "scene") {
-                        struct Need {
-                            const char *flag, *alt;
-                        };
-                        for (const Need n : {Need{"--zeta", "--vb"}, Need{"--theta", nullptr},
-                                             Need{"--rdisp", "--zss"}, Need{"--i", nullptr}})
-                            if (cmd->get_option(n.flag)->count() == 0 &&
-                                !(n.alt && cmd->get_option(n.alt)->count() > 0))
-                                throw UsageError(std::string("--figure scene needs ") + n.flag +
-                                                 (n.alt ? std::string(" or ") + n.alt : "") +
-                                                 " (the same flags as `ratio`)");
-                        specs.push_back(scene_figure(to_params(a->model)));
-                    } else if (id == "fig19") {
-                        if (a->data.empty())
-                            throw UsageError("--figure fig19 needs --data FILE (measured r_x; see README, "
-                                             "Fitting measured data)");
-                        data_fig = true;
-                    } else if (id == "map") {
-                        // Beyond the paper: r_x over (zeta, theta) for one r_disp and i (default 2 and 1).
-                        const double rdisp =
-                            rdisp_of(a->model.rdisp_opt, a->model.rdisp, a->model.units, false).value_or(2.0);
-                        const double i = cmd->get_option("--i")->count() ? a->model.i : 1.0;
-                        specs.push_back(map_figure(rdisp, i));
-                    } else if (const FigureSpec* f = find_figure(id)) {
-                        specs.push_back(*f);
+                        for (const FigureEntry& e : figure_registry()) {
+                            if (missing_flag(e, cmd).empty())
+                                chosen.emplace_back(&e, in);
+                            else if (!e.all_needs_flags)
+                                chosen.emplace_back(&e, over(e.example, in));
+                            else
+                                std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",
+                                             e.id.c_str(), missing_flag(e, cmd).c_str());
+                        }
+                    } else if (const FigureEntry* e = find_registered(id)) {
+                        if (const std::string m = missing_flag(*e, cmd); !m.empty())
+                            throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) +
+                                             ")");
+                        chosen.emplace_back(e, in);
                     } else {
                         throw UsageError("--figure: unknown figure '" + id + "'; allowed: " + figure_names());
                     }
                 }
-                if (specs.empty() && !data_fig)
-                    throw UsageError("--figure: no figure named; allowed: " + figure_names());
+                if (chosen.empty()) throw UsageError("--figure: no figure named; allowed: " + figure_names());
                 Size sz;
                 std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
                 check_output_args(a->output, sz.w, sz.h);
@@ -203,26 +297,18 @@ Command add_render_command(CLI::App& root) {
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
                 // Each image's own name too (say a directory or a socket called fig8.png is in the way).
-                for (const std::string& ext : a->output.extensions()) {
-                    for (const FigureSpec& f : specs) check_out(dir + "/" + f.id + "." + ext);
-                    if (data_fig) check_out(dir + "/fig19." + ext);
-                }
-                // fig19 reads and fits the data before any rendering: a malformed file is a usage error.
-                std::optional<FigureData> fig19;
-                FitResult fig19_fit;
-                if (data_fig) {
-                    const UnitArgs& u = a->model.units;
-                    ReadOptions ro;
-                    FitOptions fo;
-                    if (*u.amplitude_opt) ro.amplitude_um = fo.amplitude_um = u.amplitude;
-                    if (*u.frequency_opt) ro.frequency_khz = u.frequency;
-                    if (cmd->get_option("--theta")->count()) fo.theta_deg = a->model.theta_deg;
+                for (const std::string& ext : a->output.extensions())
+                    for (const auto& [e, ignored] : chosen) check_out(dir + "/" + e->id + "." + ext);
+                // The figures' definitions: fig19 reads and fits its data here, before any rendering, so
+                // that a malformed file is a usage error with nothing written.
+                std::vector<FigureSpec> specs;
+                for (const auto& [e, inputs] : chosen) {
                     try {
-                        fig19 = measurement_figure(read_measurements(a->data, ro), fo, &fig19_fit);
-                    } catch (const DataError& e) {
-                        throw UsageError(e.what());
-                    } catch (const FitError& e) {
-                        throw UsageError(std::string("--data: ") + e.what());
+                        specs.push_back(e->make(inputs));
+                    } catch (const DataError& err) {
+                        throw UsageError(err.what());
+                    } catch (const FitError& err) {
+                        throw UsageError(std::string("--data: ") + err.what());
                     }
                 }
                 gfx::ContextOptions co;
@@ -245,8 +331,8 @@ Command add_render_command(CLI::App& root) {
                 struct Output {
                     std::string id;
                     gfx::Image image;
-                    gfx::DisplayList list;                                // for SVG and PDF
-                    std::vector<std::pair<std::string, std::string>> csv; // file, content
+                    gfx::DisplayList list;                                  // for SVG and PDF
+                    std::vector<std::pair<std::string, std::string>> files; // beside the PNG: name, content
                 };
                 const OutputArgs& output = a->output;
                 // Owns the frame and the display list, and frees them as soon as they are written.
@@ -254,8 +340,8 @@ Command add_render_command(CLI::App& root) {
                     std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
                     std::vector<std::uint8_t>().swap(o.image.rgba);
                     o.list = {};
-                    for (const auto& [file, content] : o.csv)
-                        if (err.empty()) err = write_file_atomic(file, content);
+                    for (const auto& [file, content] : o.files)
+                        if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
                     return err;
                 };
                 const std::size_t encoders = encoders_for(sz.w, sz.h);
@@ -266,15 +352,15 @@ Command add_render_command(CLI::App& root) {
                     if (!err.empty()) throw RuntimeFailure(err);
                     std::printf("%s\n", line.c_str());
                 };
-                if (fig19) apply_test_hook(fig19_fit);
                 // Every figure is written; those with failed points make the exit status 3.
-                const std::size_t nfigures = specs.size() + (fig19 ? 1 : 0);
+                const std::size_t nfigures = specs.size();
                 std::string failed;
                 int nfailed = 0;
-                for (std::size_t k = 0; k < nfigures; ++k) {
-                    const bool is_fit = k == specs.size(); // fig19 comes last
-                    FigureData data = is_fit ? std::move(*fig19) : compute_figure(specs[k]);
+                for (FigureSpec& spec : specs) {
+                    FigureData data = compute_figure(spec);
                     for (TableData& t : data.tables) apply_test_hook(t);
+                    std::optional<FitResult> fit;
+                    if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
                     Output o{data.id, {}, {}, {}};
                     if (output.png) {
                         o.image = session->render_figure(data);
@@ -282,17 +368,26 @@ Command add_render_command(CLI::App& root) {
                     } else {
                         o.list = session->record_figure(data);
                     }
-                    for (const TableData& t : data.tables)
-                        o.csv.push_back({dir + "/" + data.id + t.suffix + ".csv", csv_of(t)});
-                    if (const std::string w = check_figure(data, is_fit ? &fig19_fit : nullptr); !w.empty()) {
+                    std::vector<std::string> names;
+                    for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
+                    for (const TableData& t : data.tables) {
+                        names.push_back(data.id + t.suffix + ".csv");
+                        o.files.push_back({names.back(), csv_of(t)});
+                    }
+                    names.push_back(data.id + ".json");
+                    const std::string w = check_figure(data, fit ? &*fit : nullptr);
+                    o.files.push_back({names.back(), caption_json(spec, names, w)});
+                    if (!w.empty()) {
                         ++nfailed;
                         failed += (failed.empty() ? "" : "; ") + w;
                     }
+                    spec = FigureSpec{}; // its data (fig19's figure) are not needed any more
                     while (pending.size() >= encoders) finish_oldest();
                     std::string line = "wrote " + dir + "/" + o.id + ".";
                     for (const std::string& ext : output.extensions())
                         line += (ext == output.extensions().front() ? "" : ", .") + ext;
-                    line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + ") and its CSV";
+                    line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + "), its CSV and " +
+                            o.id + ".json";
                     auto job = std::async(std::launch::async, write, std::move(o));
                     pending.emplace_back(std::move(job), std::move(line));
                 }

@@ -1,6 +1,6 @@
 #include "script.hpp"
 
-#include "fv/figures.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/input_file.hpp"
 #include "fv/units.hpp"
 

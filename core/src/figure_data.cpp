@@ -300,6 +300,8 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
 } // namespace
 
 FigureData compute_figure(const FigureSpec& spec, int threads) {
+    if (spec.kind == FigureKind::measurements)
+        return spec.precomputed ? *spec.precomputed : FigureData{spec.id, spec.title, {}, {}};
     FigureData fig;
     fig.id = spec.id;
     fig.title = spec.title;
@@ -360,6 +362,8 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         fig.tables.push_back(std::move(ratios));
         break;
     }
+    case FigureKind::measurements:
+        break; // above
     }
     return fig;
 }

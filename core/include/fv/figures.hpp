@@ -1,13 +1,18 @@
-// The paper's figures, defined once as data: the CLI renders them, the app loads them as presets, the tests
-// check them. Nothing here draws; figure_data.hpp turns a spec into numbers.
+// A figure defined as data: the CLI renders it, the app loads it as a preset, the tests check it. Each figure
+// is registered once (figure_registry.hpp, core/src/figures/). Nothing here draws; figure_data.hpp turns a
+// spec into numbers.
 #pragma once
 
 #include "fv/params.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace fv {
+
+struct FigureData;
+struct FitResult;
 
 enum class FigureKind {
     ratio_curves, // r_x(zeta) for a family of models/parameters (Figs. 5, 10-13)
@@ -16,6 +21,7 @@ enum class FigureKind {
     period_force, // F_x, F_y, |F| over one steady-state period (Figs. 15, 16, 18)
     scene,        // top view + force + ratio curve of one parameter set (any parameters)
     map,          // r_x over a (zeta, theta) grid with the best angle theta*(zeta) (beyond the paper)
+    measurements, // measured r_x against the fitted models (Fig. 19): computed when the spec is made
 };
 
 // One r_x(zeta) curve.
@@ -27,9 +33,9 @@ struct Curve {
 };
 
 struct FigureSpec {
-    std::string id;      // "fig10"
-    std::string title;   // drawn above the figure
-    std::string caption; // what it shows, for README and --help
+    std::string id;    // "fig10"
+    std::string title; // drawn above the figure (markup: r_{disp}); names the parameters that distinguish it
+    std::string caption; // what it shows, in sentences (ID.json, the README table)
     FigureKind kind = FigureKind::ratio_curves;
     // ratio_curves (and scene): the curves and the zeta values they are computed at
     std::vector<Curve> curves;
@@ -41,12 +47,17 @@ struct FigureSpec {
     // map: theta from 0 to theta_max_deg in theta_count steps (zetas as above; params.rdisp, params.i)
     int theta_count = 91;
     double theta_max_deg = 90;
+    // measurements: the figure, computed (data read and fitted) when the spec was made, the fit behind it,
+    // and the sentence naming its parameters (figure_parameters)
+    std::shared_ptr<const FigureData> precomputed;
+    std::shared_ptr<const FitResult> fit;
+    std::string parameters;
 };
 
-// Every figure of the paper, in paper order: fig5, fig8, fig9, fig10..fig13, fig14a, fig14b, fig15..fig18.
+// The fixed figures of the registry (those that take no flags: the paper's, fig5..fig18), in its order.
 const std::vector<FigureSpec>& paper_figures();
 
-// nullptr if unknown.
+// A fixed figure; nullptr if unknown.
 const FigureSpec* find_figure(const std::string& id);
 
 // zeta grid of the r_x(zeta) figures: 0.02 apart up to 0.5 (where compliant curves turn sharply), 0.025 up
@@ -57,8 +68,8 @@ std::vector<double> ratio_zeta_grid(double zeta_max = 3);
 // The (zeta, theta) map of r_x for one r_disp and i: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg].
 FigureSpec map_figure(double rdisp, double i);
 
-// Comma-separated list of the valid ids (for error messages).
-std::string figure_ids();
+// "ζ = 0.15, θ = 90°, r_{disp} = 2, i = 1" (title markup).
+std::string params_title(const Params& p);
 
 // The dashboard of one parameter set: top view, force over a period, r_x(zeta) with the rigid curve.
 FigureSpec scene_figure(const Params& p);

@@ -1,0 +1,251 @@
+#include "fv/figure_registry.hpp"
+
+#include "fv/format.hpp"
+#include "fv/steady_state.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <tuple>
+
+namespace fv {
+namespace {
+
+// Filled by the registrars before main; read only after (figure_registry() sorts it on first use).
+std::vector<FigureEntry>& registrations() {
+    static std::vector<FigureEntry> v;
+    return v;
+}
+
+// The paper's figures by number (fig14a, fig14b after fig14), then the others by id.
+std::tuple<int, long, std::string> order_key(const std::string& id) {
+    if (id.rfind("fig", 0) == 0 && id.size() > 3 && std::isdigit(static_cast<unsigned char>(id[3]))) {
+        std::size_t end = 3;
+        while (end < id.size() && std::isdigit(static_cast<unsigned char>(id[end]))) ++end;
+        return {0, std::stol(id.substr(3, end - 3)), id.substr(end)};
+    }
+    return {1, 0, id};
+}
+
+std::string number(double v) {
+    return format_number("%g", v);
+}
+
+// 1e-08 -> 1e-8
+std::string tolerance(double v) {
+    std::string s = format_number("%.0e", v);
+    const std::size_t e = s.find('e');
+    const std::size_t digits = s.find_first_not_of("+-0", e + 1);
+    if (e != std::string::npos && digits != std::string::npos)
+        s = s.substr(0, e + 1) + (s[e + 1] == '-' ? "-" : "") + s.substr(digits);
+    return s;
+}
+std::string degrees(double rad) {
+    return format_number("%.4g", rad * 180 / kPi) + "°";
+}
+
+std::string params_text(const Params& p) {
+    return "ζ = " + number(p.zeta) + ", θ = " + degrees(p.theta) + ", r_disp = " + number(p.rdisp) +
+           ", i = " + number(p.i);
+}
+
+// "0.5, 1, 2" of the distinct values, in order of appearance.
+template <class F> std::string distinct(const std::vector<Curve>& curves, Model m, F value) {
+    std::vector<std::string> seen;
+    for (const Curve& c : curves)
+        if (c.model == m) {
+            const std::string v = value(c);
+            if (std::find(seen.begin(), seen.end(), v) == seen.end()) seen.push_back(v);
+        }
+    std::string s;
+    for (const std::string& v : seen) s += (s.empty() ? "" : ", ") + v;
+    return s;
+}
+
+std::string ode_solver() {
+    return "the continuous-time steady-state solver (Radau IIA, Newton on the period map), tolerance " +
+           tolerance(SteadyOptions{}.ode_tolerance) + " on r_x and r_y";
+}
+const char* kQuadrature = "adaptive Gauss–Kronrod quadrature of Eq. (9), tolerance 1e-13";
+
+std::string paper_scheme(int steps) {
+    return "the paper's tracking scheme (Eqs. 17–27) at " + std::to_string(steps) +
+           " steps per period, run to its periodic steady state (tolerance " +
+           tolerance(SteadyOptions{}.tolerance) + " in units of F_c)";
+}
+
+// The steady period behind a top view or force plot.
+std::string period_source(int steps) {
+    return steps > 0 ? "one steady-state period of " + paper_scheme(steps)
+                     : "one steady-state period from " + ode_solver() + ", sampled at 1024 instants";
+}
+
+std::string zeta_sampling(const std::vector<double>& z) {
+    if (z.empty()) return "no ζ values";
+    const std::string n = std::to_string(z.size()), range = number(z.front()) + " to " + number(z.back());
+    if (z == ratio_zeta_grid())
+        return "ζ at " + n + " points from " + range + " (0.02 apart up to 0.5, 0.025 up to 1, 0.1 up to 3)";
+    bool even = z.size() > 2;
+    for (std::size_t k = 2; even && k < z.size(); ++k)
+        even = std::abs((z[k] - z[k - 1]) - (z[1] - z[0])) <= 1e-9 * std::max(1.0, std::abs(z.back()));
+    return "ζ at " + n + (even ? " evenly spaced" : "") + " points from " + range;
+}
+
+std::string ratio_models(const FigureSpec& spec) {
+    const std::string dahl_theta =
+        distinct(spec.curves, Model::dahl, [](const Curve& c) { return degrees(c.theta); });
+    const std::string rigid_theta =
+        distinct(spec.curves, Model::rigid, [](const Curve& c) { return degrees(c.theta); });
+    std::string s;
+    if (!dahl_theta.empty())
+        s += "Dahl model at θ = " + dahl_theta + ", r_disp = " +
+             distinct(spec.curves, Model::dahl, [](const Curve& c) { return number(c.rdisp); }) +
+             ", i = " + distinct(spec.curves, Model::dahl, [](const Curve& c) { return number(c.i); });
+    if (!rigid_theta.empty())
+        s += std::string(s.empty() ? "" : "; ") + "rigid model" +
+             (s.empty() ? " (no asperity: r_disp → ∞, i does not apply)" : "") + " at θ = " + rigid_theta;
+    return s;
+}
+
+// How the r_x of the curves were computed.
+std::string ratio_solvers(const FigureSpec& spec) {
+    bool dahl = false, rigid = false;
+    for (const Curve& c : spec.curves) (c.model == Model::rigid ? rigid : dahl) = true;
+    std::string s;
+    if (dahl) s += "Dahl r_x from " + ode_solver();
+    if (rigid) s += std::string(s.empty() ? "" : "; ") + "rigid r_x by " + kQuadrature;
+    return s;
+}
+
+std::string escape_cell(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '|') out += '\\';
+        out += c == '\n' ? ' ' : c;
+    }
+    return out;
+}
+
+} // namespace
+
+RegisterFigure::RegisterFigure(FigureEntry entry) {
+    for (const FigureEntry& e : registrations())
+        if (e.id == entry.id) {
+            std::fprintf(stderr, "frictionviz: figure '%s' is registered twice\n", entry.id.c_str());
+            std::abort();
+        }
+    registrations().push_back(std::move(entry));
+}
+
+const std::vector<FigureEntry>& figure_registry() {
+    static const std::vector<FigureEntry> sorted = [] {
+        std::vector<FigureEntry> v = registrations();
+        std::sort(v.begin(), v.end(), [](const FigureEntry& a, const FigureEntry& b) {
+            return order_key(a.id) < order_key(b.id);
+        });
+        return v;
+    }();
+    return sorted;
+}
+
+const FigureEntry* find_registered(const std::string& id) {
+    for (const FigureEntry& e : figure_registry())
+        if (e.id == id) return &e;
+    return nullptr;
+}
+
+std::string figure_ids() {
+    std::string s;
+    for (const FigureEntry& e : figure_registry()) s += (s.empty() ? "" : ", ") + e.id;
+    return s;
+}
+
+std::string figure_list_tsv() {
+    std::string s;
+    for (const FigureEntry& e : figure_registry()) s += e.id + "\t" + e.title + "\n";
+    return s;
+}
+
+std::string figure_table_markdown() {
+    std::string s = "| figure | what it shows |\n| --- | --- |\n";
+    for (const FigureEntry& e : figure_registry()) {
+        const std::string text = !e.summary.empty() ? e.summary : e.make(e.example).caption;
+        s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + escape_cell(text) + " |\n";
+    }
+    return s;
+}
+
+const std::vector<FigureSpec>& paper_figures() {
+    static const std::vector<FigureSpec> figs = [] {
+        std::vector<FigureSpec> v;
+        for (const FigureEntry& e : figure_registry())
+            if (e.flags.empty()) v.push_back(e.make(e.example));
+        return v;
+    }();
+    return figs;
+}
+
+const FigureSpec* find_figure(const std::string& id) {
+    for (const auto& f : paper_figures())
+        if (f.id == id) return &f;
+    return nullptr;
+}
+
+std::string figure_parameters(const FigureSpec& spec) {
+    const Params& p = spec.params;
+    std::string s;
+    switch (spec.kind) {
+    case FigureKind::ratio_curves:
+        s = ratio_models(spec) + "; " + zeta_sampling(spec.zetas) + "; " + ratio_solvers(spec);
+        break;
+    case FigureKind::step_view:
+        s = "Dahl model, " + params_text(p) + "; " + paper_scheme(spec.steps_per_period) +
+            "; the step drawn is the one of that period where the spring turns most";
+        break;
+    case FigureKind::period_view:
+    case FigureKind::period_force:
+        s = "Dahl model, " + params_text(p) +
+            (spec.overlay_other_i ? " (and i = " + number(p.i == 0 ? 1 : 0) + ", overlaid)" : "") + "; " +
+            period_source(spec.steps_per_period);
+        break;
+    case FigureKind::scene:
+        s = "Dahl model, " + params_text(p) + "; top view and force over " +
+            period_source(spec.steps_per_period) + "; r_x(ζ) of the Dahl model and the rigid model, " +
+            zeta_sampling(spec.zetas) + ", rigid r_x by " + kQuadrature;
+        break;
+    case FigureKind::map:
+        s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + "; r_x from " +
+            ode_solver() + " on a grid of " + zeta_sampling(spec.zetas) + " × θ at " +
+            std::to_string(spec.theta_count) + " evenly spaced angles from 0° to " +
+            number(spec.theta_max_deg) +
+            "°; θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours, for the rigid "
+            "model by " +
+            kQuadrature;
+        break;
+    case FigureKind::measurements:
+        s = spec.parameters;
+        break;
+    }
+    return "Parameters: " + s + ".";
+}
+
+std::string plain_text(const std::string& markup) {
+    std::string s;
+    for (std::size_t k = 0; k < markup.size(); ++k) {
+        const char c = markup[k];
+        if ((c == '_' || c == '^') && k + 1 < markup.size() && markup[k + 1] == '{') {
+            const std::size_t close = markup.find('}', k + 2);
+            if (close != std::string::npos) {
+                s += c;
+                s += markup.substr(k + 2, close - k - 2);
+                k = close;
+                continue;
+            }
+        }
+        s += c;
+    }
+    return s;
+}
+
+} // namespace fv

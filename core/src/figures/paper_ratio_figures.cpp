@@ -1,0 +1,71 @@
+// The paper's r_x(zeta) figures: Fig. 5 (rigid model) and Figs. 10-13 (Dahl model, a family of r_disp).
+// Each registers itself (figure_registry.hpp).
+#include "fv/figure_registry.hpp"
+#include "fv/format.hpp"
+#include "fv/sweep.hpp"
+
+namespace fv {
+namespace {
+
+constexpr double kDeg = kPi / 180;
+
+FigureSpec fig5() {
+    FigureSpec f;
+    f.id = "fig5";
+    f.kind = FigureKind::ratio_curves;
+    f.title = "Fig. 5: friction ratio of the rigid model, Eq. (9)";
+    f.caption =
+        "Rigid model, Eq. (9): r_x(ζ) for θ = 0°, 30°, 45°, 60°, 90°. Below ζ ≈ 0.95 parallel vibration "
+        "(θ = 0°) reduces friction most; above ζ = 1 perpendicular vibration does.";
+    f.zetas = linspace(0, 2, 201);
+    for (double th : {0.0, 30.0, 45.0, 60.0, 90.0}) f.curves.push_back({Model::rigid, th * kDeg, 0, 0});
+    return f;
+}
+
+FigureEntry fig5_entry() {
+    FigureEntry e;
+    e.id = "fig5";
+    e.title = "friction ratio of the rigid model, θ = 0°…90°";
+    e.kind = FigureKind::ratio_curves;
+    e.make = [](const FigureInputs&) { return fig5(); };
+    return e;
+}
+
+const RegisterFigure register_fig5{fig5_entry()};
+
+// Figs. 10-13: the r_disp values are not given in the paper; this family runs from compliance-dominated
+// (0.5: the tip deflection at sliding is twice the vibration amplitude) to near-rigid (20).
+const double kRdispFamily[] = {0.5, 1, 2, 5, 20};
+
+FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
+    FigureSpec f;
+    f.id = id;
+    f.kind = FigureKind::ratio_curves;
+    const std::string i_text = format_number("%g", i), theta_text = format_number("%g", theta_deg);
+    f.title = "Fig. " + id.substr(3) + ": friction ratio, i = " + i_text + ", θ = " + theta_text + "°";
+    f.caption = "r_x(ζ) of the Dahl model with i = " + i_text + (i == 0 ? " (stiction)" : "") +
+                " at θ = " + theta_text + "° for r_disp = 0.5, 1, 2, 5, 20, and the rigid model (Eq. " +
+                (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve.";
+    f.zetas = ratio_zeta_grid();
+    for (double r : kRdispFamily) f.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
+    f.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});
+    return f;
+}
+
+FigureEntry family_entry(const std::string& id, double i, double theta_deg) {
+    FigureEntry e;
+    e.id = id;
+    e.title = "friction ratio r_x(ζ), i = " + format_number("%g", i) +
+              ", θ = " + format_number("%g", theta_deg) + "°, r_disp = 0.5…20 and rigid";
+    e.kind = FigureKind::ratio_curves;
+    e.make = [=](const FigureInputs&) { return ratio_family(id, i, theta_deg); };
+    return e;
+}
+
+const RegisterFigure register_fig10{family_entry("fig10", 1, 90)};
+const RegisterFigure register_fig11{family_entry("fig11", 0, 90)};
+const RegisterFigure register_fig12{family_entry("fig12", 1, 0)};
+const RegisterFigure register_fig13{family_entry("fig13", 0, 0)};
+
+} // namespace
+} // namespace fv
