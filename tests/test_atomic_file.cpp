@@ -34,7 +34,7 @@ TEST_CASE("write_file_atomic replaces the file whole and leaves no temporary beh
 TEST_CASE("Bad targets are refused before anything is written", "[io]") {
     const std::string dir = temp_dir();
     CHECK_FALSE(fv::check_writable(dir + "/missing/out.csv").empty());
-    CHECK_FALSE(fv::check_writable(dir).empty());         // a directory
+    CHECK_FALSE(fv::check_writable(dir).empty()); // a directory
     CHECK_FALSE(fv::check_writable("").empty());
     CHECK_FALSE(fv::check_writable("/proc/out.csv").empty());
     CHECK(fv::check_writable(dir + "/fine.csv").empty());
