@@ -1,11 +1,11 @@
 #include "fv/measurements.hpp"
 
 #include "fv/input_file.hpp"
+#include "fv/parse_number.hpp"
 
 #include "fv/units.hpp"
 
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -135,11 +135,11 @@ void Parser::header(std::string_view line) {
 double Parser::number(const Field& f, Col c, double lo, double hi, bool lo_open, const char* allowed) const {
     const std::string what = std::string("'") + kNames[static_cast<std::size_t>(c)] + "' ";
     if (f.text.empty()) fail(f.column, "empty " + what + "field; allowed: " + allowed);
-    // from_chars takes no leading '+'; accept it, as people write it.
+    // parse_number (std::from_chars' contract) takes no leading '+'; accept it, as people write it.
     std::string_view s = f.text;
     if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
     double v = 0;
-    const auto [ptr, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    const auto [ptr, ec] = parse_number(s.data(), s.data() + s.size(), v);
     if (ec == std::errc::result_out_of_range)
         fail(f.column, what + quote(f.text) + " is out of the double range; allowed: " + allowed);
     if (ec != std::errc() || ptr != s.data() + s.size())
