@@ -7,9 +7,11 @@
 
 #include <cmath>
 
+#if defined(__linux__)
 #include <sys/resource.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+#endif
 
 namespace fv::app {
 
@@ -48,8 +50,11 @@ void RatioWorker::wait_idle() const {
 
 void RatioWorker::run() {
     // Lowest CPU priority: on two cores the renderer (llvmpipe's threads) must win, the curves can wait a
-    // frame. (On Linux, setpriority on a thread id applies to that thread alone.)
+    // frame. (On Linux, setpriority on a thread id applies to that thread alone; elsewhere, e.g. the browser
+    // build, there is no thread id to name and the worker keeps the default priority.)
+#if defined(__linux__)
     ::setpriority(PRIO_PROCESS, static_cast<id_t>(::syscall(SYS_gettid)), 19);
+#endif
     for (;;) {
         RatioRequest req;
         std::uint64_t gen = 0;
