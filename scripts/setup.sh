@@ -14,6 +14,7 @@ PACKAGES=(
                                             # drag-and-drop test speaks XDND through Xlib)
   bc                                        # scripts/bench.sh arithmetic
   clang libclang-rt-14-dev                  # scripts/fuzz.sh (libFuzzer, ASan/UBSan runtimes for clang 14)
+  emscripten nodejs dpkg-dev                # scripts/build-web.sh: emcc, node for the web tests, apt-get source
 )
 
 missing=()
