@@ -220,8 +220,8 @@ TEST_CASE("CLI: render writes a PNG and its CSV, and fails cleanly without OSMes
 
 TEST_CASE("CLI: gui without a display says what to run instead", "[cli][gui]") {
     const std::string err = scratch_dir() + "/gui-err.txt";
-    const std::string cmd =
-        "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " gui --frames 2 >/dev/null 2>" + err;
+    const std::string cmd = "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) +
+                            " gui --platform window --frames 2 >/dev/null 2>" + err;
     const int status = std::system(cmd.c_str());
     CHECK(WEXITSTATUS(status) == 1);
     const std::string text = slurp(err);
@@ -231,6 +231,13 @@ TEST_CASE("CLI: gui without a display says what to run instead", "[cli][gui]") {
     const int status2 = std::system(
         ("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " >/dev/null 2>&1").c_str());
     CHECK(WEXITSTATUS(status2) == 1);
+    // --platform auto (the default) runs headless when there is no display and a number of frames is given.
+    const std::string shot = scratch_dir() + "/auto-headless.png";
+    const int status3 = std::system(("env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) +
+                                     " gui --frames 2 --screenshot " + shot + " >/dev/null 2>&1")
+                                        .c_str());
+    CHECK(WEXITSTATUS(status3) == 0);
+    CHECK(::access(shot.c_str(), F_OK) == 0);
 }
 
 TEST_CASE("CLI: gui --data checks the file before any window opens", "[cli][gui][data]") {

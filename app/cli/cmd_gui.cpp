@@ -1,22 +1,37 @@
-// frictionviz gui (also: no subcommand): the interactive window; --headless runs the same app into an
-// OSMesa buffer (scripted tests, benchmarks).
+// frictionviz gui (also: no subcommand): the interactive app on a platform chosen by name (--platform
+// window|headless|auto; --headless is --platform headless): the window, or the same app into an OSMesa buffer
+// (scripted tests, screenshots, benchmarks).
 #include "commands.hpp"
 #include "errors.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
+#include "render_output.hpp"
 
 #include "gui/gui_app.hpp"
+#include "gui/platform.hpp"
 
 #include "fv/measurements.hpp"
 
 #include <memory>
 
 namespace fv::cli {
+namespace {
+
+std::string no_window_message(const std::string& why) {
+    return "cannot open a window: " + why +
+           "; run the app without a window with `frictionviz gui --headless --frames N --screenshot FILE`, "
+           "render the figures with `frictionviz render --figure all --out DIR`, or run under `xvfb-run -a "
+           "frictionviz gui`";
+}
+
+} // namespace
 
 Command add_gui_command(CLI::App& root) {
     struct Args {
         ModelArgs model;
         bool headless = false;
+        std::string platform = "auto", size;
+        double scale = 0;
         int frames = 0, bench = 0;
         std::string script, screenshot, data;
     };
@@ -36,8 +51,21 @@ Command add_gui_command(CLI::App& root) {
                     "measured r_x to show on the ratio plot: CSV zeta,r_x or vb,r_x [,theta_deg,sigma,label] "
                     "(vb converted with the window's amplitude and frequency)")
         ->check(file_name());
-    cmd->add_flag("--headless", a->headless,
-                  "render into an OSMesa buffer instead of a window (same pixels)");
+    cmd->add_option(
+           "--platform", a->platform,
+           "where the app runs: window, headless (an OSMesa buffer, the same pixels; needs --frames or "
+           "--bench) or auto (a window when DISPLAY or WAYLAND_DISPLAY is set, else headless)")
+        ->check(CLI::IsMember(app::platform_names()))
+        ->capture_default_str();
+    cmd->add_flag("--headless", a->headless, "the same as --platform headless");
+    cmd->add_option("--size", a->size,
+                    "framebuffer size WxH in pixels (default: 1280x800 logical units at the scale)")
+        ->check(size_spec());
+    cmd->add_option("--scale", a->scale,
+                    "UI and drawing scale, pixels per logical unit, in " + scale_range_text() +
+                        " (default: the monitor's content scale; 1 headless); --size 2560x1600 --scale 2 is "
+                        "the 1280x800 screen at twice the resolution")
+        ->check(number_in({kMinScale, kMaxScale}));
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
         ->check(integer_in(1, 1000000));
     cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)")
@@ -47,65 +75,85 @@ Command add_gui_command(CLI::App& root) {
     cmd->add_option("--bench", a->bench,
                     "benchmark: N frames with a slider changing every frame; prints frame times")
         ->check(integer_in(10, 100000));
-    return {cmd, [a, cmd] {
-                app::GuiOptions o;
-                o.headless = a->headless;
-                o.frames = a->frames;
-                o.bench_frames = a->bench;
-                o.script = a->script;
-                o.screenshot = a->screenshot;
-                if (cmd->get_option("--screenshot")->count() > 0) {
-                    if (o.frames == 0)
-                        throw UsageError("--screenshot needs --frames N (the frame to capture)");
-                    // A PNG is a file, not terminal output: "-" is not standard output here.
-                    if (o.screenshot == "-")
-                        throw UsageError("--screenshot: give a file name (standard output is not allowed for "
-                                         "a PNG; /dev/stdout is, for a pipe)");
-                    check_out(o.screenshot, "--screenshot");
-                }
-                // Start from the given flags, the rest from Fig. 14a's parameters.
-                const UnitArgs& u = a->model.units;
-                if (auto zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false)) o.params.zeta = *zeta;
-                if (cmd->get_option("--theta")->count()) o.params.theta = a->model.theta_deg * kPi / 180;
-                // r_disp from --zss whatever the model: the window can switch to the Dahl model.
-                if (auto rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false))
-                    o.params.rdisp = *rdisp;
-                if (cmd->get_option("--i")->count()) o.params.i = a->model.i;
-                if (cmd->get_option("--model")->count()) o.model = model_of(a->model);
-                if (*u.amplitude_opt) o.amplitude_um = u.amplitude;
-                if (*u.frequency_opt) o.frequency_khz = u.frequency;
-                // The window combines a given amplitude or frequency with the default of the other one.
-                check_vibration({o.amplitude_um, o.frequency_khz}, {o.params.rdisp});
-                // A malformed data file is a usage error before any window opens.
-                if (!a->data.empty()) {
-                    ReadOptions ro;
-                    ro.amplitude_um = o.amplitude_um;
-                    ro.frequency_khz = o.frequency_khz;
-                    try {
-                        o.data = read_measurements(a->data, ro);
-                    } catch (const DataError& e) {
-                        throw UsageError(e.what()); // FILE:LINE:COL: message
-                    }
-                    if (o.data->points.empty()) throw UsageError("--data: " + a->data + " has no data rows");
-                }
+    return {
+        cmd, [a, cmd] {
+            app::GuiOptions o;
+            if (a->headless) {
+                if (cmd->get_option("--platform")->count() > 0 && a->platform != "headless")
+                    throw UsageError("--headless contradicts --platform " + a->platform);
+                a->platform = "headless";
+            }
+            o.platform = a->platform;
+            if (!a->size.empty()) {
+                const PixelSize sz = parse_size(a->size);
+                o.width = sz.w;
+                o.height = sz.h;
+            }
+            o.scale = static_cast<float>(a->scale);
+            // The app needs room for its panel and plots: a logical page of at least 800 x 480.
+            if (o.width > 0) {
+                const double s = a->scale > 0 ? a->scale : 1;
+                if (o.width / s < 800 || o.height / s < 480)
+                    throw UsageError("--size " + a->size +
+                                     " leaves a page smaller than 800x480 logical "
+                                     "units at the scale; allowed: --size at least 800x480 times --scale");
+            }
+            o.frames = a->frames;
+            o.bench_frames = a->bench;
+            o.script = a->script;
+            o.screenshot = a->screenshot;
+            if (cmd->get_option("--screenshot")->count() > 0) {
+                if (o.frames == 0) throw UsageError("--screenshot needs --frames N (the frame to capture)");
+                // A PNG is a file, not terminal output: "-" is not standard output here.
+                if (o.screenshot == "-")
+                    throw UsageError("--screenshot: give a file name (standard output is not allowed for "
+                                     "a PNG; /dev/stdout is, for a pipe)");
+                check_out(o.screenshot, "--screenshot");
+            }
+            // Headless has no one to close it: it needs a number of frames (checked before any context).
+            if (app::resolve_platform_name(o.platform) == "headless" && o.frames == 0 && a->bench == 0) {
+                if (o.platform == "auto") // no display, and nothing to run headless
+                    throw RuntimeFailure(no_window_message("no display (neither DISPLAY nor "
+                                                           "WAYLAND_DISPLAY is set)"));
+                throw UsageError("--platform headless needs --frames N or --bench N (a headless app has no "
+                                 "window to close)");
+            }
+            // Start from the given flags, the rest from Fig. 14a's parameters.
+            const UnitArgs& u = a->model.units;
+            if (auto zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false)) o.params.zeta = *zeta;
+            if (cmd->get_option("--theta")->count()) o.params.theta = a->model.theta_deg * kPi / 180;
+            // r_disp from --zss whatever the model: the window can switch to the Dahl model.
+            if (auto rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false)) o.params.rdisp = *rdisp;
+            if (cmd->get_option("--i")->count()) o.params.i = a->model.i;
+            if (cmd->get_option("--model")->count()) o.model = model_of(a->model);
+            if (*u.amplitude_opt) o.amplitude_um = u.amplitude;
+            if (*u.frequency_opt) o.frequency_khz = u.frequency;
+            // The window combines a given amplitude or frequency with the default of the other one.
+            check_vibration({o.amplitude_um, o.frequency_khz}, {o.params.rdisp});
+            // A malformed data file is a usage error before any window opens.
+            if (!a->data.empty()) {
+                ReadOptions ro;
+                ro.amplitude_um = o.amplitude_um;
+                ro.frequency_khz = o.frequency_khz;
                 try {
-                    const int rc = app::run_gui(o);
-                    if (rc != 0) throw RuntimeFailure("the window closed with an error");
-                } catch (const UsageError&) {
-                    throw;
-                } catch (const std::exception& e) {
-                    const std::string what = e.what();
-                    if (what.find("display") != std::string::npos)
-                        throw RuntimeFailure(
-                            "cannot open a window: " + what +
-                            "; run the app without a window with `frictionviz gui --headless --frames N "
-                            "--screenshot FILE`, render the figures with `frictionviz render --figure all "
-                            "--out DIR`, or run under `xvfb-run -a frictionviz gui`");
-                    if (what.find(a->script) == 0 && !a->script.empty())
-                        throw UsageError("--script: " + what);
-                    throw RuntimeFailure(what);
+                    o.data = read_measurements(a->data, ro);
+                } catch (const DataError& e) {
+                    throw UsageError(e.what()); // FILE:LINE:COL: message
                 }
-            }};
+                if (o.data->points.empty()) throw UsageError("--data: " + a->data + " has no data rows");
+            }
+            try {
+                const int rc = app::run_gui(o);
+                if (rc != 0) throw RuntimeFailure("the window closed with an error");
+            } catch (const UsageError&) {
+                throw;
+            } catch (const std::exception& e) {
+                const std::string what = e.what();
+                if (what.find("display") != std::string::npos) throw RuntimeFailure(no_window_message(what));
+                if (what.find(a->script) == 0 && !a->script.empty()) throw UsageError("--script: " + what);
+                throw RuntimeFailure(what);
+            }
+        }};
 }
 
 } // namespace fv::cli

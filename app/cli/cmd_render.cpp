@@ -36,12 +36,6 @@
 namespace fv::cli {
 namespace {
 
-struct Size {
-    int w = 1280, h = 800;
-};
-
-constexpr int kMinW = 320, kMinH = 240, kMaxW = 7680, kMaxH = 4320;
-
 // PNG encodings run in parallel as long as their frames fit in this budget: each holds about two frames (the
 // pixels and stb's filtered copy of them). At least one runs, at most one per core: 2 at 1280x800 (3.9 MiB
 // frames), 1 above 2^20 pixels (1920x1080, 7680x4320). tests/reliability/render_memory_test.cpp holds the
@@ -52,23 +46,6 @@ std::size_t encoders_for(int w, int h) {
     const std::size_t job = std::size_t{2} * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
     const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
     return std::clamp<std::size_t>(kEncodeBudget / job, 1, cores);
-}
-
-CLI::Validator size_spec() {
-    return CLI::Validator(
-        [](std::string& s) -> std::string {
-            int w = 0, h = 0;
-            char x = 0, extra = 0;
-            std::ostringstream allowed;
-            allowed << "allowed: WxH with W in [" << kMinW << ", " << kMaxW << "] and H in [" << kMinH << ", "
-                    << kMaxH << "]";
-            if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-                return "'" + s + "' is not a size; " + allowed.str();
-            if (w < kMinW || w > kMaxW || h < kMinH || h > kMaxH)
-                return "'" + s + "' is out of range; " + allowed.str();
-            return {};
-        },
-        "WxH");
 }
 
 std::string csv_of(const TableData& t) {
@@ -290,8 +267,7 @@ Command add_render_command(CLI::App& root) {
                     }
                 }
                 if (chosen.empty()) throw UsageError("--figure: no figure named; allowed: " + figure_names());
-                Size sz;
-                std::sscanf(a->size.c_str(), "%d%*c%d", &sz.w, &sz.h);
+                const PixelSize sz = parse_size(a->size);
                 check_output_args(a->output, sz.w, sz.h);
                 check_out_dir(a->out);
                 std::string dir = a->out;

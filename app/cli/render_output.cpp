@@ -12,6 +12,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 namespace fv::cli {
@@ -48,6 +49,33 @@ std::string pretty(double v) {
 
 } // namespace
 
+std::string scale_range_text() {
+    return "[" + pretty(kMinScale) + ", " + pretty(kMaxScale) + "]";
+}
+
+CLI::Validator size_spec() {
+    return CLI::Validator(
+        [](std::string& s) -> std::string {
+            int w = 0, h = 0;
+            char x = 0, extra = 0;
+            std::ostringstream allowed;
+            allowed << "allowed: WxH with W in [" << kMinSizeW << ", " << kMaxSizeW << "] and H in ["
+                    << kMinSizeH << ", " << kMaxSizeH << "]";
+            if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+                return "'" + s + "' is not a size; " + allowed.str();
+            if (w < kMinSizeW || w > kMaxSizeW || h < kMinSizeH || h > kMaxSizeH)
+                return "'" + s + "' is out of range; " + allowed.str();
+            return {};
+        },
+        "WxH");
+}
+
+PixelSize parse_size(const std::string& s) {
+    PixelSize sz;
+    std::sscanf(s.c_str(), "%d%*c%d", &sz.w, &sz.h);
+    return sz;
+}
+
 std::vector<std::string> OutputArgs::extensions() const {
     std::vector<std::string> e;
     if (png) e.push_back("png");
@@ -65,9 +93,8 @@ void add_output_options(CLI::App& cmd, OutputArgs& args) {
         ->check(CLI::Validator([](std::string& s) { return parse_formats(s, nullptr); }, "png|svg|pdf,.."))
         ->capture_default_str();
     cmd.add_option("--scale", args.scale,
-                   "device pixel ratio: image pixels per logical unit, in [" + pretty(kMinScale) + ", " +
-                       pretty(kMaxScale) +
-                       "]; lengths are logical, the page is --size / --scale (--size 2560x1600 --scale 2 is "
+                   "device pixel ratio: image pixels per logical unit, in " + scale_range_text() +
+                       "; lengths are logical, the page is --size / --scale (--size 2560x1600 --scale 2 is "
                        "the 1280x800 picture at twice the resolution)")
         ->check(number_in({kMinScale, kMaxScale}))
         ->capture_default_str();

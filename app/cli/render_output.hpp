@@ -20,6 +20,19 @@ inline constexpr double kMinScale = 0.25, kMaxScale = 8;
 // The logical page (--size / --scale) the figure layout needs at least, and at most.
 inline constexpr int kMinPageW = 320, kMinPageH = 240, kMaxPageW = 7680, kMaxPageH = 4320;
 
+// An image size in pixels, --size WxH (render and gui).
+inline constexpr int kMinSizeW = 320, kMinSizeH = 240, kMaxSizeW = 7680, kMaxSizeH = 4320;
+struct PixelSize {
+    int w = 1280, h = 800;
+};
+// Checks "WxH" with W in [kMinSizeW, kMaxSizeW] and H in [kMinSizeH, kMaxSizeH].
+CLI::Validator size_spec();
+// A size that passed size_spec().
+PixelSize parse_size(const std::string& s);
+
+// "[0.25, 8]": the allowed --scale, for help texts.
+std::string scale_range_text();
+
 struct OutputArgs {
     std::string format = "png";
     double scale = 1;

@@ -2,6 +2,9 @@
 
 #include "figure_painter.hpp"
 
+#include "fv/atomic_file.hpp"
+#include "fv/gfx/png.hpp"
+
 namespace fv::app {
 namespace {
 
@@ -14,25 +17,35 @@ gfx::FontSetOptions font_options(float ratio) {
 } // namespace
 
 RenderSession::RenderSession(const gfx::ContextOptions& options)
-    : ctx_(gfx::create_context(options)), fonts_(font_options(ctx_->pixel_ratio())), imgui_(ctx_->gl()),
+    : owned_(gfx::create_context(options)), ctx_(owned_.get()), ratio_(ctx_->pixel_ratio()),
+      fonts_(font_options(ratio_)), imgui_(ctx_->gl()),
       canvas_((imgui_.upload_font_atlas(fonts_.atlas()), ctx_->gl()), fonts_, imgui_) {}
 
+RenderSession::RenderSession(gfx::GpuContext& context, float pixel_ratio)
+    : ctx_(&context), ratio_(pixel_ratio), fonts_(font_options(ratio_)), imgui_(ctx_->gl()),
+      canvas_((imgui_.upload_font_atlas(fonts_.atlas()), ctx_->gl()), fonts_, imgui_) {}
+
+std::string RenderSession::save_png(const std::string& path) const {
+    const auto png = gfx::encode_png(ctx_->read_pixels());
+    return write_file_atomic(path, std::string(reinterpret_cast<const char*>(png.data()), png.size()));
+}
+
 gfx::Vec2 RenderSession::logical_page() const {
-    const float ratio = ctx_->pixel_ratio();
+    const float ratio = ratio_;
     const gfx::Size fb = ctx_->framebuffer_size();
     return {static_cast<float>(fb.width) / ratio, static_cast<float>(fb.height) / ratio};
 }
 
 gfx::DisplayList RenderSession::record_figure(const FigureData& fig) {
     const gfx::Vec2 logical = logical_page();
-    canvas_.begin(logical, ctx_->pixel_ratio(), gfx::colors::white);
+    canvas_.begin(logical, ratio_, gfx::colors::white);
     paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
     canvas_.end_recording();
     return canvas_.display_list();
 }
 
 gfx::Image RenderSession::render_figure(const FigureData& fig) {
-    const float ratio = ctx_->pixel_ratio();
+    const float ratio = ratio_;
     const gfx::Vec2 logical = logical_page();
     // One frame: the canvas keeps no state between frames (an ImGui context, which lays some things out
     // only on its second frame, is not involved).

@@ -10,6 +10,7 @@
 #include "fv/gfx/imgui_renderer.hpp"
 
 #include <memory>
+#include <string>
 
 namespace fv::app {
 
@@ -17,8 +18,12 @@ class RenderSession {
   public:
     // Throws std::runtime_error with a one-line reason if no context can be made.
     explicit RenderSession(const gfx::ContextOptions& options);
+    // Draws into a context someone else owns (the app's platform), at pixel_ratio framebuffer pixels per
+    // logical unit; the context outlives the session.
+    RenderSession(gfx::GpuContext& context, float pixel_ratio);
 
     gfx::GpuContext& context() { return *ctx_; }
+    float pixel_ratio() const { return ratio_; }
     gfx::Canvas& canvas() { return canvas_; }
     gfx::FontSet& fonts() { return fonts_; }
     gfx::ImGuiRenderer& imgui() { return imgui_; }
@@ -31,9 +36,14 @@ class RenderSession {
     gfx::DisplayList record_figure(const FigureData& fig);
     // The logical page: framebuffer / pixel ratio.
     gfx::Vec2 logical_page() const;
+    // The screenshot: the frame drawn so far (before present) as a PNG at path, written atomically
+    // (fv/atomic_file.hpp). Returns "" or a one-line error.
+    std::string save_png(const std::string& path) const;
 
   private:
-    std::unique_ptr<gfx::GpuContext> ctx_;
+    std::unique_ptr<gfx::GpuContext> owned_;
+    gfx::GpuContext* ctx_;
+    float ratio_;
     gfx::FontSet fonts_;
     gfx::ImGuiRenderer imgui_;
     gfx::Canvas canvas_;

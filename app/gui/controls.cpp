@@ -1,6 +1,7 @@
 #include "controls.hpp"
 
 #include "fv/figures.hpp"
+#include "fv/format.hpp"
 #include "fv/param_ranges.hpp"
 
 #include <imgui.h>
@@ -139,8 +140,9 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         readout("F_x, last period mean", "%.4f", sim.last_period_mean().x());
     ImGui::Separator();
     if (curves) {
-        ImGui::Text("Steady state%s  r_x %.5f   r_y %.5f", busy ? "…" : "", curves->current.rx,
-                    curves->current.ry);
+        ImGui::Text("Steady state%s  r_x %s   r_y %s", busy ? "…" : "",
+                    format_number("%.5f", curves->current.rx).c_str(),
+                    format_number("%.5f", curves->current.ry).c_str());
         // Values the solver does not vouch for get a badge beside them (on the next line if it does not fit).
         if (const SteadyStatus st = shown_status(curves->current); !ok(st)) {
             char badge[64];
@@ -156,11 +158,17 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         if (curves->model_failed > 0)
             ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.1f, 1.0f), "r_x(ζ): %d points failed, not drawn",
                                curves->model_failed);
-        if (curves->request.model == Model::dahl)
-            ImGui::Text(curves->current.status == SteadyStatus::converged
-                            ? "reached in %d periods, error est. %.1e"
-                            : "NOT reached in %d periods, error est. %.1e",
-                        curves->current.periods, curves->current.error_estimate);
+        // What the search did (as `frictionviz ratio` says it), not a claim about how fast it converged.
+        if (curves->request.model == Model::dahl) {
+            const SteadyResult& r = curves->current;
+            ImGui::Text("search: %d periods, %d Newton updates", r.periods, r.newton_steps);
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("The steady state is the fixed point of the period map, found by Newton's "
+                                  "method (%s); %ld stuck periods skipped in closed form.",
+                                  r.on_circle ? "on the angle of the lag on the circle" : "in the plane",
+                                  r.periods_skipped);
+            ImGui::Text("error estimate %.1e", r.error_estimate);
+        }
     } else {
         ImGui::TextUnformatted("Steady state (computing…)");
     }

@@ -1,4 +1,5 @@
-// The interactive app: one loop for the window and for headless runs (scripted tests, benchmarks).
+// The interactive app: one loop for every platform (platform.hpp): the window, headless runs (scripted tests,
+// screenshots, benchmarks).
 #pragma once
 
 #include "fv/measurements.hpp"
@@ -10,8 +11,9 @@
 namespace fv::app {
 
 struct GuiOptions {
-    bool headless = false; // draw into an OSMesa buffer instead of a window (same pixels)
-    int width = 1280, height = 800;
+    std::string platform = "auto"; // make_platform(): window, headless or auto
+    int width = 0, height = 0;     // framebuffer pixels; 0: the platform's default (1280 x 800 logical)
+    float scale = 0;               // pixels per logical unit; 0: the platform's (monitor content scale)
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
     // The vibration, for physical units beside zeta and r_disp: the paper's Littmann experiment (Sec. 4), 0.7
@@ -24,7 +26,8 @@ struct GuiOptions {
     std::optional<MeasurementSet> data; // measured r_x(zeta) to show from the start, read with A and f above
 };
 
-// Returns the process exit code. Throws std::runtime_error (one line) when no context can be made.
+// Returns the process exit code. Throws std::invalid_argument for an unknown platform and
+// std::runtime_error (one line) when no context can be made.
 int run_gui(const GuiOptions& options);
 
 } // namespace fv::app

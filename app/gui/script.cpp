@@ -142,4 +142,9 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
     return e;
 }
 
+Params bench_params(Params p, int frame) {
+    p.zeta = 0.1 + 0.8 * (0.5 + 0.5 * std::sin(frame * 0.05));
+    return p;
+}
+
 } // namespace fv::app

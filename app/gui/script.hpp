@@ -24,4 +24,8 @@ Script load_script(const std::string& path);
 // The edits of `frame`, given the state they modify.
 UiEdits script_edits(const Script& s, int frame, const UiState& ui);
 
+// The benchmark's edit (gui --bench): zeta dragged back and forth every frame, the worst case for the UI
+// thread (the simulation restarts, the r_x curves are asked for again).
+Params bench_params(Params p, int frame);
+
 } // namespace fv::app

@@ -169,7 +169,7 @@ TEST_CASE("CLI reliability: messages name what is allowed", "[reliability]") {
         CHECK_THAT(fig.err, Catch::Contains(id));
     // Without a display, the window's message names the headless way.
     const std::string cmd =
-        "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " gui --frames 1 2>&1";
+        "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(FV_EXE) + " gui --platform window --frames 1 2>&1";
     FILE* p = ::popen(cmd.c_str(), "r");
     std::string err;
     char buf[512];

@@ -8,6 +8,8 @@
 #include "fv/gfx/compare.hpp"
 #include "fv/gfx/png.hpp"
 
+#include "../tools/image_files.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -61,30 +63,9 @@ Run render(const std::string& args) {
     return sh(std::string(FV_EXE) + " render " + args);
 }
 
-fv::gfx::Image load_png(const std::string& path) {
-    const std::string bytes = slurp(path);
-    REQUIRE_FALSE(bytes.empty());
-    return fv::gfx::decode_png(reinterpret_cast<const unsigned char*>(bytes.data()), bytes.size());
-}
-
-void write_png(const std::string& path, const fv::gfx::Image& img) {
-    const auto bytes = fv::gfx::encode_png(img);
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-}
-
-// Mean of each 2x2 block.
-fv::gfx::Image half(const fv::gfx::Image& a) {
-    fv::gfx::Image h(a.width / 2, a.height / 2);
-    for (int y = 0; y < h.height; ++y)
-        for (int x = 0; x < h.width; ++x)
-            for (int c = 0; c < 4; ++c) {
-                const int s = a.pixel(2 * x, 2 * y)[c] + a.pixel(2 * x + 1, 2 * y)[c] +
-                              a.pixel(2 * x, 2 * y + 1)[c] + a.pixel(2 * x + 1, 2 * y + 1)[c];
-                h.pixel(x, y)[c] = static_cast<std::uint8_t>((s + 2) / 4);
-            }
-    return h;
-}
+using fv::test::half;
+using fv::test::load_png;
+using fv::test::write_png;
 
 int count_files(const std::string& dir) {
     int n = 0;

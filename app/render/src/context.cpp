@@ -33,7 +33,8 @@ Image GpuContext::read_pixels() const {
 std::unique_ptr<GpuContext> create_context(const ContextOptions& options) {
     switch (options.backend) {
     case Backend::Window:
-        return std::make_unique<WindowContext>(options.width, options.height, options.title, options.visible);
+        return std::make_unique<WindowContext>(
+            WindowOptions{options.width, options.height, options.title, options.visible, true});
     case Backend::Headless:
         break;
     }

@@ -29,7 +29,7 @@ bool env_set(const char* name) {
 
 } // namespace
 
-WindowContext::WindowContext(int width, int height, const std::string& title, bool visible) {
+WindowContext::WindowContext(const WindowOptions& o) {
     if (!env_set("DISPLAY") && !env_set("WAYLAND_DISPLAY"))
         throw std::runtime_error("no display (neither DISPLAY nor WAYLAND_DISPLAY is set)");
     glfwSetErrorCallback(&on_glfw_error);
@@ -41,10 +41,10 @@ WindowContext::WindowContext(int width, int height, const std::string& title, bo
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE); // Window size follows the monitor's content scale.
-    glfwWindowHint(GLFW_VISIBLE, visible ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, o.scale_to_monitor ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_VISIBLE, o.visible ? GLFW_TRUE : GLFW_FALSE);
     glfwWindowHint(GLFW_SAMPLES, 0); // Our primitives antialias themselves; MSAA would change pixels.
-    window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    window_ = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
     if (!window_) {
         if (--g_glfw_users == 0) glfwTerminate();
         throw std::runtime_error("could not open a GL 3.3 core window: " + g_last_glfw_error);
@@ -86,6 +86,11 @@ void WindowContext::make_current() {
 }
 void WindowContext::present() {
     glfwSwapBuffers(window_);
+}
+float WindowContext::content_scale() const {
+    float x = 1, y = 1;
+    glfwGetWindowContentScale(window_, &x, &y);
+    return x > 0 ? x : 1.0f;
 }
 bool WindowContext::should_close() const {
     return glfwWindowShouldClose(window_) != 0;

@@ -80,11 +80,20 @@ class HeadlessContext final : public GpuContext {
     float scale_;
 };
 
+struct WindowOptions {
+    int width = 1280, height = 800; ///< Window size in screen units (see scale_to_monitor).
+    std::string title = "frictionviz";
+    bool visible = true;
+    /// true: the size is in logical units, grown by the monitor's content scale (GLFW_SCALE_TO_MONITOR);
+    /// false: exactly the size asked (pixels on X11).
+    bool scale_to_monitor = true;
+};
+
 /// GLFW 3.3 window with a core forward-compatible 3.3 context. HiDPI aware: the framebuffer may
 /// be larger than the window. Throws std::runtime_error if there is no display or no context.
 class WindowContext final : public GpuContext {
   public:
-    WindowContext(int width, int height, const std::string& title, bool visible);
+    explicit WindowContext(const WindowOptions& options);
     ~WindowContext() override;
     Size framebuffer_size() const override;
     Size logical_size() const override;
@@ -92,6 +101,8 @@ class WindowContext final : public GpuContext {
     void present() override;
     std::string describe() const override;
 
+    /// The monitor's content scale (glfwGetWindowContentScale, x): 2 on a HiDPI screen, 1 under Xvfb.
+    float content_scale() const;
     bool should_close() const;
     void poll_events();
     GLFWwindow* native() const { return window_; } ///< For the ImGui GLFW input backend.

@@ -1,0 +1,39 @@
+#include "dashboard_input.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fv::app {
+
+// Wheel zooms, left-drag pans (and stops following the drift), double-click resets the view. Over the force
+// plot a tooltip reads the values under the cursor.
+void handle_dashboard_mouse(ViewState& view, const LiveSim& sim, const DashboardTransforms& t) {
+    ImGuiIO& io = ImGui::GetIO();
+    if (io.WantCaptureMouse) return;
+    const gfx::Vec2 m{io.MousePos.x, io.MousePos.y};
+    const auto& tv = t.top_view;
+    if (tv.area.contains(m)) {
+        if (io.MouseWheel != 0) view.zoom = std::clamp(view.zoom * std::pow(0.85, io.MouseWheel), 0.05, 20.0);
+        if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
+            const double sx = (tv.x1 - tv.x0) / tv.area.width(), sy = (tv.y1 - tv.y0) / tv.area.height();
+            view.pan += Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy);
+        }
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
+            view = ViewState{1, {0, 0}, true, view.trail_periods};
+    }
+    const auto& fp = t.force;
+    if (fp.area.contains(m) && !sim.history().empty()) {
+        const double tau = fp.x0 + (m.x - fp.area.x0) / fp.area.width() * (fp.x1 - fp.x0);
+        const auto& h = sim.history();
+        auto it = std::lower_bound(h.begin(), h.end(), tau,
+                                   [](const LiveSample& s, double v) { return s.tau < v; });
+        if (it != h.end()) {
+            ImGui::SetTooltip("τ = %.3f\nF_x = %+.4f\nF_y = %+.4f\n|F| = %.4f", it->tau, it->F.x(), it->F.y(),
+                              it->F.norm());
+        }
+    }
+}
+
+} // namespace fv::app

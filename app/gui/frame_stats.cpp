@@ -1,0 +1,34 @@
+#include "frame_stats.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace fv::app {
+
+void FrameStats::record(double total_ms, double sim_ui_ms, double layout_ms, double gl_ms) {
+    total_.push_back(total_ms);
+    phase_[0] += sim_ui_ms;
+    phase_[1] += layout_ms;
+    phase_[2] += gl_ms;
+}
+
+void FrameStats::print(int width, int height, float scale, const std::string& backend) const {
+    if (total_.empty()) return;
+    std::vector<double> v(total_.begin() + std::min<std::size_t>(5, total_.size() - 1), total_.end());
+    std::sort(v.begin(), v.end());
+    auto at = [&](double q) {
+        return v[std::min(v.size() - 1,
+                          static_cast<std::size_t>(q * static_cast<double>(v.size() - 1) + 0.5))];
+    };
+    std::printf(
+        "frame time over %zu frames at %dx%d scale %g (%s, a slider changing every frame): p50 %.1f ms, "
+        "p95 %.1f ms, p99 %.1f ms, max %.1f ms\n",
+        v.size(), width, height, static_cast<double>(scale), backend.c_str(), at(0.5), at(0.95), at(0.99),
+        v.back());
+    const double n = static_cast<double>(total_.size());
+    std::printf(
+        "mean per frame: simulation + controls %.1f ms, dashboard layout %.1f ms, GL drawing %.1f ms\n",
+        phase_[0] / n, phase_[1] / n, phase_[2] / n);
+}
+
+} // namespace fv::app

@@ -1,0 +1,74 @@
+// Where the app's frames go and where its input comes from (MuJoCo's PlatformUIAdapter, polyscope's backends
+// by name). The loop in gui_app.cpp sees only this interface; the window adapter (platform_window.cpp, with
+// the GLFW context in the render layer) is the only code that calls GLFW or an ImGui platform backend. A web
+// adapter will be a third implementation.
+#pragma once
+
+#include "fv/gfx/context.hpp"
+#include "fv/gfx/types.hpp"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace fv::app {
+
+struct PlatformOptions {
+    // Framebuffer pixels. 0: the platform's default (1280 x 800 logical units at the pixel ratio).
+    int width = 0, height = 0;
+    // Framebuffer pixels per logical unit (UI and drawing scale). 0: the platform's own (the monitor's
+    // content scale in a window, 1 headless).
+    float scale = 0;
+    std::string title = "frictionviz";
+};
+
+// What happened since the last frame.
+struct PlatformEvents {
+    bool close = false;               // the user closed the window
+    std::vector<std::string> dropped; // files dropped onto the window, oldest first
+};
+
+class Platform {
+  public:
+    virtual ~Platform() = default;
+    Platform(const Platform&) = delete;
+    Platform& operator=(const Platform&) = delete;
+
+    // "window" or "headless": what make_platform() resolved the name to.
+    virtual std::string_view name() const = 0;
+    virtual gfx::GpuContext& context() = 0;
+    // Framebuffer pixels per logical unit this frame (fonts, lines, the ImGui scale).
+    virtual float pixel_ratio() const = 0;
+    // Live input and wall-clock time. A platform that is not interactive runs on a fixed 1/60 s per frame
+    // with no mouse, so its frames are reproducible.
+    virtual bool interactive() const = 0;
+
+    // Connects the current ImGui context to the platform's input; disconnect() before it is destroyed.
+    virtual void connect_imgui() = 0;
+    virtual void disconnect_imgui() = 0;
+    // Pumps the event queue.
+    virtual PlatformEvents poll() = 0;
+    // Feeds ImGui's IO for the next frame: display size (the logical page), framebuffer scale, and the
+    // mouse (in logical units), keys and time where there is input.
+    virtual void imgui_new_frame(gfx::Vec2 logical) = 0;
+    // Shows the frame (swap buffers; nothing headless).
+    virtual void present() = 0;
+
+  protected:
+    Platform() = default;
+};
+
+// The names make_platform() takes: window, headless, auto (a window when a display is there, else headless).
+const std::vector<std::string_view>& platform_names();
+// The one place a platform is chosen. Throws std::invalid_argument for an unknown name (the message lists
+// the names) and std::runtime_error (one line) when the platform cannot start (no display, no GL).
+std::unique_ptr<Platform> make_platform(std::string_view name, const PlatformOptions& options);
+// What "auto" picks here: "window" when DISPLAY or WAYLAND_DISPLAY is set, else "headless".
+std::string_view resolve_platform_name(std::string_view name);
+
+// The two adapters (platform_window.cpp, platform_headless.cpp); use make_platform().
+std::unique_ptr<Platform> make_window_platform(const PlatformOptions& options);
+std::unique_ptr<Platform> make_headless_platform(const PlatformOptions& options);
+
+} // namespace fv::app
