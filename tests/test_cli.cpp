@@ -412,8 +412,9 @@ TEST_CASE("CLI registry: render --list prints every figure once; --figure and it
     std::vector<std::string> sorted = ids;
     std::sort(sorted.begin(), sorted.end());
     CHECK(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()); // unique
-    for (const char* id : {"fig5", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13", "fig14a", "fig14b",
-                           "fig15", "fig16", "fig17", "fig18", "fig19", "scene", "map"})
+    for (const char* id :
+         {"fig4",   "fig5",   "fig6",  "fig8",  "fig9",  "fig10", "fig11", "fig12", "fig13", "fig14",
+          "fig14a", "fig14b", "fig15", "fig16", "fig17", "fig18", "fig19", "scene", "map",   "ry"})
         CHECK(std::count(ids.begin(), ids.end(), id) == 1);
     // The unknown-id message and --help name exactly the listed ids (and "all").
     const std::string dir = scratch_dir() + "/registry-unknown";

@@ -18,8 +18,8 @@ TEST_CASE("Every paper figure is defined once, with a unique id", "[figures]") {
         CHECK_FALSE(f.title.empty());
         CHECK_FALSE(f.caption.empty());
     }
-    for (const char* id : {"fig5", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13", "fig14a", "fig14b",
-                           "fig15", "fig16", "fig17", "fig18"})
+    for (const char* id : {"fig5", "fig6", "fig8", "fig9", "fig10", "fig11", "fig12", "fig13", "fig14",
+                           "fig14a", "fig14b", "fig15", "fig16", "fig17", "fig18"})
         CHECK(ids.count(id) == 1);
     CHECK(fv::find_figure("fig99") == nullptr);
 }
@@ -30,9 +30,9 @@ TEST_CASE("Registry: every figure registered once, in paper order, each defined 
     std::vector<std::string> ids;
     for (const fv::FigureEntry& e : reg) ids.push_back(e.id);
     // Paper figures by number, then the others by id.
-    const std::vector<std::string> expected{"fig5",  "fig8",   "fig9",   "fig10", "fig11", "fig12",
-                                            "fig13", "fig14a", "fig14b", "fig15", "fig16", "fig17",
-                                            "fig18", "fig19",  "map",    "scene"};
+    const std::vector<std::string> expected{"fig4",  "fig5",  "fig6",  "fig8",   "fig9",   "fig10", "fig11",
+                                            "fig12", "fig13", "fig14", "fig14a", "fig14b", "fig15", "fig16",
+                                            "fig17", "fig18", "fig19", "map",    "ry",     "scene"};
     CHECK(ids == expected);
     std::string list;
     for (const fv::FigureEntry& e : reg) {
@@ -161,4 +161,29 @@ TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zet
     // The best-angle table: a header and one row per zeta.
     REQUIRE(d.tables.size() == 2);
     CHECK(std::count(d.tables[1].text.begin(), d.tables[1].text.end(), '\n') == 6);
+}
+
+TEST_CASE("Where the model disagrees with the paper's text (README, captions of Figs. 10-13)", "[figures]") {
+    // Against the closed forms of the rigid model (Eqs. 10, 11), and i = 1 against i = 0.
+    const double deg = fv::kPi / 180;
+    auto rx = [](double zeta, double theta, double rdisp, double i) {
+        const fv::SteadyResult r = fv::steady_ratio(fv::Model::dahl, {zeta, theta, rdisp, i});
+        REQUIRE(fv::ok(r.status));
+        return r.rx;
+    };
+    // theta = 90 deg: i = 1 lies below the rigid curve at small zeta (0.1887 against 0.2344) ...
+    CHECK(rx(0.1, 90 * deg, 2, 1) == Approx(0.1887).margin(1e-4));
+    CHECK(fv::rigid_rx_perpendicular(0.1) == Approx(0.2344).margin(1e-4));
+    // ... and r_x grows with r_disp there; i = 0 dips below the rigid curve at zeta = 0.02, r_disp = 5.
+    CHECK(rx(0.02, 90 * deg, 1, 1) == Approx(0.0332).margin(1e-4));
+    CHECK(rx(0.02, 90 * deg, 20, 1) == Approx(0.0477).margin(1e-4));
+    CHECK(rx(0.02, 90 * deg, 5, 0) == Approx(0.0586).margin(1e-4));
+    CHECK(fv::rigid_rx_perpendicular(0.02) == Approx(0.0675).margin(1e-4));
+    // theta = 0: i = 1 lies above i = 0 at small zeta for r_disp = 2 (0.0886 against 0.0789); at 90 deg
+    // below.
+    CHECK(rx(0.1, 0, 2, 1) == Approx(0.0886).margin(1e-4));
+    CHECK(rx(0.1, 0, 2, 0) == Approx(0.0789).margin(1e-4));
+    CHECK(rx(0.1, 90 * deg, 2, 0) == Approx(0.3235).margin(1e-4));
+    for (const char* id : {"fig10", "fig11", "fig12", "fig13"})
+        CHECK(fv::find_figure(id)->caption.find("Unlike the paper's reading") != std::string::npos);
 }

@@ -89,6 +89,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     plot.y_axis.min = panel.y_min;
     plot.y_axis.max = panel.y_max;
     plot.equal_aspect = panel.equal_aspect;
+    plot.top_scale = panel.top_scale;
+    plot.top_title = panel.top_title;
     if (panel.legend == "none")
         plot.legend = gfx::LegendPosition::None;
     else if (panel.legend == "top-left")
@@ -111,7 +113,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     for (std::size_t k = 0; k < panel.series.size(); ++k) {
         const SeriesData& s = panel.series[k];
         gfx::SeriesStyle st;
-        st.color = ink_color(s.ink, k).with_alpha(s.opacity);
+        st.color =
+            ink_color(s.ink, s.palette >= 0 ? static_cast<std::size_t>(s.palette) : k).with_alpha(s.opacity);
         st.line_width = s.width;
         st.line = line_style(s.dash);
         st.marker = marker_shape(s.mark);

@@ -1,5 +1,7 @@
 #include "fv/figure_data.hpp"
 
+#include "figure_panels.hpp"
+
 #include "fv/format.hpp"
 #include "fv/rigid.hpp"
 
@@ -23,12 +25,14 @@ const char* kRxTitle = "friction ratio r_{x}";
 PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int threads) {
     PanelData panel;
     panel.x_title = kZetaTitle;
-    panel.y_title = kRxTitle;
+    panel.y_title = spec.side_force ? "side-force ratio r_{y}" : kRxTitle;
     const std::vector<double>& zetas = spec.zetas;
     panel.x_min = std::min(0.0, zetas.front());
     panel.x_max = zetas.back();
-    panel.y_min = 0;
-    panel.y_max = 1.05;
+    if (!spec.side_force) { // r_y: fitted to the curves
+        panel.y_min = 0;
+        panel.y_max = 1.05;
+    }
     bool all_rigid = true;
     for (const auto& c : spec.curves) all_rigid = all_rigid && c.model == Model::rigid;
     // One flat list of points over all curves keeps both cores busy even when one curve is slow.
@@ -54,13 +58,21 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
         const Curve& c = spec.curves[ci];
         SeriesData s;
         s.label = curve_label(c, all_rigid);
-        if (c.model == Model::rigid && !all_rigid) {
+        if (spec.side_force) {
+            // One colour per angle, the model by the dash: "θ = 30°, Dahl" solid, "θ = 30°, rigid" dashed.
+            s.label = curve_label({Model::rigid, c.theta, 0, 0}, true) +
+                      (c.model == Model::rigid ? ", rigid" : ", Dahl");
+            s.palette = 0;
+            for (std::size_t cj = 0; cj < ci; ++cj)
+                if (spec.curves[cj].model == c.model) ++s.palette;
+            if (c.model == Model::rigid) s.dash = Dash::dashed;
+        } else if (c.model == Model::rigid && !all_rigid) {
             s.ink = Ink::rigid;
             s.dash = Dash::dashed;
         }
         for (std::size_t j = 0; j < zetas.size(); ++j, ++k) {
             s.x.push_back(pts[k].params.zeta);
-            s.y.push_back(pts[k].result.rx);
+            s.y.push_back(spec.side_force ? pts[k].result.ry : pts[k].result.rx);
         }
         panel.series.push_back(std::move(s));
     }
@@ -297,6 +309,38 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
     return panel;
 }
 
+// Fig. 14: one top view per exponent on shared axes (the frame of all panels), titled (a), (b), ...; one
+// trace table each ("", "-b", ...). only_panel keeps one of them, on the same axes.
+void period_panels(const FigureSpec& spec, FigureData& fig) {
+    std::vector<PanelData> panels;
+    std::vector<TableData> tables;
+    for (std::size_t k = 0; k < spec.panel_i.size(); ++k) {
+        Params q = spec.params;
+        q.i = spec.panel_i[k];
+        const SteadyResult r = steady_trace(q, spec.steps_per_period);
+        PanelData panel = top_view(q, r.period, nullptr);
+        const std::string tag(1, static_cast<char>('a' + k));
+        panel.title = "(" + tag + ") i = " + format_number("%g", q.i) +
+                      (q.i == 0 ? " (stiction, Eq. 27)" : (q.i == 1 ? " (no stiction, Eq. 17)" : ""));
+        panels.push_back(std::move(panel));
+        tables.push_back({k == 0 ? "" : "-" + tag, {}, r.period, "", r.status});
+    }
+    for (PanelData& p : panels)
+        for (const PanelData& o : panels) {
+            p.x_min = std::min(*p.x_min, *o.x_min), p.x_max = std::max(*p.x_max, *o.x_max);
+            p.y_min = std::min(*p.y_min, *o.y_min), p.y_max = std::max(*p.y_max, *o.y_max);
+        }
+    if (spec.only_panel >= 0) {
+        const auto k = static_cast<std::size_t>(spec.only_panel);
+        panels = {std::move(panels.at(k))};
+        panels[0].title.clear(); // the figure's title says which
+        tables = {std::move(tables.at(k))};
+        tables[0].suffix.clear();
+    }
+    fig.panels = std::move(panels);
+    fig.tables = std::move(tables);
+}
+
 } // namespace
 
 FigureData compute_figure(const FigureSpec& spec, int threads) {
@@ -321,6 +365,10 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
     }
     case FigureKind::period_view:
     case FigureKind::period_force: {
+        if (spec.kind == FigureKind::period_view && !spec.panel_i.empty()) {
+            period_panels(spec, fig);
+            break;
+        }
         const SteadyResult r = steady_trace(p, spec.steps_per_period);
         SteadyStatus status = r.status;
         if (spec.kind == FigureKind::period_force) {
@@ -362,6 +410,12 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         fig.tables.push_back(std::move(ratios));
         break;
     }
+    case FigureKind::mechanism:
+        mechanism_panels(spec, fig);
+        break;
+    case FigureKind::dahl_curves:
+        dahl_curve_panels(spec, fig);
+        break;
     case FigureKind::measurements:
         break; // above
     }

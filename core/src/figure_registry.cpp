@@ -112,9 +112,13 @@ std::string ratio_models(const FigureSpec& spec) {
 std::string ratio_solvers(const FigureSpec& spec) {
     bool dahl = false, rigid = false;
     for (const Curve& c : spec.curves) (c.model == Model::rigid ? rigid : dahl) = true;
+    const std::string r = spec.side_force ? "r_y" : "r_x";
     std::string s;
-    if (dahl) s += "Dahl r_x from " + ode_solver();
-    if (rigid) s += std::string(s.empty() ? "" : "; ") + "rigid r_x by " + kQuadrature;
+    if (dahl) s += "Dahl " + r + " from " + ode_solver();
+    if (rigid)
+        s += std::string(s.empty() ? "" : "; ") + "rigid " + r + " by " +
+             (spec.side_force ? "adaptive Gauss–Kronrod quadrature of the mean of Eq. (4), tolerance 1e-13"
+                              : kQuadrature);
     return s;
 }
 
@@ -204,6 +208,18 @@ std::string figure_parameters(const FigureSpec& spec) {
             "; the step drawn is the one of that period where the spring turns most";
         break;
     case FigureKind::period_view:
+        if (!spec.panel_i.empty() && spec.only_panel < 0) {
+            std::string is, tags;
+            for (std::size_t k = 0; k < spec.panel_i.size(); ++k) {
+                is += (k ? ", " : "") + number(spec.panel_i[k]);
+                tags += (k ? ", " : "") + std::string(1, static_cast<char>('a' + k));
+            }
+            s = "Dahl model, ζ = " + number(p.zeta) + ", θ = " + degrees(p.theta) +
+                ", r_disp = " + number(p.rdisp) + ", i = " + is + " (panels " + tags + ", on shared axes); " +
+                period_source(spec.steps_per_period);
+            break;
+        }
+        [[fallthrough]];
     case FigureKind::period_force:
         s = "Dahl model, " + params_text(p) +
             (spec.overlay_other_i ? " (and i = " + number(p.i == 0 ? 1 : 0) + ", overlaid)" : "") + "; " +
@@ -223,6 +239,24 @@ std::string figure_parameters(const FigureSpec& spec) {
             "model by " +
             kQuadrature;
         break;
+    case FigureKind::mechanism:
+        s = "rigid model (no asperity: r_disp → ∞, i does not apply), ζ = " + number(p.zeta) +
+            ", θ = " + degrees(p.theta) +
+            "; velocity and friction from Eqs. (1)–(4) at 1024 evenly spaced instants of one period, arrows "
+            "at "
+            "τ = kπ/4; r_x (and r_y) by " +
+            kQuadrature;
+        break;
+    case FigureKind::dahl_curves: {
+        std::string is;
+        for (double i : spec.exponents) is += (is.empty() ? "" : ", ") + number(i);
+        s = "Dahl model's law alone, Eq. (12), i = " + is +
+            ", in one dimension (ζ, θ and r_disp do not apply: lengths in units of z_ss, forces in F_c); "
+            "each curve is the model's update (Eqs. 17–27) stepped along x in steps of 1e-4 z_ss, drawn "
+            "every 0.01 z_ss; no solver tolerance: the first-order steps stay within 2e-4 F_c of the law's "
+            "closed form (docs/model.md, tested)";
+        break;
+    }
     case FigureKind::measurements:
         s = spec.parameters;
         break;

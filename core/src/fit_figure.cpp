@@ -11,8 +11,9 @@ namespace fv {
 
 std::vector<SeriesData> measured_series(const MeasurementSet& data, std::optional<double> theta_deg) {
     SeriesData here, other;
-    here.label = "measured" + std::string(data.has_sigma ? " (± σ)" : "");
-    other.label = "measured at another θ";
+    const std::string what = data.synthetic ? "synthetic example data" : "measured";
+    here.label = what + (data.has_sigma ? " (± σ)" : "");
+    other.label = what + " at another θ";
     for (SeriesData* s : {&here, &other}) {
         s->ink = Ink::black;
         s->mark = Mark::circle;
@@ -107,8 +108,9 @@ FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt,
     for (std::size_t a = 0; a < angles.size(); ++a)
         angle_list +=
             (a == 0 ? "" : (a + 1 == angles.size() ? " and " : ", ")) + format_number("%g", angles[a]) + "°";
-    fig.title = "Fig. 19: model vs. measurements, θ = " + angle_list +
-                (angles.size() > 1 ? " (one r_{disp}, i fitted to all points)" : "");
+    fig.title = "Fig. 19: model vs. " +
+                std::string(data.synthetic ? "synthetic example data" : "measurements") +
+                ", θ = " + angle_list + (angles.size() > 1 ? " (one r_{disp}, i fitted to all points)" : "");
 
     // Table: each measured point with both models and residuals.
     TableData t;

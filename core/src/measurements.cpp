@@ -6,6 +6,7 @@
 #include "fv/units.hpp"
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -216,7 +217,13 @@ MeasurementSet Parser::run() {
             fail(static_cast<int>(nul + 1), "NUL byte; allowed: a text file");
         std::size_t first = 0;
         while (first < line.size() && blank(line[first])) ++first;
-        if (first == line.size() || line[first] == '#') continue;
+        if (first == line.size()) continue;
+        if (line[first] == '#') {
+            std::string lower(line.substr(first));
+            for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+            set_.synthetic = set_.synthetic || lower.find("synthetic") != std::string::npos;
+            continue;
+        }
         if (!have_header) {
             header(line);
             have_header = true;

@@ -192,6 +192,32 @@ static std::pair<double, double> value_range(const HeatMap& h) {
     return {lo, hi};
 }
 
+// Height of the top axis (ticks, labels, title) above the data area; 0 without one.
+static float top_axis_band(const Plot& plot) {
+    if (!(plot.top_scale > 0)) return 0;
+    return std::round(kTickLength + 4 + plot.font_size * 1.2f +
+                      (plot.top_title.empty() ? 4 : (plot.font_size + 1) * 1.5f + 2));
+}
+
+// The top axis: ticks at nice values of top_scale * x, labels above them, its title above those.
+static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform& tf) {
+    const Rect& A = tf.area;
+    const double k = plot.top_scale;
+    const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
+    TextStyle ts;
+    ts.size = plot.font_size, ts.halign = HAlign::Center, ts.valign = VAlign::Bottom;
+    for (const Tick& t : linear_ticks(k * tf.x0, k * tf.x1, std::max(2, static_cast<int>(A.width() / 95)))) {
+        const float x = std::floor(tf.to_pixel(t.value / k, tf.y0).x) + 0.5f;
+        if (x < A.x0 - 0.5f || x > A.x1 + 0.5f) continue;
+        canvas.line({x, A.y0 - (t.major ? kTickLength : kTickLength * 0.6f)}, {x, A.y0}, axis);
+        if (!t.label.empty()) canvas.text({x, A.y0 - kTickLength - 3}, t.label, ts);
+    }
+    if (!plot.top_title.empty()) {
+        ts.size = plot.font_size + 1;
+        canvas.text({0.5f * (A.x0 + A.x1), A.y0 - top_axis_band(plot) + ts.size * 1.3f}, plot.top_title, ts);
+    }
+}
+
 static Layout compute_layout(const Plot& plot, const std::vector<Series>& series,
                              const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas) {
     Layout L;
@@ -203,7 +229,8 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
     PlotTransform& tf = L.tf;
     tf.log_x = plot.x_axis.log, tf.log_y = plot.y_axis.log;
     const float fs = plot.font_size, title_fs = plot.font_size + 1, head_fs = plot.font_size + 3;
-    const float top = bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f));
+    const float top =
+        bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f)) + top_axis_band(plot);
     const float bottom = bounds.y1 - std::round(kTickLength + 4 + fs * 1.2f +
                                                 (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
     // Room for the last x tick label's overhang, or for the colour bar.
@@ -378,8 +405,9 @@ void Plot::draw(Canvas& canvas) const {
     }
     if (!title.empty()) {
         tt.size = head_fs, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
-        canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0)}, title, tt);
+        canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this))}, title, tt);
     }
+    if (top_scale > 0) draw_top_axis(canvas, *this, tf);
 
     if (heatmap_) draw_colorbar(canvas, A, *heatmap_, fs, title_fs);
 

@@ -27,6 +27,7 @@ struct SeriesData {
     float width = 2;
     float opacity = 1;         // < 1: faded (older parts of a trail)
     std::vector<double> y_err; // symmetric error bars (measured data); width 0 draws markers only
+    int palette = -1;          // Ink::automatic: this palette entry (-1: the series' index)
 };
 
 struct SegmentData {
@@ -83,6 +84,9 @@ struct PanelData {
     std::vector<ArrowData> arrows;
     std::optional<HeatmapData> heatmap;
     std::string legend = "best"; // best, none, top-left, top-right, bottom-left, bottom-right
+    // A second x axis along the top: top value = top_scale * x (fig19: v_b in m/s beside zeta); 0: none.
+    double top_scale = 0;
+    std::string top_title;
 };
 
 // A table written next to the PNG: "<id><suffix>.csv".

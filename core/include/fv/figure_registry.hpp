@@ -56,7 +56,7 @@ struct RegisterFigure {
     explicit RegisterFigure(FigureEntry entry);
 };
 
-// Every registered figure: the paper's (figN, by number; fig14a before fig14b) first, then the others by id.
+// Every registered figure: the paper's (figN, by number; fig14, fig14a, fig14b) first, then the others by id.
 const std::vector<FigureEntry>& figure_registry();
 
 // nullptr if unknown.

@@ -15,7 +15,10 @@ struct FigureData;
 struct FitResult;
 
 enum class FigureKind {
-    ratio_curves, // r_x(zeta) for a family of models/parameters (Figs. 5, 10-13)
+    ratio_curves, // r_x(zeta) (or r_y(zeta): side_force) for a family of models/parameters (Figs. 5, 10-13,
+                  // ry)
+    mechanism,    // the rigid model over one period: velocity and Coulomb friction turning, F_x(tau) (Fig. 4)
+    dahl_curves,  // friction-displacement curves of the Dahl law, Eq. (12), for several i (Fig. 6)
     step_view,    // one step of the tracking scheme, top view (Fig. 8)
     period_view,  // P and T over one steady-state period, top view (Figs. 9, 14, 17)
     period_force, // F_x, F_y, |F| over one steady-state period (Figs. 15, 16, 18)
@@ -40,10 +43,18 @@ struct FigureSpec {
     // ratio_curves (and scene): the curves and the zeta values they are computed at
     std::vector<Curve> curves;
     std::vector<double> zetas;
+    bool side_force = false; // plot r_y, the mean force across v_b, instead of r_x
+    // dahl_curves: the exponents i, one curve each
+    std::vector<double> exponents;
     // step_view, period_view, period_force, scene
     Params params;
     int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
     bool overlay_other_i = false; // Fig. 17: draw i = 0 over i = 1 to show that they coincide
+    // period_view: one panel per exponent, side by side on shared axes (Fig. 14: (a) i = 1, (b) i = 0);
+    // empty: one panel at params.i. only_panel >= 0 draws that panel alone, on the same axes (fig14a,
+    // fig14b).
+    std::vector<double> panel_i;
+    int only_panel = -1;
     // map: theta from 0 to theta_max_deg in theta_count steps (zetas as above; params.rdisp, params.i)
     int theta_count = 91;
     double theta_max_deg = 90;

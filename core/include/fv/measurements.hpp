@@ -49,6 +49,9 @@ struct MeasurementSet {
     std::vector<Measurement> points;
     bool has_theta = false, has_sigma = false; // every point has it, or none does
     bool from_vb = false;                      // zeta was converted from a vb column
+    // A comment line says "synthetic" (any case), as the example files of tests/data/ do ("# SYNTHETIC DATA,
+    // not measurements"): figures then call the points synthetic example data, not measurements.
+    bool synthetic = false;
 };
 
 struct ReadOptions {

@@ -11,6 +11,9 @@
 
 namespace fv::units {
 
+// The experiment of the paper's Fig. 19 (Littmann et al., Sec. 4): 0.7 um at 60 kHz.
+inline constexpr double kLittmannAmplitudeUm = 0.7, kLittmannFrequencyKhz = 60;
+
 // Thrown for an argument that is not finite or out of its range; what() names it and the allowed range.
 struct UnitError : std::invalid_argument {
     using std::invalid_argument::invalid_argument;

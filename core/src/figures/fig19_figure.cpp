@@ -3,40 +3,62 @@
 #include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
+#include "fv/units.hpp"
 
 namespace fv {
 namespace {
 
 // Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
 // input (DataError, FitError), before anything is rendered.
+// Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
+// input (DataError, FitError), before anything is rendered. The vibration (--amplitude, --frequency; else the
+// paper's experiment, 0.7 um at 60 kHz) converts a vb column, puts v_b = zeta v_v in m/s on a top axis and
+// z_ss = A/r_disp in um into the caption.
 FigureSpec fig19(const FigureInputs& in) {
     ReadOptions ro;
     FitOptions fo;
-    ro.amplitude_um = fo.amplitude_um = in.amplitude_um;
+    ro.amplitude_um = in.amplitude_um;
     ro.frequency_khz = in.frequency_khz;
     fo.theta_deg = in.theta_deg;
+    const double amplitude = in.amplitude_um.value_or(units::kLittmannAmplitudeUm);
+    const double frequency = in.frequency_khz.value_or(units::kLittmannFrequencyKhz);
+    fo.amplitude_um = amplitude;
     const MeasurementSet data = read_measurements(in.data, ro);
     auto fit = std::make_shared<FitResult>();
     auto fig = std::make_shared<FigureData>(measurement_figure(data, fo, fit.get()));
+    const double vv = units::vibration_velocity(amplitude, frequency);
+    const std::string a_text = format_number("%g", amplitude), f_text = format_number("%g", frequency);
+    const bool paper_vibration = !in.amplitude_um || !in.frequency_khz;
+    for (PanelData& p : fig->panels) {
+        p.top_scale = vv;
+        p.top_title = "sliding velocity v_{b} [m/s], A = " + a_text + " µm, f = " + f_text + " kHz";
+    }
     FigureSpec f;
     f.id = "fig19";
     f.kind = FigureKind::measurements;
     f.title = fig->title;
     const FitCandidate& b = fit->best;
-    f.caption = "Model vs. measurements: the " + std::to_string(data.points.size()) + " points of " +
+    const std::string what =
+        data.synthetic ? "synthetic example data (made from the model, not measurements)" : "measurements";
+    f.caption = "Model vs. " + what + ": the " + std::to_string(data.points.size()) + " points of " +
                 in.data +
                 " with the rigid model and the Dahl model with i = 0 and i = 1, each at the r_disp fitted to "
                 "all points; the best fit is i = " +
                 format_number("%g", b.i) + ", r_disp = " + format_number("%.3g", b.rdisp) + " ± " +
-                format_number("%.2g", b.rdisp_sigma) + ".";
+                format_number("%.2g", b.rdisp_sigma) +
+                (b.zss_um ? " (z_ss = A/r_disp = " + format_number("%.3g", *b.zss_um) + " µm)" : "") +
+                ". The top axis is v_b = ζ v_v with v_v = 2π f A = " + format_number("%.4g", vv) + " m/s.";
     f.parameters =
         "rigid model (Eqs. 9–11, quadrature) and Dahl model with i = 0 and i = 1 at each panel's θ, "
         "r_disp fitted by least squares in ln r_disp over [0.1, 100] (" +
         std::string(b.weighted ? "weights 1/σ²" : "unweighted") +
         "), model curves at 120 evenly spaced ζ from the continuous-time solver (tolerance 1e-8)" +
         (in.theta_deg ? "; θ = " + format_number("%g", *in.theta_deg) + "° for points without one" : "") +
-        (in.amplitude_um ? "; A = " + format_number("%g", *in.amplitude_um) + " µm" : "") +
-        (in.frequency_khz ? ", f = " + format_number("%g", *in.frequency_khz) + " kHz" : "");
+        "; vibration A = " + a_text + " µm, f = " + f_text + " kHz" +
+        (paper_vibration
+             ? " (where --amplitude or --frequency is not given: the paper's experiment, Littmann "
+               "et al., 0.7 µm at 60 kHz)"
+             : "");
     f.precomputed = std::move(fig);
     f.fit = std::move(fit);
     return f;
@@ -63,7 +85,9 @@ FigureEntry fig19_entry() {
         "over the rigid curve and both fitted Dahl curves; `fig19.csv` lists each point with its angle, both "
         "models and residuals. Shown here for the **synthetic** example "
         "`tests/data/synthetic_two_angles_rdisp2_i0.csv` (made from the model with r_disp = 2, i = 0 at both "
-        "angles plus noise σ = 0.008): the fit gives r_disp = 1.97 ± 0.016 and picks i = 0.";
+        "angles plus noise σ = 0.008), labelled as such on the figure: the fit gives r_disp = 1.97 ± 0.016 "
+        "and picks i = 0. The top axis is v_b in m/s for `--amplitude` and `--frequency` (default: the "
+        "paper's experiment, 0.7 µm at 60 kHz).";
     return e;
 }
 

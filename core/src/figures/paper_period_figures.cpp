@@ -1,6 +1,6 @@
 // The paper's figures of one steady-state period: the step of the tracking scheme (Fig. 8), top views of P
-// and T (Figs. 9, 14a, 14b, 17) and the friction force (Figs. 15, 16, 18). Each registers itself
-// (figure_registry.hpp); the title of each names its parameters.
+// and T (Figs. 9, 14 with its panels 14a and 14b, 17) and the friction force (Figs. 15, 16, 18). Each
+// registers itself (figure_registry.hpp); the title of each names its parameters.
 #include "fv/figure_registry.hpp"
 
 namespace fv {
@@ -8,7 +8,7 @@ namespace {
 
 constexpr double kDeg = kPi / 180;
 
-FigureEntry period_figure(const char* id, const char* list_title, FigureKind kind, Params p,
+FigureEntry period_figure(const char* id, const std::string& list_title, FigureKind kind, Params p,
                           std::string title, std::string caption, int steps_per_period = 0,
                           bool overlay_other_i = false) {
     FigureSpec f;
@@ -44,17 +44,46 @@ const RegisterFigure register_fig9{period_figure(
     "2, "
     "i = 1 (parameters not in the paper).")};
 
-const RegisterFigure register_fig14a{period_figure(
-    "fig14a", "top view, ζ = 0.15, θ = 90°, r_disp = 2, i = 1", FigureKind::period_view, kFig14a,
-    "Fig. 14a: " + params_title(kFig14a) + " (no stiction)",
-    "r_disp = 2, ζ = 0.15, θ = 90°, i = 1: the path of P is squeezed in x and the asperity relaxes in the "
-    "tight turns.")};
+// Fig. 14 as in the paper: (a) i = 1 and (b) i = 0 side by side on shared axes. fig14a and fig14b are its
+// panels alone, on the same axes (the app's presets load their parameters).
+const char* const kFig14What[] = {
+    "i = 1: the path of P is squeezed in x and the asperity relaxes in the tight turns",
+    "i = 0 (stiction, Eq. 27): the tip sticks until the deflection reaches z_ss"};
 
-const RegisterFigure register_fig14b{period_figure(
-    "fig14b", "top view, ζ = 0.15, θ = 90°, r_disp = 2, i = 0", FigureKind::period_view, kFig14b,
-    "Fig. 14b: " + params_title(kFig14b) + " (stiction)",
-    "r_disp = 2, ζ = 0.15, θ = 90°, i = 0 (stiction, Eq. 27): the tip sticks until the deflection reaches "
-    "z_ss.")};
+FigureEntry with_panels(FigureEntry e, int only_panel) {
+    e.make = [make = e.make, only_panel](const FigureInputs& in) {
+        FigureSpec f = make(in);
+        f.panel_i = {1, 0};
+        f.only_panel = only_panel;
+        return f;
+    };
+    return e;
+}
+
+FigureEntry fig14_panel(int k) {
+    const std::string tag(1, "ab"[k]);
+    const Params& p = k == 0 ? kFig14a : kFig14b;
+    return with_panels(
+        period_figure(("fig14" + tag).c_str(),
+                      "panel (" + tag + ") of fig14 alone, i = " + (k == 0 ? "1" : "0") +
+                          " (the app's preset)",
+                      FigureKind::period_view, p,
+                      "Fig. 14" + tag + ": " + params_title(p) + (k == 0 ? " (no stiction)" : " (stiction)"),
+                      "Panel (" + tag + ") of Fig. 14 alone, on its axes: r_disp = 2, ζ = 0.15, θ = 90°, " +
+                          kFig14What[k] + "."),
+        k);
+}
+
+const RegisterFigure register_fig14{with_panels(
+    period_figure(
+        "fig14", "top views, ζ = 0.15, θ = 90°, r_disp = 2: (a) i = 1, (b) i = 0, shared axes",
+        FigureKind::period_view, kFig14a, "Fig. 14: ζ = 0.15, θ = 90°, r_{disp} = 2; (a) i = 1, (b) i = 0",
+        std::string("P and T over one steady-state period, r_disp = 2, ζ = 0.15, θ = 90°, on shared "
+                    "axes: (a) ") +
+            kFig14What[0] + "; (b) " + kFig14What[1] + "."),
+    -1)};
+const RegisterFigure register_fig14a{fig14_panel(0)};
+const RegisterFigure register_fig14b{fig14_panel(1)};
 
 const RegisterFigure register_fig15{period_figure(
     "fig15", "friction force over one period, ζ = 0.15, i = 1", FigureKind::period_force, kFig14a,

@@ -37,6 +37,33 @@ const RegisterFigure register_fig5{fig5_entry()};
 // (0.5: the tip deflection at sliding is twice the vibration amplitude) to near-rigid (20).
 const double kRdispFamily[] = {0.5, 1, 2, 5, 20};
 
+// Where the computed curves disagree with the paper's reading of Figs. 10-13 (compliance only weakens the
+// friction reduction, a larger r_disp lowers r_x, i = 1 drops below i = 0 at small zeta); the numbers are
+// `frictionviz ratio` (and `sweep` on a 0.005 grid of zeta for the ranges), README "Where the model
+// disagrees with the paper", tested in test_figures.cpp.
+std::string disagreement(const std::string& id) {
+    if (id == "fig10")
+        return " Unlike the paper's reading (compliance only weakens the friction reduction; a larger r_disp "
+               "lowers r_x), at small ζ every i = 1 curve lies below the rigid one: at ζ = 0.1, r_disp = 2 "
+               "gives r_x = 0.1887 against 0.2344 (Eq. 11); the curves stay below it up to ζ ≈ 0.09, 0.135, "
+               "0.16, 0.125, 0.065 for r_disp = 0.5, 1, 2, 5, 20, and there r_x grows with r_disp from 1 on "
+               "(ζ = 0.02: 0.0332 at r_disp = 1, 0.0477 at 20).";
+    if (id == "fig11")
+        return " Unlike the paper's reading, for r_disp ≥ 2 the i = 0 curves dip below the rigid one at very "
+               "small ζ (up to ζ ≈ 0.015, 0.04, 0.025 for r_disp = 2, 5, 20; at ζ = 0.02, r_disp = 5: "
+               "r_x = 0.0586 against 0.0675).";
+    if (id == "fig12")
+        return " Unlike the paper's reading (i = 1 drops below i = 0 at small ζ), for r_disp ≥ 2 the i = 1 "
+               "curves lie above the i = 0 curves of Fig. 13 at small ζ: at ζ = 0.1, r_disp = 2, r_x = "
+               "0.0886 (i = 1) against 0.0789 (i = 0), up to ζ ≈ 0.38, 0.66, 0.86 for r_disp = 2, 5, 20 (at "
+               "θ = 90°, Figs. 10 and 11, i = 1 does lie below: 0.1887 against 0.3235).";
+    if (id == "fig13")
+        return " Unlike the paper's reading, for r_disp ≥ 2 these i = 0 curves lie below the i = 1 curves of "
+               "Fig. 12 at small ζ (ζ = 0.1, r_disp = 2: 0.0789 against 0.0886; up to ζ ≈ 0.38, 0.66, 0.86 "
+               "for r_disp = 2, 5, 20).";
+    return {};
+}
+
 FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
     FigureSpec f;
     f.id = id;
@@ -45,7 +72,8 @@ FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
     f.title = "Fig. " + id.substr(3) + ": friction ratio, i = " + i_text + ", θ = " + theta_text + "°";
     f.caption = "r_x(ζ) of the Dahl model with i = " + i_text + (i == 0 ? " (stiction)" : "") +
                 " at θ = " + theta_text + "° for r_disp = 0.5, 1, 2, 5, 20, and the rigid model (Eq. " +
-                (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve.";
+                (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve." +
+                disagreement(id);
     f.zetas = ratio_zeta_grid();
     for (double r : kRdispFamily) f.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
     f.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});

@@ -67,6 +67,10 @@ class Plot {
 
     std::string title;
     Axis x_axis, y_axis;
+    /// A second x axis along the top showing top_scale * x (e.g. a velocity in m/s beside a ratio); none
+    /// when top_scale is 0.
+    double top_scale = 0;
+    std::string top_title;
     bool equal_aspect = false; ///< One data unit spans the same pixels in x and y (linear axes).
     LegendPosition legend = LegendPosition::Best;
     float font_size = 13; ///< Tick labels; titles are a little larger.

@@ -1,0 +1,176 @@
+#include "figure_panels.hpp"
+
+#include "fv/format.hpp"
+#include "fv/paper_scheme.hpp"
+#include "fv/rigid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fv {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Appends (x, y), first a NaN break where the curve jumps (the rigid friction reverses at once for
+// theta = 0), so that no line is drawn across the jump.
+void append(SeriesData& s, double x, double y, double jump) {
+    if (!s.x.empty() && std::isfinite(s.y.back()) && std::hypot(x - s.x.back(), y - s.y.back()) > jump) {
+        s.x.push_back(kNaN);
+        s.y.push_back(kNaN);
+    }
+    s.x.push_back(x);
+    s.y.push_back(y);
+}
+
+// Friction on the body over F_c, Eq. (2): opposite to the velocity, magnitude 1 (0 where v = 0).
+Vec2 coulomb(const Vec2& v) {
+    const double n = v.norm();
+    return n > 0 ? Vec2(-v / n) : Vec2(Vec2::Zero());
+}
+
+const char* const kPhase[] = {"τ = 0", "π/4", "π/2", "3π/4", "π"};
+
+} // namespace
+
+void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
+    const Params p{spec.params.zeta, spec.params.theta, 1, 1}; // r_disp, i: not used by the rigid model
+    const Ratio r = rigid_ratio(p.zeta, p.theta);              // Eq. (9) and its y-twin
+    const Vec2 e(std::cos(p.theta), std::sin(p.theta));        // the vibration's direction
+
+    PanelData plane;
+    plane.title = "velocity v/v_{v} and friction F/F_{c} at τ = kπ/4";
+    plane.x_title = "along v_{b}";
+    plane.y_title = "across v_{b}";
+    plane.equal_aspect = true;
+    plane.circles.push_back({Vec2::Zero(), 1.0, Ink::spring, Dash::dotted, 1.2f});
+    // The loci over the whole period: v(tau) runs along a segment of length 2 centred on v_b/v_v = (zeta, 0)
+    // (Eq. 1); F(tau) along an arc of the unit circle (Eq. 2).
+    const Vec2 vb(p.zeta, 0), v0 = vb - e, v1 = vb + e;
+    plane.series.push_back({"v(τ)/v_{v}, whole period",
+                            {v0.x(), v1.x()},
+                            {v0.y(), v1.y()},
+                            Ink::body,
+                            Dash::dashed,
+                            Mark::none,
+                            1.5f});
+    SeriesData arc{
+        "F(τ)/F_{c} = −v/|v|, whole period", {}, {}, Ink::tip, Dash::solid, Mark::none, 5.f, 0.35f};
+    for (int k = 0; k <= 720; ++k) {
+        const Vec2 f = coulomb(body_velocity(p, kPi * k / 720));
+        append(arc, f.x(), f.y(), 0.2);
+    }
+    plane.series.push_back(std::move(arc));
+    for (int k = 0; k <= 4; ++k) {
+        const double tau = kPi * k / 4;
+        const Vec2 v = body_velocity(p, tau);
+        plane.arrows.push_back({Vec2::Zero(), v, Ink::body, kPhase[k], 2.f});
+        plane.arrows.push_back({Vec2::Zero(), coulomb(v), Ink::tip, "", 2.f});
+    }
+    // The mean friction; its label below its head, off the friction arrow along -x that it may overlie.
+    plane.arrows.push_back({Vec2::Zero(), Vec2(-r.rx, -r.ry), Ink::black, "", 3.5f});
+    plane.points.push_back({Vec2(-r.rx, -r.ry), Ink::black, Mark::circle, "mean friction", 6, -1, 1});
+    plane.points.push_back({vb, Ink::body, Mark::cross, "v_{b}/v_{v}", 9, 1, 1});
+    const double x1 = std::max({1.0, v0.x(), v1.x()}), x0 = std::min({-1.0, v0.x(), v1.x()});
+    plane.x_min = x0 - 0.45, plane.x_max = x1 + 0.45;
+    plane.y_min = std::min(-1.0, std::min(v0.y(), v1.y())) - 0.25;
+    plane.y_max = std::max(1.0, std::max(v0.y(), v1.y())) + 0.25;
+    plane.legend = "bottom-left";
+
+    PanelData time;
+    time.title = "friction against v_{b} over one period";
+    time.x_title = "time τ = ωt";
+    time.y_title = "−F_{x}/F_{c}  (Eq. 3)";
+    SeriesData fx{"−F_{x}/F_{c}", {}, {}, Ink::tip, Dash::solid, Mark::none, 2.5f};
+    SeriesData phases{"", {}, {}, Ink::tip, Dash::solid, Mark::circle, 0};
+    std::string table = "tau,v_x,v_y,F_x,F_y\n";
+    double lowest = 0;
+    for (int k = 0; k <= 1024; ++k) {
+        const double tau = 2 * kPi * k / 1024;
+        const Vec2 v = body_velocity(p, tau), f = coulomb(v);
+        append(fx, tau, -f.x(), 0.5);
+        lowest = std::min(lowest, -f.x());
+        if (k % 128 == 0) phases.x.push_back(tau), phases.y.push_back(-f.x());
+        if (k < 1024)
+            table += format_number("%.10g", tau) + "," + format_number("%.12g", v.x()) + "," +
+                     format_number("%.12g", v.y()) + "," + format_number("%.12g", f.x()) + "," +
+                     format_number("%.12g", f.y()) + "\n";
+    }
+    time.series.push_back(std::move(fx));
+    time.series.push_back({"mean r_{x} = " + format_number("%.4f", r.rx) + " (Eq. 9)",
+                           {0, 2 * kPi},
+                           {r.rx, r.rx},
+                           Ink::black,
+                           Dash::dashed,
+                           Mark::none,
+                           2.f});
+    time.series.push_back(
+        {"without vibration: F_{c}", {0, 2 * kPi}, {1, 1}, Ink::spring, Dash::dotted, Mark::none, 2.f});
+    time.series.push_back(std::move(phases));
+    time.x_min = 0, time.x_max = 2 * kPi;
+    // A band below the curve for the legend (the curve fills the corners above it for most angles).
+    time.y_min = std::min(0.0, lowest) - 0.5;
+    time.y_max = 1.1;
+    time.legend = "bottom-right";
+
+    fig.panels = {std::move(plane), std::move(time)};
+    TableData t;
+    t.text = std::move(table);
+    fig.tables.push_back(std::move(t));
+}
+
+void dahl_curve_panels(const FigureSpec& spec, FigureData& fig) {
+    PanelData load, cycle;
+    load.title = "(a) loading from rest, v > 0";
+    cycle.title = "(b) cycle 0 → +3 → −3 → +3 z_{ss}";
+    for (PanelData* pd : {&load, &cycle}) {
+        pd->x_title = "displacement x / z_{ss}";
+        pd->y_title = "friction force F / F_{c}";
+    }
+    load.x_min = 0, load.x_max = kDahlCurveTurn, load.y_min = 0, load.y_max = 1.1;
+    load.legend = "bottom-right";
+    cycle.x_min = -kDahlCurveTurn - 0.3, cycle.x_max = kDahlCurveTurn + 0.3;
+    cycle.y_min = -1.15, cycle.y_max = 1.15;
+    cycle.legend = "none"; // the colours of (a)
+    std::string table = "i,leg,x_over_zss,F_over_Fc\n";
+    // Every 100th step is drawn and written (0.01 z_ss apart), and each leg's end.
+    constexpr int kEvery = 100;
+    const long per_leg = std::lround(kDahlCurveTurn / kDahlCurveStep);
+    for (double i : spec.exponents) {
+        // z_ss = 1 (r_disp = 1): lengths in units of z_ss, and the lag P - T is F/F_c (Eqs. 13, 15).
+        const Params p{0, 0, 1, i};
+        const std::string is = format_number("%g", i);
+        SeriesData a{
+            "i = " + is + (i == 0 ? " (Eq. 25)" : (i == 1 ? " (Eq. 17)" : "")), {}, {}, Ink::automatic};
+        SeriesData b{"", {}, {}, Ink::automatic};
+        Vec2 lag = Vec2::Zero();
+        double x = 0;
+        auto keep = [&](int leg) {
+            if (leg == 1) a.x.push_back(x), a.y.push_back(lag.x());
+            b.x.push_back(x), b.y.push_back(lag.x());
+            table += is + "," + std::to_string(leg) + "," + format_number("%.6g", x) + "," +
+                     format_number("%.10g", lag.x()) + "\n";
+        };
+        keep(1);
+        const double legs[] = {kDahlCurveTurn, -kDahlCurveTurn, kDahlCurveTurn};
+        for (int leg = 1; leg <= 3; ++leg) {
+            const double from = x, dir = legs[leg - 1] > from ? 1.0 : -1.0;
+            const long n = leg == 1 ? per_leg : 2 * per_leg;
+            for (long j = 1; j <= n; ++j) {
+                // The model's step (Eqs. 17-27): the body moves by dx along x.
+                lag = dahl_update(p, lag, Vec2(dir * kDahlCurveStep, 0));
+                x = from + dir * kDahlCurveStep * static_cast<double>(j);
+                if (j % kEvery == 0 || j == n) keep(leg);
+            }
+        }
+        load.series.push_back(std::move(a));
+        cycle.series.push_back(std::move(b));
+    }
+    fig.panels = {std::move(load), std::move(cycle)};
+    TableData t;
+    t.text = std::move(table);
+    fig.tables.push_back(std::move(t));
+}
+
+} // namespace fv
