@@ -4,6 +4,8 @@
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/fit.hpp"
+#include "fv/fit_figure.hpp"
+#include "fv/measurements.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -267,4 +269,14 @@ TEST_CASE("fig19: synthetic data are labelled so; the top axis is v_b = zeta 2 p
     in.frequency_khz.reset();
     const fv::FigureData d0 = fv::compute_figure(fv::find_registered("fig19")->make(in));
     CHECK(d0.panels.at(0).top_scale == Approx(2 * kPi * 60e3 * 0.7e-6).epsilon(1e-12));
+}
+
+TEST_CASE("Measured data are called measured unless a comment of the file says synthetic", "[figures]") {
+    const fv::MeasurementSet own = fv::parse_measurements("zeta,r_x\n0.1,0.2\n0.3,0.5\n", "own.csv");
+    const fv::MeasurementSet made =
+        fv::parse_measurements("# Synthetic test points\nzeta,r_x\n0.1,0.2\n", "made.csv");
+    CHECK_FALSE(own.synthetic);
+    CHECK(made.synthetic);
+    CHECK(fv::measured_series(own).at(0).label == "measured");
+    CHECK(fv::measured_series(made).at(0).label == "synthetic example data");
 }
