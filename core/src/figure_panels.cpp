@@ -68,9 +68,11 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
         plane.arrows.push_back({Vec2::Zero(), v, Ink::body, kPhase[k], 2.f});
         plane.arrows.push_back({Vec2::Zero(), coulomb(v), Ink::tip, "", 2.f});
     }
-    // The mean friction; its label below its head, off the friction arrow along -x that it may overlie.
+    // The mean friction; its label beside its head on the side away from the friction arrow along -x (at
+    // tau = pi/2, theta = 90 deg the two overlie each other): above when the mean points up, else below.
     plane.arrows.push_back({Vec2::Zero(), Vec2(-r.rx, -r.ry), Ink::black, "", 3.5f});
-    plane.points.push_back({Vec2(-r.rx, -r.ry), Ink::black, Mark::circle, "mean friction", 6, -1, 1});
+    plane.points.push_back(
+        {Vec2(-r.rx, -r.ry), Ink::black, Mark::circle, "mean friction", 6, -1, -r.ry > 1e-3 ? -1 : 1});
     plane.points.push_back({vb, Ink::body, Mark::cross, "v_{b}/v_{v}", 9, 1, 1});
     const double x1 = std::max({1.0, v0.x(), v1.x()}), x0 = std::min({-1.0, v0.x(), v1.x()});
     plane.x_min = x0 - 0.45, plane.x_max = x1 + 0.45;

@@ -110,7 +110,7 @@ FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt,
             (a == 0 ? "" : (a + 1 == angles.size() ? " and " : ", ")) + format_number("%g", angles[a]) + "°";
     fig.title = "Fig. 19: model vs. " +
                 std::string(data.synthetic ? "synthetic example data" : "measurements") +
-                ", θ = " + angle_list + (angles.size() > 1 ? " (one r_{disp}, i fitted to all points)" : "");
+                ", θ = " + angle_list;
 
     // Table: each measured point with both models and residuals.
     TableData t;

@@ -31,7 +31,7 @@ FigureSpec fig19(const FigureInputs& in) {
     const bool paper_vibration = !in.amplitude_um || !in.frequency_khz;
     for (PanelData& p : fig->panels) {
         p.top_scale = vv;
-        p.top_title = "sliding velocity v_{b} [m/s], A = " + a_text + " µm, f = " + f_text + " kHz";
+        p.top_title = "v_{b} [m/s] at A = " + a_text + " µm, f = " + f_text + " kHz";
     }
     FigureSpec f;
     f.id = "fig19";
@@ -40,14 +40,14 @@ FigureSpec fig19(const FigureInputs& in) {
     const FitCandidate& b = fit->best;
     const std::string what =
         data.synthetic ? "synthetic example data (made from the model, not measurements)" : "measurements";
-    f.caption = "Model vs. " + what + ": the " + std::to_string(data.points.size()) + " points of " +
-                in.data +
-                " with the rigid model and the Dahl model with i = 0 and i = 1, each at the r_disp fitted to "
-                "all points; the best fit is i = " +
-                format_number("%g", b.i) + ", r_disp = " + format_number("%.3g", b.rdisp) + " ± " +
-                format_number("%.2g", b.rdisp_sigma) +
-                (b.zss_um ? " (z_ss = A/r_disp = " + format_number("%.3g", *b.zss_um) + " µm)" : "") +
-                ". The top axis is v_b = ζ v_v with v_v = 2π f A = " + format_number("%.4g", vv) + " m/s.";
+    f.caption =
+        "Model vs. " + what + ": the " + std::to_string(data.points.size()) + " points of " + in.data +
+        " with the rigid model and the Dahl model with i = 0 and i = 1, each at the one r_disp fitted to "
+        "all points of all panels; the best fit is i = " +
+        format_number("%g", b.i) + ", r_disp = " + format_number("%.3g", b.rdisp) + " ± " +
+        format_number("%.2g", b.rdisp_sigma) +
+        (b.zss_um ? " (z_ss = A/r_disp = " + format_number("%.3g", *b.zss_um) + " µm)" : "") +
+        ". The top axis is v_b = ζ v_v with v_v = 2π f A = " + format_number("%.4g", vv) + " m/s.";
     f.parameters =
         "rigid model (Eqs. 9–11, quadrature) and Dahl model with i = 0 and i = 1 at each panel's θ, "
         "r_disp fitted by least squares in ln r_disp over [0.1, 100] (" +
