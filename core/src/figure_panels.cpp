@@ -169,6 +169,10 @@ void dahl_curve_panels(const FigureSpec& spec, FigureData& fig) {
         load.series.push_back(std::move(a));
         cycle.series.push_back(std::move(b));
     }
+    // The sense of the cycle, beside the plateaus at -F_c (unloading and reversal, towards -x) and +F_c
+    // (reloading, towards +x).
+    cycle.arrows.push_back({Vec2(-0.4, -1.08), Vec2(-1.4, -1.08), Ink::black, "", 2.f});
+    cycle.arrows.push_back({Vec2(0.4, 1.08), Vec2(1.4, 1.08), Ink::black, "", 2.f});
     fig.panels = {std::move(load), std::move(cycle)};
     TableData t;
     t.text = std::move(table);
