@@ -173,6 +173,12 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
             gfx::TextStyle ts;
             ts.size = 14;
             ts.color = ink_color(a.ink, 0);
+            if (a.label_dy != 0) {
+                ts.halign = gfx::HAlign::Center;
+                ts.valign = a.label_dy < 0 ? gfx::VAlign::Bottom : gfx::VAlign::Top;
+                c.text({to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)}, a.label, ts);
+                continue;
+            }
             const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
             ts.halign =
                 ux > 0.3f ? gfx::HAlign::Left : (ux < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);

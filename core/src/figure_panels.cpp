@@ -65,7 +65,8 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
     for (int k = 0; k <= 4; ++k) {
         const double tau = kPi * k / 4;
         const Vec2 v = body_velocity(p, tau);
-        plane.arrows.push_back({Vec2::Zero(), v, Ink::body, kPhase[k], 2.f});
+        // Nearly parallel vibration: the velocities lie along one line, so their labels go above the heads.
+        plane.arrows.push_back({Vec2::Zero(), v, Ink::body, kPhase[k], 2.f, std::abs(e.y()) < 0.25 ? -1 : 0});
         plane.arrows.push_back({Vec2::Zero(), coulomb(v), Ink::tip, "", 2.f});
     }
     // The mean friction; its label beside its head on the side away from the friction arrow along -x (at

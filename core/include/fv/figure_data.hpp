@@ -53,8 +53,9 @@ struct PointData {
 struct ArrowData {
     Vec2 from, to; // data coordinates
     Ink ink = Ink::black;
-    std::string label; // drawn beyond the head
+    std::string label; // drawn beyond the head,
     float width = 2.5f;
+    int label_dy = 0; // or centred above (-1) or below (+1) it on screen (arrows along one line)
 };
 
 struct CircleData {
