@@ -122,6 +122,14 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         plot.add_series(s.label, s.x, s.y, st).y_err = s.y_err;
     }
     const PanelData* pd = &panel;
+    if (!panel.bands.empty())
+        plot.add_underlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
+            for (const BandData& b : pd->bands) {
+                const float x0 = tf.to_pixel(b.x0, tf.y0).x, x1 = tf.to_pixel(b.x1, tf.y0).x;
+                if (x1 > x0)
+                    c.fill_rect({x0, tf.area.y0, x1, tf.area.y1}, ink_color(b.ink, 0).with_alpha(b.opacity));
+            }
+        });
     plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
         // Shapes first, then every label: text and shapes are separate draw batches, and the software
         // renderer pays per batch. Labels belong on top anyway.

@@ -2,6 +2,7 @@
 
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
+#include "fv/ode_solver.hpp"
 #include "fv/units.hpp"
 
 #include <algorithm>
@@ -17,7 +18,7 @@ AppState::AppState(Model model, const Params& params, double amplitude_um, doubl
     ui_.amplitude_um = amplitude_um;
     ui_.frequency_khz = frequency_khz;
     if (data) ui_.status = show_measured(ui_, std::move(*data));
-    sim_.set_history_periods(std::max(ui_.view.trail_periods, 2.0));
+    sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
     refresh_units();
     worker_.request(ratio_request());
 }
@@ -86,29 +87,96 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     }
     ui_.fitting = fit_.running();
     if (e.playing) ui_.playing = *e.playing;
+    if (e.show_help) ui_.show_help = *e.show_help;
+    if (e.show_loop) ui_.show_loop = *e.show_loop;
+    if (e.clear_pins) ui_.pins.clear(), ui_.status = "pins cleared";
     bool ask_worker = false;
     if (e.show_map && *e.show_map != ui_.show_map) ui_.show_map = *e.show_map, ask_worker = true;
     if (e.speed) ui_.speed = std::clamp(*e.speed, kSpeedRange.lo, kSpeedRange.hi);
     if (e.trail_periods) {
         ui_.view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
-        sim_.set_history_periods(std::max(ui_.view.trail_periods, 2.0));
+        sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
     }
     if (model_changed) sim_.apply(ui_.model, ui_.params);
     if (model_changed || ask_worker || data_changed) worker_.request(ratio_request());
+    if (e.pin) pin_current_curve(wait); // the curve of this frame's parameters (scripts wait for it)
     if (reset) sim_.reset(), step_carry_ = 0;
+    // Time: any change of the model or a reset shows the live state again; scrubbing and stepping back
+    // pause, so that the moment stays on screen.
+    if (model_changed || reset) ui_.view.rewind = 0;
+    if (e.rewind) ui_.view.rewind = std::clamp(*e.rewind, 0.0, max_rewind(sim_)), ui_.playing = false;
+    if (e.step_back)
+        ui_.view.rewind = std::min(ui_.view.rewind + frame_tau(), max_rewind(sim_)), ui_.playing = false;
+    if (e.jump_steady) jump_to_steady();
     step_pending_ = e.step;
     refresh_units();
     return {e.screenshot, e.export_csv, e.quit};
 }
 
+double AppState::frame_tau() const {
+    return ui_.speed * 2 * kPi / 60;
+}
+
 void AppState::advance(double dt) {
-    if (ui_.playing) {
+    // While rewound, playing replays the history towards the live state; then the simulation runs on.
+    if (ui_.playing && ui_.view.rewind > 0) {
+        ui_.view.rewind = std::max(0.0, ui_.view.rewind - dt * ui_.speed * 2 * kPi);
+    } else if (ui_.playing) {
         step_carry_ += dt * ui_.speed * sim_.steps_per_period();
         const int n = static_cast<int>(step_carry_);
         step_carry_ -= n;
         sim_.step(n);
     }
-    if (step_pending_) sim_.step(1), step_pending_ = false;
+    // One frame forward: through the history while rewound, else the simulation's steps of one frame.
+    if (step_pending_) {
+        if (ui_.view.rewind > 0)
+            ui_.view.rewind = std::max(0.0, ui_.view.rewind - frame_tau());
+        else
+            sim_.step(std::max(1, static_cast<int>(std::lround(frame_tau() / sim_.dtau()))));
+        step_pending_ = false;
+    }
+}
+
+void AppState::pin_current_curve(bool wait) {
+    if (ui_.pins.size() >= kMaxPins) {
+        ui_.status = std::to_string(kMaxPins) + " curves pinned: clear the pins to pin more";
+        return;
+    }
+    if (wait) worker_.wait_idle();
+    const auto curves = worker_.latest();
+    if (!curves || !(curves->request == ratio_request())) {
+        ui_.status = "the curve is still being computed: pin it once it is drawn";
+        return;
+    }
+    const Params& p = ui_.params;
+    const bool rigid = ui_.model == Model::rigid;
+    PinnedCurve pin;
+    pin.label =
+        std::string(rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.3g", p.theta * 180 / kPi) + "°" +
+        (rigid ? "" : ", r_{disp} = " + format_number("%.3g", p.rdisp) + ", i = " + format_number("%g", p.i));
+    pin.zeta = curves->zetas;
+    pin.rx = rigid ? curves->rigid_rx : curves->model_rx;
+    ui_.status = "pinned: " + pin.label;
+    ui_.pins.push_back(std::move(pin));
+}
+
+void AppState::jump_to_steady() {
+    ui_.view.rewind = 0;
+    if (ui_.model == Model::rigid) {
+        ui_.status = "the rigid model has no transient: its friction follows the velocity at once";
+        return;
+    }
+    const OdeSolution s = ode_solve(ui_.params);
+    if (!ok(s.result.status) || !std::isfinite(s.lag.x()) || !std::isfinite(s.lag.y())) {
+        ui_.status =
+            std::string("no verified steady state to jump to here (") + to_string(s.result.status) + ")";
+        return;
+    }
+    // The solver's L* at a period start, then one period animated at once so that the trails, the force
+    // plot and the period mean show the steady motion.
+    sim_.start_steady(s.lag);
+    sim_.step(sim_.steps_per_period());
+    ui_.status = "on the steady state: P - T = L* at each period start (the solver's fixed point)";
 }
 
 } // namespace fv::app

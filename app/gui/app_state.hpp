@@ -17,7 +17,9 @@ namespace fv::app {
 
 // App-only ranges (not model parameters): animation speed in vibration periods per second, trail length in
 // periods. The panel's sliders span a part of them.
-inline constexpr ParamRange kSpeedRange{0.01, 10};
+inline constexpr ParamRange kSpeedRange{0.05, 10};
+// How much of the past the app keeps to rewind through, in vibration periods (at least the trail).
+inline constexpr double kHistoryPeriods = 6;
 inline constexpr ParamRange kTrailRange{0.1, 10};
 
 class AppState {
@@ -45,6 +47,9 @@ class AppState {
 
   private:
     RatioRequest ratio_request() const;
+    void jump_to_steady();
+    void pin_current_curve(bool wait);
+    double frame_tau() const; // dimensionless time of one displayed frame at the current speed (1/60 s)
     void refresh_units();
 
     UiState ui_;

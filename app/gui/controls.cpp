@@ -1,5 +1,8 @@
 #include "controls.hpp"
 
+#include "app_state.hpp"
+#include "help_overlay.hpp"
+
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
 #include "fv/param_ranges.hpp"
@@ -18,6 +21,10 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.zss_um) zss_um = o.zss_um;
     if (o.playing) playing = o.playing;
     if (o.show_map) show_map = o.show_map;
+    if (o.show_help) show_help = o.show_help;
+    if (o.show_loop) show_loop = o.show_loop;
+    pin |= o.pin;
+    if (o.clear_pins) clear_pins = true, pin = false;
     if (o.speed) speed = o.speed;
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
@@ -27,6 +34,9 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.clear_data) clear_data = true, load_data.reset();
     fit_data |= o.fit_data;
     step |= o.step;
+    if (o.rewind) rewind = o.rewind;
+    step_back |= o.step_back;
+    jump_steady |= o.jump_steady;
     reset |= o.reset;
     screenshot |= o.screenshot;
     export_csv |= o.export_csv;
@@ -52,10 +62,12 @@ bool slider_double(const char* label, double* v, ParamRange r, const char* forma
     return slider_double(label, v, r.lo, r.hi, format, log);
 }
 
-void readout(const char* name, const char* fmt, double v) {
-    ImGui::TextUnformatted(name);
-    ImGui::SameLine(165);
-    ImGui::Text(fmt, v);
+// A parameter's tooltip: its meaning, the slider's span and what can be typed (Ctrl+click) — the range
+// table's.
+void range_tooltip(const char* meaning, ParamRange slider, ParamRange allowed) {
+    if (!ImGui::IsItemHovered()) return;
+    ImGui::SetTooltip("%s\nslider %s; Ctrl+click to type any value in %s", meaning, describe(slider).c_str(),
+                      describe(allowed).c_str());
 }
 
 } // namespace
@@ -76,9 +88,10 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     bool changed = false;
     ImGui::TextUnformatted("Parameters");
     changed |= slider_double("ζ", &p.zeta, kSliders.zeta, "%.3f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("velocity ratio ζ = v_b / v_v, Eq. (6)");
+    range_tooltip("velocity ratio ζ = v_b / v_v, Eq. (6)", kSliders.zeta, kZetaRange);
     changed |= slider_double("θ [°]", &theta_deg, kSliders.theta_deg, "%.1f");
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("angle of the vibration to the sliding velocity, Eq. (1)");
+    range_tooltip("angle θ of the vibration to the sliding velocity in degrees, Eq. (1)", kSliders.theta_deg,
+                  kThetaRange);
     for (double q : {0.0, 30.0, 45.0, 60.0, 90.0}) {
         char b[16];
         std::snprintf(b, sizeof b, "%g°", q);
@@ -89,19 +102,30 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     const bool dahl = ui.model == Model::dahl;
     if (!dahl) ImGui::BeginDisabled();
     changed |= slider_double("r_disp", &p.rdisp, kSliders.rdisp, "%.3g", true);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact");
+    range_tooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact", kSliders.rdisp,
+                  kRdispRange);
     changed |= slider_double("i", &p.i, kSliders.i, "%.2f");
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Dahl shape exponent, Eq. (12); i = 0 sticks below z_ss (Eq. 27)");
+    range_tooltip("Dahl shape exponent, Eq. (12); i = 0 sticks below z_ss (Eq. 27)", kSliders.i, kIRange);
     if (ImGui::SmallButton("i = 0 (stiction)")) p.i = 0, changed = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "%s",
+            "i = 0: the asperity sticks until it is stretched to z_ss, then slips (Coulomb with a spring)");
     ImGui::SameLine();
     if (ImGui::SmallButton("i = 1")) p.i = 1, changed = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s", "i = 1: the classic Dahl law, the force rises smoothly to F_c");
     if (!dahl) ImGui::EndDisabled();
     int model = dahl ? 0 : 1;
     if (ImGui::RadioButton("Dahl (compliant)", &model, 0)) e.model = Model::dahl;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s",
+                          "the asperity bends (Dahl law, Eq. 12): friction builds up over a stretch z_ss");
     ImGui::SameLine();
     if (ImGui::RadioButton("rigid", &model, 1)) e.model = Model::rigid;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "%s", "Coulomb friction, F_c against the velocity at every instant (Eq. 2; r_disp -> infinity)");
     if (changed) {
         p.theta = theta_deg * kPi / 180;
         e.params = p;
@@ -121,24 +145,68 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
 
     ImGui::Separator();
     ImGui::TextUnformatted("Animation");
-    if (ImGui::Button(ui.playing ? "Pause [Space]" : "Play [Space]")) e.playing = !ui.playing;
-    ImGui::SameLine();
-    if (ImGui::Button("Step [→]")) e.step = true;
+    const bool rewound = ui.view.rewind > 0;
+    if (ImGui::Button(ui.playing ? (rewound ? "Pause replay" : "Pause [Space]")
+                                 : (rewound ? "Replay [Space]" : "Play [Space]")))
+        e.playing = !ui.playing;
     ImGui::SameLine();
     if (ImGui::Button("Reset [R]")) e.reset = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", "start again from an unstretched asperity at time 0");
+    ImGui::SameLine();
+    if (ImGui::Button("Steady state [J]")) e.jump_steady = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Skip the transient: put the tip on the periodic steady state that r_x is the mean "
+                          "of (the solver's fixed point), and animate one period of it.");
+    // Time: one frame back or forward, and a scrub slider over the history kept (kHistoryPeriods periods).
+    if (ImGui::Button("←")) e.step_back = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("one frame back [←] (pauses)");
+    ImGui::SameLine();
+    if (ImGui::Button("→")) e.step = true;
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("one frame forward [→]");
+    ImGui::SameLine();
+    const double reach = max_rewind(sim) / (2 * kPi);
+    double ago = ui.view.rewind / (2 * kPi);
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 64);
+    // Reversed (the past on the left, now on the right), the value never hidden: "live" or "N periods ago".
+    if (slider_double("##time", &ago, std::max(reach, 1e-3), 0, rewound ? "%.2f periods ago" : "live"))
+        e.rewind = ago * 2 * kPi;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Drag back to rewind through the last %.1f periods (pauses); Play replays from "
+                          "there to the live state.",
+                          reach);
+    ImGui::SameLine();
+    ImGui::TextUnformatted("time");
     double speed = ui.speed, trail = ui.view.trail_periods;
-    if (slider_double("periods/s", &speed, 0.02, 3, "%.2f", true)) e.speed = speed;
+    if (slider_double("periods/s", &speed, kSpeedRange.lo, kSpeedRange.hi, "%.2f", true)) e.speed = speed;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("animation speed: vibration periods per second of wall time, %s",
+                          describe(kSpeedRange).c_str());
     if (slider_double("trail", &trail, 0.25, 4, "%.2f periods")) e.trail_periods = trail;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("how much of P's and T's past path the top view draws, fading (periods)");
 
     ImGui::Separator();
     // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
-    ImGui::Text("Now  τ/2π %.2f   z/z_ss %.3f   %s", sim.tau() / (2 * kPi),
-                sim.model() == Model::rigid ? 1.0 : sim.z() / sim.params().zss(),
-                sim.model() == Model::rigid
-                    ? "rigid"
-                    : (sim.slipping() ? "slips" : (sim.params().i == 0 ? "sticks" : "creeps")));
-    if (std::isfinite(sim.last_period_mean().x()))
-        readout("F_x, last period mean", "%.4f", sim.last_period_mean().x());
+    const SimMoment now = moment_at(sim, ui.view.rewind);
+    if (sim.model() == Model::rigid)
+        ImGui::Text("Now  τ/2π %.2f   rigid: F = F_c against v", now.tau / (2 * kPi));
+    else
+        ImGui::Text("Now  τ/2π %.2f   z/z_ss %.3f   %s", now.tau / (2 * kPi), now.z / sim.params().zss(),
+                    now.slip ? "slips" : (sim.params().i == 0 ? "sticks" : "creeps"));
+    // The live mean and the steady r_x: equal once the transient is over (up to the animation's step).
+    const double mean = sim.last_period_mean().x();
+    if (std::isfinite(mean)) {
+        const bool settled = curves && std::abs(mean - curves->current.rx) < 2e-3;
+        ImGui::Text("mean F_x, last period %s%s", format_number("%.4f", mean).c_str(),
+                    curves ? (settled ? "  = r_x: steady" : "  ≠ r_x: transient") : "");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip(
+                "The mean of F_x over the last animated period (Eq. 30) approaches the steady r_x "
+                "as the motion settles from its start (an unstretched asperity). Until then "
+                "they differ; 'Steady state [J]' skips the transient. A few 1e-3 remain from "
+                "the animation's %d steps per period.",
+                sim.steps_per_period());
+    }
     ImGui::Separator();
     if (curves) {
         ImGui::Text("Steady state%s  r_x %s   r_y %s", busy ? "…" : "",
@@ -174,17 +242,34 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         ImGui::TextUnformatted("Steady state (computing…)");
     }
     ImGui::Separator();
-    bool show_map = ui.show_map;
-    if (ImGui::Checkbox("(ζ, θ) map instead of r_x(ζ)", &show_map)) e.show_map = show_map;
+    // The lower-right panel: the r_x(zeta) curves (with pins), the (zeta, theta) map or the hysteresis loop.
+    int panel = ui.show_loop ? 2 : (ui.show_map ? 1 : 0);
+    const int before = panel;
+    ImGui::RadioButton("r_x(ζ)", &panel, 0);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("r_x over the velocity ratio for this θ, r_disp, i, and the rigid model");
+    ImGui::SameLine();
+    ImGui::RadioButton("(ζ, θ) map", &panel, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("loop", &panel, 2);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the asperity's force along the vibration against the vibration displacement over the "
+            "last period: its area is the energy the vibration loses to friction");
+    if (panel != before) e.show_map = panel == 1, e.show_loop = panel == 2;
+    if (ImGui::Button("Pin curve")) e.pin = true;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("keep this r_x(ζ) curve on the plot to compare with others (up to %zu)", kMaxPins);
+    ImGui::SameLine();
+    if (ImGui::Button("Clear pins")) e.clear_pins = true;
+    ImGui::SameLine();
+    ImGui::Text("%zu pinned", ui.pins.size());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
     ImGui::Separator();
     e.merge(draw_data_controls(ui, dialog));
-    ImGui::Separator();
-    if (ImGui::Button("Export trace CSV")) e.export_csv = true;
-    ImGui::SameLine();
-    if (ImGui::Button("Screenshot [S]")) e.screenshot = true;
+    // Export trace CSV and Screenshot [S] are in the File menu: the panel keeps its rows for the teaching.
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::PopItemWidth();
     e.merge(draw_open_dialog(dialog));
@@ -198,6 +283,9 @@ UiEdits keyboard_edits(const UiState& ui) {
     if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return e;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) e.playing = !ui.playing;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) e.step = true;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), true)) e.step_back = true;
+    if (ImGui::IsKeyPressed('J', false)) e.jump_steady = true;
+    if (help_key_pressed()) e.show_help = !ui.show_help;
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;
     if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;

@@ -1,6 +1,7 @@
 #include "dashboard.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
+#include "fv/paper_scheme.hpp"
 
 #include "figures/figure_painter.hpp"
 
@@ -27,7 +28,76 @@ SeriesData hline(const std::string& label, double x0, double x1, double y, Ink i
     return s;
 }
 
+// The asperity as a spring from T to P: a zigzag of `coils` turns, `amp` wide, straight ends.
+SeriesData spring_series(const Vec2& T, const Vec2& P, double amp, Ink ink) {
+    SeriesData s;
+    s.ink = ink;
+    s.width = 2.4f;
+    const Vec2 d = P - T;
+    const double len = d.norm();
+    if (!(len > 0)) return s;
+    const Vec2 u = d / len, n{-u.y(), u.x()};
+    constexpr int kCoils = 6;
+    const double a = std::min(amp, 0.5 * len);
+    s.x.push_back(T.x()), s.y.push_back(T.y());
+    for (int k = 0; k <= 2 * kCoils; ++k) {
+        const double f = 0.15 + 0.7 * k / (2.0 * kCoils);
+        const double side = k == 0 || k == 2 * kCoils ? 0 : (k % 2 ? 1 : -1);
+        const Vec2 q = T + f * d + side * a * n;
+        s.x.push_back(q.x()), s.y.push_back(q.y());
+    }
+    s.x.push_back(P.x()), s.y.push_back(P.y());
+    return s;
+}
+
+// An outline through the corners (closed), for the body.
+SeriesData box_series(const Vec2& c, double hw, double hh, const std::string& label) {
+    SeriesData s;
+    s.label = label;
+    s.ink = Ink::spring;
+    s.dash = Dash::dashed;
+    s.width = 1.4f;
+    s.x = {c.x() - hw, c.x() + hw, c.x() + hw, c.x() - hw, c.x() - hw};
+    s.y = {c.y() - hh, c.y() - hh, c.y() + hh, c.y() + hh, c.y() - hh};
+    return s;
+}
+
+// A legend entry with no data.
+SeriesData key(const std::string& label, Ink ink, float width, float opacity = 1, Dash dash = Dash::solid) {
+    SeriesData s;
+    s.label = label;
+    s.ink = ink;
+    s.width = width;
+    s.opacity = opacity;
+    s.dash = dash;
+    return s;
+}
+
 } // namespace
+
+SimMoment moment_at(const LiveSim& sim, double rewind) {
+    SimMoment m;
+    const Params& p = sim.params();
+    const auto& h = sim.history();
+    if (rewind > 0 && !h.empty()) {
+        const double t = std::max(sim.tau() - rewind, h.front().tau);
+        auto it =
+            std::upper_bound(h.begin(), h.end(), t, [](double v, const LiveSample& s) { return v < s.tau; });
+        const LiveSample& s = it == h.begin() ? *it : *std::prev(it);
+        m.tau = s.tau, m.P = s.P, m.T = s.T, m.F = s.F, m.slip = s.slip;
+        m.velocity = body_velocity(p, s.tau);
+        m.centre = s.P - std::sin(s.tau) * Vec2(std::cos(p.theta), std::sin(p.theta));
+        m.z = (s.P - s.T).norm();
+        return m;
+    }
+    m.tau = sim.tau(), m.P = sim.P(), m.T = sim.T(), m.F = sim.force(), m.slip = sim.slipping();
+    m.velocity = sim.velocity(), m.centre = sim.vibration_centre(), m.z = sim.z();
+    return m;
+}
+
+double max_rewind(const LiveSim& sim) {
+    return sim.history().empty() ? 0 : sim.tau() - sim.history().front().tau;
+}
 
 DashboardLayout layout_dashboard(const gfx::Rect& a) {
     const float split = a.y0 + a.height() * 0.6f;
@@ -39,7 +109,8 @@ DashboardLayout layout_dashboard(const gfx::Rect& a) {
 PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     const Params& p = sim.params();
     const bool rigid = sim.model() == Model::rigid;
-    const bool slip = sim.slipping();
+    const SimMoment m = moment_at(sim, view.rewind);
+    const bool slip = m.slip;
     PanelData panel;
     panel.equal_aspect = true;
     panel.legend = "top-right";
@@ -54,7 +125,7 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     // Fading trails: older fifths of the history drawn more transparent.
     const auto& h = sim.history();
     const std::size_t stride = stride_for(h.size(), 600);
-    const double t_now = sim.tau(), span = view.trail_periods * 2 * kPi;
+    const double t_now = m.tau, span = view.trail_periods * 2 * kPi;
     constexpr int kChunks = 5;
     for (int who = 0; who < (rigid ? 1 : 2); ++who) {
         for (int c = 0; c < kChunks; ++c) {
@@ -68,35 +139,50 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
             const double overlap = static_cast<double>(stride) * sim.dtau();
             for (std::size_t k = 0; k < h.size(); k += stride) {
                 // Include the sample just past each chunk's end so that the chunks join.
-                if (h[k].tau < lo - overlap || h[k].tau > hi + overlap) continue;
+                if (h[k].tau < lo - overlap || h[k].tau > std::min(hi + overlap, t_now)) continue;
                 const Vec2& q = who == 0 ? h[k].P : h[k].T;
                 s.x.push_back(q.x());
                 s.y.push_back(q.y());
             }
             if (c == kChunks - 1) {
-                const Vec2 q = who == 0 ? sim.P() : sim.T();
+                const Vec2 q = who == 0 ? m.P : m.T;
                 s.x.push_back(q.x());
                 s.y.push_back(q.y());
             }
             if (!s.x.empty()) panel.series.push_back(std::move(s));
         }
     }
-    const Vec2 P = sim.P(), T = sim.T();
+    const Vec2 P = m.P, T = m.T;
+    const double half_h = (1 + (rigid ? 0.5 : p.zss())) * 1.2 * view.zoom;
+    // What moves, drawn behind the trails' heads (issue #14 item 1): the body around P (it carries P and
+    // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
+    // the asperity as a spring from its tip T (held by the fixed plane while it sticks) to P, green while it
+    // sticks or creeps inside the circle z < z_ss, vermillion while it slips on it.
+    const double bw = (rigid ? 0.3 : 1.15 * p.zss() + 0.25), bh = (rigid ? 0.22 : 1.15 * p.zss() + 0.18);
+    panel.series.insert(panel.series.begin(), box_series(P, bw, bh, "body (carries P, drifts at v_{b})"));
+    const Vec2 C = m.centre, dir{std::cos(p.theta), std::sin(p.theta)};
+    panel.segments.push_back({C - dir, C + dir, Ink::body, Dash::dotted, 1.3f,
+                              "vibration ±x_{v} at θ = " + format_number("%.0f°", p.theta * 180 / kPi),
+                              std::sin(m.tau) > 0 ? 0.05f : 0.95f, 0}); // the label at the end far from P
+    panel.arrows.push_back({P + Vec2(-bw, bh), P + Vec2(-bw + 0.4 * p.zeta, bh), Ink::body, "v_{b}", 2.0f});
     if (!rigid) {
-        panel.circles.push_back(
-            {P, p.zss(), slip ? Ink::tip : Ink::pull, slip ? Dash::solid : Dash::dashed, 1.6f});
-        panel.segments.push_back({P, T, Ink::spring, Dash::solid, 3.0f, "z", 0.5f, 0});
+        const Ink state = slip ? Ink::tip : Ink::pull;
+        panel.circles.push_back({P, p.zss(), state, slip ? Dash::solid : Dash::dashed, 1.6f});
+        panel.series.push_back(spring_series(T, P, 0.035 * half_h, state));
+        panel.series.push_back(
+            key(p.i == 0 ? "asperity sticks (z < z_{ss})" : "asperity creeps (z < z_{ss})", Ink::pull, 2.4f));
+        panel.series.push_back(key("asperity slips (z = z_{ss})", Ink::tip, 2.4f));
     }
-    // Arrows: P's velocity (scaled by 0.4) and the friction force on the body (opposite to F/F_c as the
-    // ratio counts it), F_c drawn as 0.5 x_v.
-    const Vec2 v = sim.velocity(), F = sim.force();
+    // Arrows: P's velocity (scaled by 0.4) and the friction force on the body, -F: the force plot's F is
+    // (P - T)/z_ss in units of F_c, positive along v_b (the ratio's convention); F_c drawn as 0.5 x_v.
+    const Vec2 v = m.velocity, F = m.F;
     panel.arrows.push_back({P, P + 0.4 * v, Ink::body, "v", 2.5f});
     panel.arrows.push_back({P, P - 0.5 * F, Ink::black, "friction", 2.5f});
+    panel.series.push_back(key("friction on the body = −F", Ink::black, 2.5f));
     panel.points.push_back({P, Ink::body, Mark::circle, "P", 11});
     if (!rigid) panel.points.push_back({T, slip ? Ink::tip : Ink::pull, Mark::square, "T", 11});
 
     // Camera: centred on P's drift (or where the user panned to), tall enough for the vibration and z_ss.
-    const double half_h = (1 + (rigid ? 0.5 : p.zss())) * 1.2 * view.zoom;
     const double cx = (view.follow ? P.x() : 0) + view.pan.x(), cy = view.pan.y();
     panel.y_min = cy - half_h;
     panel.y_max = cy + half_h;
@@ -105,14 +191,14 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     return panel;
 }
 
-PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves) {
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind) {
     PanelData panel;
-    panel.title = "friction force, last periods";
+    panel.title = "friction force (F_{x} > 0 resists v_{b}), last periods";
     panel.x_title = "time τ = ωt";
     panel.y_title = "F / F_{c}";
     panel.legend = "best";
     const auto& h = sim.history();
-    const double t1 = std::max(sim.tau(), 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
+    const double t1 = std::max(moment_at(sim, rewind).tau, 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
     panel.x_min = t0;
     panel.x_max = t1;
     panel.y_min = -1.15;
@@ -123,15 +209,41 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     const std::size_t stride = stride_for(h.size(), 400);
     for (std::size_t k = 0; k < h.size(); k += stride) {
         if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
         fm.x.push_back(h[k].tau), fm.y.push_back(h[k].F.norm());
         fx.x.push_back(h[k].tau), fx.y.push_back(h[k].F.x());
         fy.x.push_back(h[k].tau), fy.y.push_back(h[k].F.y());
     }
     panel.series = {std::move(fm), std::move(fx), std::move(fy)};
-    const Vec2 mean = sim.last_period_mean();
-    if (std::isfinite(mean.x()))
-        panel.series.push_back(hline("period mean of F_{x} = " + format_number("%.4f", mean.x()), t0, t1,
-                                     mean.x(), Ink::black, Dash::dashed));
+    // The times the tip slips, shaded (consecutive samples joined into intervals).
+    if (sim.model() == Model::dahl) {
+        for (std::size_t k = 0; k < h.size(); ++k) {
+            if (h[k].tau > t1) break;
+            if (!h[k].slip || h[k].tau < t0) continue;
+            const double a = k > 0 ? h[k - 1].tau : h[k].tau;
+            if (!panel.bands.empty() && panel.bands.back().x1 >= a) {
+                panel.bands.back().x1 = h[k].tau;
+            } else {
+                panel.bands.push_back({std::max(a, t0), h[k].tau, Ink::tip, 0.13f});
+            }
+        }
+        panel.series.push_back(key("T slips (shaded)", Ink::tip, 9, 0.25f));
+    }
+    // F_x averaged over the period before each instant (prefix sums over the samples): once the transient is
+    // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
+    SeriesData run{"F_{x} averaged over the last period", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
+    {
+        std::vector<double> prefix(h.size() + 1, 0.0);
+        for (std::size_t k = 0; k < h.size(); ++k) prefix[k + 1] = prefix[k] + h[k].F.x();
+        const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
+        for (std::size_t k = n; k < h.size(); k += stride) {
+            if (h[k].tau < t0) continue;
+            if (h[k].tau > t1) break;
+            run.x.push_back(h[k].tau),
+                run.y.push_back((prefix[k + 1] - prefix[k + 1 - n]) / static_cast<double>(n));
+        }
+    }
+    if (!run.x.empty()) panel.series.push_back(std::move(run));
     if (curves && curves->request.params.zeta == sim.params().zeta)
         panel.series.push_back(hline("steady r_{x} = " + format_number("%.4f", curves->current.rx) +
                                          (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
@@ -189,6 +301,11 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
              curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(
         {"rigid", curves->zetas, curves->rigid_rx, Ink::rigid, Dash::dashed, Mark::none, 1.8f});
+    // Pinned curves in the palette's further colours (the series index picks them), dash-dotted apart.
+    if (overlay.pins)
+        for (const PinnedCurve& pin : *overlay.pins)
+            panel.series.push_back(
+                {"pinned: " + pin.label, pin.zeta, pin.rx, Ink::automatic, Dash::dotted, Mark::none, 2.0f});
     add_data(p.theta * 180 / kPi);
     // The current point: a cross instead of the diamond when the solver does not vouch for it.
     panel.points.push_back(
@@ -216,16 +333,62 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
     return p;
 }
 
+LoopData hysteresis_loop(const LiveSim& sim, double rewind) {
+    LoopData loop;
+    const Params& p = sim.params();
+    const Vec2 dir{std::cos(p.theta), std::sin(p.theta)};
+    const auto& h = sim.history();
+    const double t1 = moment_at(sim, rewind).tau, t0 = t1 - 2 * kPi;
+    if (h.empty() || h.front().tau > t0 + 1e-9) return loop; // less than a period recorded
+    const LiveSample* prev = nullptr;
+    for (const LiveSample& s : h) {
+        if (s.tau < t0 - 1e-9 || s.tau > t1 + 1e-9) continue;
+        loop.u.push_back(std::sin(s.tau));
+        loop.f.push_back(s.F.dot(dir));
+        if (prev) {
+            // Midpoint rule on each step: the force over the step times P's move over it.
+            const Vec2 F = 0.5 * (s.F + prev->F);
+            loop.work += F.dot(s.P - prev->P);
+            loop.vibration_work += F.dot(dir) * (std::sin(s.tau) - std::sin(prev->tau));
+        }
+        prev = &s;
+    }
+    loop.complete = true;
+    return loop;
+}
+
+PanelData loop_panel_live(const LiveSim& sim, double rewind) {
+    PanelData panel;
+    panel.x_title = "vibration displacement u / x_{v} = sin τ";
+    panel.y_title = "F along the vibration / F_{c}";
+    panel.x_min = -1.1, panel.x_max = 1.1, panel.y_min = -1.15, panel.y_max = 1.15;
+    panel.legend = "none";
+    const LoopData loop = hysteresis_loop(sim, rewind);
+    if (!loop.complete) {
+        panel.title = "hysteresis loop: after the first period";
+        return panel;
+    }
+    // W: the work of the body against friction over the period, in F_c x_v (what the vibration and the drive
+    // together dissipate); the loop's area is the vibration's share.
+    panel.title = "last period: W = ∮F·dP = " + format_number("%.3g", loop.work) + " F_{c}x_{v}, loop area " +
+                  format_number("%.3g", loop.vibration_work);
+    SeriesData s{"", loop.u, loop.f, Ink::tip, Dash::solid, Mark::none, 2.2f};
+    panel.series.push_back(std::move(s));
+    return panel;
+}
+
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, bool show_map, const RatioOverlay& overlay) {
+                                    bool busy, LowerPanel lower, const RatioOverlay& overlay) {
     const DashboardLayout l = layout_dashboard(area);
     DashboardTransforms t;
     t.top_view = paint_panel(canvas, top_view_panel(sim, view), l.top_view);
-    t.force = paint_panel(canvas, force_panel_live(sim, curves), l.force);
-    t.ratio = paint_panel(
-        canvas, show_map ? map_panel_live(sim, curves, busy) : ratio_panel_live(curves, busy, overlay),
-        l.ratio);
+    t.force = paint_panel(canvas, force_panel_live(sim, curves, view.rewind), l.force);
+    t.ratio = paint_panel(canvas,
+                          lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
+                          : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
+                                                      : ratio_panel_live(curves, busy, overlay),
+                          l.ratio);
     return t;
 }
 

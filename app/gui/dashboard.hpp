@@ -3,6 +3,7 @@
 // render and the screenshots share one drawing path.
 #pragma once
 
+#include "pinned_curve.hpp"
 #include "ratio_worker.hpp"
 
 #include "fv/figure_data.hpp"
@@ -20,7 +21,20 @@ struct ViewState {
     Vec2 pan{0, 0};     // data units, added to the followed centre
     bool follow = true; // keep P's drift in view
     double trail_periods = 1.5;
+    double rewind = 0; // dimensionless time behind the live simulation that is shown (0: live)
 };
+
+// The state shown at `rewind` behind the live simulation (from its history; the live state at 0).
+struct SimMoment {
+    double tau = 0;
+    Vec2 P{0, 0}, T{0, 0}, F{0, 0}, velocity{0, 0};
+    Vec2 centre{0, 0}; // where P would be without the vibration
+    double z = 0;
+    bool slip = false;
+};
+SimMoment moment_at(const LiveSim& sim, double rewind);
+// How far back the history reaches (dimensionless time).
+double max_rewind(const LiveSim& sim);
 
 struct DashboardLayout {
     gfx::Rect top_view, force, ratio;
@@ -29,11 +43,12 @@ struct DashboardLayout {
 DashboardLayout layout_dashboard(const gfx::Rect& area);
 
 PanelData top_view_panel(const LiveSim& sim, const ViewState& view);
-PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves);
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind = 0);
 // What the ratio plot shows besides the model: measured points and the physical scale of zeta.
 struct RatioOverlay {
     const MeasurementSet* data = nullptr; // measured r_x(zeta), or none
     double vv_m_s = 0;                    // v_v = 2 pi f A; > 0 adds the v_b scale to the axis title
+    const std::vector<PinnedCurve>* pins = nullptr; // curves kept to compare with
 };
 
 // The zeta range the ratio plot spans: [0, 3], wider when measured points lie further out.
@@ -49,9 +64,22 @@ struct DashboardTransforms {
 // The map panel with the current (zeta, theta) marked.
 PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy);
 
-// show_map: the lower-right panel shows the (zeta, theta) map instead of the r_x(zeta) curves.
+// The asperity's hysteresis over the period before the shown moment: the friction force along the vibration
+// against the vibration displacement u = sin tau, and the work of the body against friction over that period
+// (F_c x_v units): W = sum of F . dP, and the loop's area, the sum of F_par du (the vibration's share).
+struct LoopData {
+    std::vector<double> u, f;
+    double work = 0, vibration_work = 0;
+    bool complete = false; // a whole period was recorded
+};
+LoopData hysteresis_loop(const LiveSim& sim, double rewind = 0);
+PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
+
+// What the lower-right panel shows.
+enum class LowerPanel { curves, map, loop };
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, bool show_map = false, const RatioOverlay& overlay = {});
+                                    bool busy, LowerPanel lower = LowerPanel::curves,
+                                    const RatioOverlay& overlay = {});
 
 } // namespace fv::app

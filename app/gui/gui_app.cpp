@@ -5,6 +5,7 @@
 #include "dashboard.hpp"
 #include "dashboard_input.hpp"
 #include "frame_stats.hpp"
+#include "help_overlay.hpp"
 #include "platform.hpp"
 #include "script.hpp"
 
@@ -35,6 +36,10 @@ std::string trace_csv(const LiveSim& sim) {
         s += buf;
     }
     return s;
+}
+
+LowerPanel lower_panel(const UiState& ui) {
+    return ui.show_loop ? LowerPanel::loop : ui.show_map ? LowerPanel::map : LowerPanel::curves;
 }
 
 // The ImGui context for the app's lifetime: fonts from the session's atlas (rasterised at the pixel ratio),
@@ -114,6 +119,7 @@ int run_gui(const GuiOptions& o) {
         // 1. All edits of the previous frame (panel, keys, mouse, drops) and of the script land here, at one
         //    point. A drop shows the last file (one data set at a time).
         if (!events.dropped.empty()) queued.load_data = std::move(events.dropped.back());
+        if (events.help_key) queued.show_help = !app.ui().show_help;
         queued.merge(script_edits(script, frame, app.ui()));
         if (o.bench_frames > 0) queued.params = bench_params(app.ui().params, frame);
         const AppState::Actions act = app.sync(queued, scripted);
@@ -139,13 +145,15 @@ int run_gui(const GuiOptions& o) {
         queued.merge(draw_controls(ui, app.sim(), curves, busy, kPanelWidth, logical.y, dialog));
         queued.merge(keyboard_edits(ui));
         handle_dashboard_mouse(app.ui().view, app.sim(), transforms);
+        if (ui.show_help && !draw_help_overlay(true, {kPanelWidth, 0, logical.x, logical.y}))
+            queued.show_help = false;
         ImGui::Render();
         const auto t_ui = Clock::now();
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, session.pixel_ratio(), gfx::colors::white);
-        transforms =
-            paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, app.sim(), ui.view,
-                            curves, busy, ui.show_map, {ui.data ? &*ui.data : nullptr, ui.vv_m_s});
+        transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, app.sim(),
+                                     ui.view, curves, busy, lower_panel(ui),
+                                     {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins});
         const auto t_layout = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());

@@ -27,6 +27,7 @@ struct PlatformOptions {
 struct PlatformEvents {
     bool close = false;               // the user closed the window
     std::vector<std::string> dropped; // files dropped onto the window, oldest first
+    bool help_key = false;            // F1 went down
 };
 
 class Platform {

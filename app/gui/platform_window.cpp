@@ -2,6 +2,8 @@
 // Dear ImGui's GLFW input backend. The only place in the app that calls GLFW or an ImGui platform backend.
 #include "platform.hpp"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <imgui.h>
 
@@ -45,7 +47,10 @@ class WindowPlatform final : public Platform {
     }
     PlatformEvents poll() override {
         ctx_.poll_events();
-        return {ctx_.should_close(), ctx_.take_dropped_paths()};
+        const bool f1 = glfwGetKey(ctx_.native(), GLFW_KEY_F1) == GLFW_PRESS;
+        const bool pressed = f1 && !f1_down_;
+        f1_down_ = f1;
+        return {ctx_.should_close(), ctx_.take_dropped_paths(), pressed};
     }
     void imgui_new_frame(gfx::Vec2 logical) override {
         ImGui_ImplGlfw_NewFrame(); // mouse, keys, time, all in window units
@@ -66,6 +71,7 @@ class WindowPlatform final : public Platform {
     float scale_;
     gfx::WindowContext ctx_;
     bool connected_ = false;
+    bool f1_down_ = false;
 };
 
 } // namespace

@@ -15,18 +15,19 @@ namespace {
 
 bool numeric(const std::string& a) {
     return a == "zeta" || a == "theta" || a == "rdisp" || a == "i" || a == "speed" || a == "trail" ||
-           a == "amplitude" || a == "frequency" || a == "vb" || a == "zss";
+           a == "amplitude" || a == "frequency" || a == "vb" || a == "zss" || a == "rewind";
 }
 bool needs_value(const std::string& a) {
     return numeric(a) || a == "model" || a == "preset" || a == "load";
 }
 bool known(const std::string& a) {
     return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset" || a == "map" ||
-           a == "curves" || a == "clear" || a == "fit";
+           a == "curves" || a == "clear" || a == "fit" || a == "back" || a == "steady" || a == "help" ||
+           a == "loop" || a == "pin" || a == "unpin";
 }
 constexpr const char* kActions =
     "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-    "amplitude frequency vb zss load clear fit";
+    "amplitude frequency vb zss load clear fit back rewind steady help loop pin unpin";
 
 } // namespace
 
@@ -105,10 +106,24 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             e.step = true;
         else if (a == "reset")
             e.reset = true;
+        else if (a == "back")
+            e.step_back = true;
+        else if (a == "rewind")
+            e.rewind = x * 2 * kPi; // periods
+        else if (a == "steady")
+            e.jump_steady = true;
+        else if (a == "help")
+            e.show_help = !ui.show_help;
+        else if (a == "loop")
+            e.show_loop = true, e.show_map = false;
+        else if (a == "pin")
+            e.pin = true;
+        else if (a == "unpin")
+            e.clear_pins = true;
         else if (a == "map")
-            e.show_map = true;
+            e.show_map = true, e.show_loop = false;
         else if (a == "curves")
-            e.show_map = false;
+            e.show_map = false, e.show_loop = false;
         else if (a == "speed")
             e.speed = x;
         else if (a == "trail")

@@ -9,6 +9,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace fv::app {
 
@@ -16,8 +17,11 @@ struct UiState {
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
     bool playing = true;
-    bool show_map = false; // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
-    double speed = 0.25;   // vibration periods per second of wall time
+    bool show_map = false;  // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
+    bool show_help = false; // the overlay that explains every symbol (F1, ?)
+    bool show_loop = false; // lower-right panel: the asperity's hysteresis loop (before the map and curves)
+    std::vector<PinnedCurve> pins;
+    double speed = 0.25; // vibration periods per second of wall time
     ViewState view;
     std::string status; // last message (file written, ...)
 
@@ -37,7 +41,7 @@ struct UiState {
 struct UiEdits {
     std::optional<Model> model;
     std::optional<Params> params;
-    std::optional<bool> playing, show_map;
+    std::optional<bool> playing, show_map, show_help, show_loop;
     std::optional<double> speed, trail_periods;
     // A or f: v_b and z_ss stay, zeta and r_disp follow (as when an experimenter turns up the amplitude).
     std::optional<double> amplitude_um, frequency_khz;
@@ -47,6 +51,10 @@ struct UiEdits {
     std::optional<std::string> load_data; // a CSV path to read (replaces the data shown)
     bool clear_data = false, fit_data = false;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;
+    // Time: scrub to this far behind the live simulation (pauses), one frame back, onto the steady state.
+    std::optional<double> rewind;
+    bool step_back = false, jump_steady = false;
+    bool pin = false, clear_pins = false; // pin the current r_x(zeta) curve; remove all pins
     std::optional<std::string> preset;
 
     // Later edits of the same field win; actions accumulate.

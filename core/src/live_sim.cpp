@@ -19,6 +19,9 @@ LiveSim::LiveSim(Model model, const Params& p) : model_(model), p_(p) {
 Vec2 LiveSim::P() const {
     return body_point(p_, tau_) + offset_;
 }
+Vec2 LiveSim::vibration_centre() const {
+    return P() - std::sin(tau_) * Vec2(std::cos(p_.theta), std::sin(p_.theta));
+}
 Vec2 LiveSim::velocity() const {
     return body_velocity(p_, tau_);
 }
@@ -49,6 +52,20 @@ void LiveSim::reset() {
     offset_ = Vec2::Zero();
     sum_ = Vec2::Zero();
     last_mean_ = Vec2(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+    history_.clear();
+    record();
+}
+
+void LiveSim::start_steady(Vec2 lag_at_period_start) {
+    const Vec2 P_before = P();
+    tau_ = std::ceil(tau_ / (2 * kPi) - 1e-12) * 2 * kPi;
+    phase_ = tau_;
+    k_ = 0;
+    sum_ = Vec2::Zero();
+    last_mean_ = Vec2(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());
+    lag_ = lag_at_period_start;
+    if (lag_.norm() > p_.zss()) lag_ *= p_.zss() / lag_.norm();
+    offset_ += P_before - P();
     history_.clear();
     record();
 }
@@ -94,6 +111,7 @@ void LiveSim::record() {
     s.P = P();
     s.T = model_ == Model::rigid ? s.P : Vec2(s.P - lag_);
     s.F = force();
+    s.slip = slipping();
     history_.push_back(s);
     const double keep = history_periods_ * 2 * kPi;
     while (!history_.empty() && history_.front().tau < tau_ - keep) history_.pop_front();

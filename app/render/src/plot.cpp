@@ -330,6 +330,7 @@ void Plot::draw(Canvas& canvas) const {
                      heatmap_image(heatmap_->values.data(), heatmap_->nx, heatmap_->ny, vlo, vhi));
     }
 
+    for (const auto& fn : underlays_) fn(canvas, tf);
     // Series, clipped to the data area.
     const Rect clip_box = {A.x0 - 100, A.y0 - 100, A.x1 + 100, A.y1 + 100};
     for (std::size_t i = 0; i < series_.size(); ++i) {

@@ -74,6 +74,13 @@ struct HeatmapData {
     std::string label;                     // colour bar title
 };
 
+// A shaded interval of the x axis over the whole height (e.g. the times the tip slips).
+struct BandData {
+    double x0 = 0, x1 = 0;
+    Ink ink = Ink::tip;
+    float opacity = 0.15f;
+};
+
 struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
     bool equal_aspect = false;
@@ -84,6 +91,7 @@ struct PanelData {
     std::vector<CircleData> circles;
     std::vector<ArrowData> arrows;
     std::optional<HeatmapData> heatmap;
+    std::vector<BandData> bands; // behind the series
     std::string legend = "best"; // best, none, top-left, top-right, bottom-left, bottom-right
     // A second x axis along the top: top value = top_scale * x (fig19: v_b in m/s beside zeta); 0: none.
     double top_scale = 0;

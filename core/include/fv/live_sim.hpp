@@ -15,6 +15,7 @@ struct LiveSample {
     double tau = 0;
     Vec2 P{0, 0}, T{0, 0}; // display coordinates (continuous across parameter changes)
     Vec2 F{0, 0};          // F / F_c
+    bool slip = false;     // the tip slips (LiveSim::slipping) at this instant
 };
 
 class LiveSim {
@@ -26,6 +27,9 @@ class LiveSim {
     void apply(Model model, const Params& p);
     // Back to tau = 0 with T(0) = P(0) (unstretched asperity) and empty histories.
     void reset();
+    // Onto the periodic steady state: at the next period start (tau a multiple of 2 pi) with the lag
+    // P - T = lag_at_period_start (the solver's L*), P's drawn position kept; the histories restart there.
+    void start_steady(Vec2 lag_at_period_start);
 
     void step(int count = 1);
 
@@ -37,6 +41,9 @@ class LiveSim {
     std::int64_t periods() const { return period_; } // completed periods since reset
     Vec2 P() const;
     Vec2 T() const { return P() - lag_; }
+    // Where P would be without the vibration (display coordinates): P moves on the line through it at
+    // theta, +-x_v (Eqs. (28)-(29): P = (zeta tau, 0) + sin(tau) (cos theta, sin theta)).
+    Vec2 vibration_centre() const;
     Vec2 velocity() const; // dP/dtau, Eq. (1)
     Vec2 force() const;    // F/F_c: (P - T)/z_ss (Dahl), or minus the unit velocity reversed (rigid, Eq. (2))
     double z() const { return lag_.norm(); }

@@ -83,6 +83,10 @@ class Plot {
     void add_overlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
         overlays_.push_back(std::move(fn));
     }
+    /// Drawing behind the series (after the grid and heat map, clipped to the data area): shading.
+    void add_underlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
+        underlays_.push_back(std::move(fn));
+    }
 
     /// Computes ranges, ticks and margins (needs the canvas for text metrics).
     PlotTransform layout(const Canvas& canvas) const;
@@ -93,6 +97,7 @@ class Plot {
     std::vector<Series> series_;
     std::optional<HeatMap> heatmap_;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_;
+    std::vector<std::function<void(Canvas&, const PlotTransform&)>> underlays_;
 };
 
 } // namespace fv::gfx

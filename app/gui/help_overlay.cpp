@@ -1,0 +1,102 @@
+#include "help_overlay.hpp"
+
+#include "figures/figure_painter.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <iterator>
+
+namespace fv::app {
+namespace {
+
+struct Entry {
+    Ink ink; // the swatch's colour (Ink::automatic: no swatch)
+    const char* symbol;
+    const char* meaning;
+};
+
+// What the top view, the force plot and the ratio plot draw (dashboard.cpp), in the order a first look meets
+// them.
+constexpr Entry kScene[] = {
+    {Ink::body, "P",
+     "a point of the sliding body: drifts at v_b along x and vibrates ±x_v along the dotted "
+     "line at angle θ (Eqs. 28–29)"},
+    {Ink::spring, "body (dashed box)", "the slider that carries P; v_b arrow: its mean velocity"},
+    {Ink::tip, "T", "the tip of the asperity: where the contact meets the fixed plane"},
+    {Ink::pull, "spring, green",
+     "the asperity P–T sticks (i = 0) or creeps (i > 0): z = |P − T| < z_ss, T "
+     "barely moves"},
+    {Ink::tip, "spring, vermillion", "the asperity slips: z = z_ss, T is dragged behind P (Eq. 27)"},
+    {Ink::pull, "circle", "radius z_ss around P: how far the asperity stretches before it slips"},
+    {Ink::body, "v", "P's velocity: v_b plus the vibration velocity (Eq. 1), drawn at 0.4 x_v per v_v"},
+    {Ink::black, "friction", "the friction force on the body, −F: the asperity pulls P back towards T"},
+};
+constexpr Entry kPlots[] = {
+    {Ink::force, "F_x, F_y, |F|",
+     "friction force F/F_c = (P − T)/z_ss (Dahl; rigid: F_c along the velocity), "
+     "positive F_x resists v_b"},
+    {Ink::tip, "shading", "times the tip slips"},
+    {Ink::black, "averaged F_x",
+     "F_x averaged over the period before each instant (Eq. 30): it settles on "
+     "r_x once the start-up transient is over"},
+    {Ink::automatic, "r_x, r_y",
+     "the period-mean friction along and across v_b in the periodic steady state, "
+     "over F_c (Eqs. 31, 33): below 1 means vibration reduces friction"},
+    {Ink::automatic, "ζ, θ, r_disp, i",
+     "v_b/v_v (velocity ratio), vibration angle, x_v/z_ss (amplitude over "
+     "the asperity's reach), Dahl shape exponent (Eq. 12)"},
+    {Ink::automatic, "keys",
+     "Space play/pause, ← → one frame, J steady state, R reset, S screenshot, F1 or ? "
+     "this help, Esc quit"},
+};
+
+void section(const char* title, const Entry* begin, const Entry* end) {
+    ImGui::TextUnformatted(title);
+    ImGui::Separator();
+    for (const Entry* e = begin; e != end; ++e) {
+        if (e->ink != Ink::automatic) {
+            const gfx::Color c = ink_color(e->ink, 0);
+            ImGui::ColorButton(e->symbol, ImVec4(c.r, c.g, c.b, 1),
+                               ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
+                               ImVec2(14, 14));
+        } else {
+            ImGui::Dummy(ImVec2(14, 14));
+        }
+        ImGui::SameLine();
+        ImGui::TextUnformatted(e->symbol);
+        ImGui::SameLine(178);
+        ImGui::PushTextWrapPos(0);
+        ImGui::TextUnformatted(e->meaning);
+        ImGui::PopTextWrapPos();
+    }
+}
+
+} // namespace
+
+bool draw_help_overlay(bool open, const gfx::Rect& area) {
+    if (!open) return false;
+    const float w = std::min(area.width() - 40, 720.0f);
+    ImGui::SetNextWindowPos(ImVec2(area.x0 + (area.width() - w) / 2, area.y0 + 20), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.96f);
+    bool keep = true;
+    ImGui::Begin("What you see (F1 or ? closes)", &keep,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_NoSavedSettings);
+    section("Top view", std::begin(kScene), std::end(kScene));
+    ImGui::Spacing();
+    section("Plots and numbers", std::begin(kPlots), std::end(kPlots));
+    ImGui::End();
+    return keep;
+}
+
+bool help_key_pressed() {
+    const ImGuiIO& io = ImGui::GetIO();
+    if (io.WantTextInput) return false;
+    for (int k = 0; k < io.InputQueueCharacters.Size; ++k)
+        if (io.InputQueueCharacters[k] == '?') return true;
+    return false;
+}
+
+} // namespace fv::app
