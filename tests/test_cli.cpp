@@ -374,6 +374,45 @@ TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad dat
     CHECK(bad.err.find("bad.csv:2:") != std::string::npos);
 }
 
+TEST_CASE("CLI: fig19 applies --amplitude and --frequency (v_b axis, z_ss) and calls only files that say so "
+          "synthetic",
+          "[cli][render][fit]") {
+    const std::string dir = scratch_dir() + "/fig19-units";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
+    auto caption = [&](const std::string& flags) {
+        const Run r =
+            run("render --figure fig19 --data " + data + " " + flags + " --size 480x320 --out " + dir);
+        REQUIRE(r.code == 0);
+        return nlohmann::json::parse(slurp(dir + "/fig19.json"));
+    };
+    // v_v = 2 pi f A: 0.2639 m/s at 0.7 um, 60 kHz (the default), 0.1319 m/s at 1.4 um, 15 kHz.
+    const nlohmann::json paper = caption(""), other = caption("--amplitude 1.4 --frequency 15");
+    const std::string c0 = paper.at("caption"), c1 = other.at("caption");
+    CHECK(c0.find("v_v = 2π f A = 0.2639 m/s") != std::string::npos);
+    CHECK(c1.find("v_v = 2π f A = 0.1319 m/s") != std::string::npos);
+    CHECK(c1.find("A = 1.4 µm, f = 15 kHz") != std::string::npos);
+    // z_ss = A/r_disp doubles with A (the fitted r_disp of a zeta column does not depend on A).
+    auto zss = [](const std::string& c) {
+        const std::size_t at = c.find("z_ss = A/r_disp = ");
+        REQUIRE(at != std::string::npos);
+        return std::stod(c.substr(at + 18));
+    };
+    CHECK(zss(c1) == Approx(2 * zss(c0)).epsilon(2e-3));
+    CHECK(std::string(paper.at("title")).find("synthetic example data") != std::string::npos);
+    // The same points without the file's comment lines: the user's own data, called measurements.
+    std::ifstream in(data);
+    std::ofstream own(dir + "/own.csv");
+    for (std::string line; std::getline(in, line);)
+        if (line.rfind("#", 0) != 0) own << line << "\n";
+    own.close();
+    const Run r = run("render --figure fig19 --data " + dir + "/own.csv --size 480x320 --out " + dir);
+    REQUIRE(r.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(slurp(dir + "/fig19.json"));
+    CHECK(std::string(j.at("title")).find("model vs. measurements") != std::string::npos);
+    CHECK(std::string(j.at("caption")).find("synthetic") == std::string::npos);
+}
+
 // ---- The figure registry through the executable: --list, every id rendered, captions, unknown ids
 
 namespace {
