@@ -199,3 +199,23 @@ TEST_CASE("App pins: up to six r_x(zeta) curves kept with their parameters, clea
     a.sync(clear);
     CHECK(a.ui().pins.empty());
 }
+
+TEST_CASE("App presentation: every length of a panel grows by the factor, its data do not",
+          "[gui][present]") {
+    LiveSim sim(Model::dahl, Params{0.3, kPi / 3, 2, 0});
+    sim.step(200);
+    const PanelData a = top_view_panel(sim, ViewState{});
+    const PanelData b = enlarged(a, 1.4f);
+    CHECK(b.text_scale == Approx(1.4));
+    REQUIRE(a.series.size() == b.series.size());
+    for (std::size_t k = 0; k < a.series.size(); ++k) {
+        CHECK(b.series[k].width == Approx(1.4 * a.series[k].width));
+        CHECK(b.series[k].x == a.series[k].x);
+    }
+    for (std::size_t k = 0; k < a.points.size(); ++k)
+        CHECK(b.points[k].size == Approx(1.4 * a.points[k].size));
+    for (std::size_t k = 0; k < a.arrows.size(); ++k)
+        CHECK(b.arrows[k].width == Approx(1.4 * a.arrows[k].width));
+    CHECK(b.x_min == a.x_min);
+    CHECK(b.y_max == a.y_max);
+}

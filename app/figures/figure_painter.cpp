@@ -89,6 +89,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     plot.y_axis.min = panel.y_min;
     plot.y_axis.max = panel.y_max;
     plot.equal_aspect = panel.equal_aspect;
+    plot.font_size *= panel.text_scale;
     plot.top_scale = panel.top_scale;
     plot.top_title = panel.top_title;
     if (panel.legend == "none")
@@ -166,7 +167,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
             if (flip) nx = -nx, ny = -ny;
             gfx::TextStyle ts;
-            ts.size = 15;
+            ts.size = 15 * pd->text_scale;
             ts.color = ink_color(s.ink, 0);
             ts.halign =
                 nx > 0.3f ? gfx::HAlign::Left : (nx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
@@ -179,7 +180,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
             const float len = std::hypot(to.x - from.x, to.y - from.y);
             if (len < 2 || a.label.empty()) continue;
             gfx::TextStyle ts;
-            ts.size = 14;
+            ts.size = 14 * pd->text_scale;
             ts.color = ink_color(a.ink, 0);
             if (a.label_dy != 0) {
                 ts.halign = gfx::HAlign::Center;
@@ -194,7 +195,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 uy > 0.3f ? gfx::VAlign::Top : (uy < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
             c.text({to.x + ux * 6, to.y + uy * 6}, a.label, ts);
         }
-        for (const PointData& p : pd->points) label_point(c, to_px(tf, p.at), centre, p, 15);
+        for (const PointData& p : pd->points) label_point(c, to_px(tf, p.at), centre, p, 15 * pd->text_scale);
     });
     plot.draw(canvas);
     return plot.layout(canvas);

@@ -89,6 +89,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (e.playing) ui_.playing = *e.playing;
     if (e.show_help) ui_.show_help = *e.show_help;
     if (e.show_loop) ui_.show_loop = *e.show_loop;
+    if (e.presentation) ui_.presentation = *e.presentation;
     if (e.clear_pins) ui_.pins.clear(), ui_.status = "pins cleared";
     bool ask_worker = false;
     if (e.show_map && *e.show_map != ui_.show_map) ui_.show_map = *e.show_map, ask_worker = true;

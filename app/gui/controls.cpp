@@ -23,6 +23,7 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.show_map) show_map = o.show_map;
     if (o.show_help) show_help = o.show_help;
     if (o.show_loop) show_loop = o.show_loop;
+    if (o.presentation) presentation = o.presentation;
     pin |= o.pin;
     if (o.clear_pins) clear_pins = true, pin = false;
     if (o.speed) speed = o.speed;
@@ -81,7 +82,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_MenuBar);
     e.merge(draw_menu(ui, dialog));
-    ImGui::PushItemWidth(-72);
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
 
     Params p = ui.params;
     double theta_deg = p.theta * 180 / kPi;
@@ -131,17 +132,19 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         e.params = p;
     }
 
-    ImGui::Separator();
-    e.merge(draw_vibration_controls(ui));
-
-    ImGui::Separator();
-    ImGui::TextUnformatted("Paper figures");
-    for (const FigureSpec* f : presets()) {
-        if (ImGui::Button(f->id.c_str())) e.preset = f->id;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
-        ImGui::SameLine();
+    // Presentation mode folds the physical units, the presets, the search details and the data away.
+    if (!ui.presentation) {
+        ImGui::Separator();
+        e.merge(draw_vibration_controls(ui));
+        ImGui::Separator();
+        ImGui::TextUnformatted("Paper figures");
+        for (const FigureSpec* f : presets()) {
+            if (ImGui::Button(f->id.c_str())) e.preset = f->id;
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
+            ImGui::SameLine();
+        }
+        ImGui::NewLine();
     }
-    ImGui::NewLine();
 
     ImGui::Separator();
     ImGui::TextUnformatted("Animation");
@@ -228,7 +231,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
             ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.1f, 1.0f), "r_x(ζ): %d points failed, not drawn",
                                curves->model_failed);
         // What the search did (as `frictionviz ratio` says it), not a claim about how fast it converged.
-        if (curves->request.model == Model::dahl) {
+        if (curves->request.model == Model::dahl && !ui.presentation) {
             const SteadyResult& r = curves->current;
             ImGui::Text("search: %d periods, %d Newton updates", r.periods, r.newton_steps);
             if (ImGui::IsItemHovered())
@@ -250,6 +253,9 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         ImGui::SetTooltip("r_x over the velocity ratio for this θ, r_disp, i, and the rigid model");
     ImGui::SameLine();
     ImGui::RadioButton("(ζ, θ) map", &panel, 1);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
     ImGui::SameLine();
     ImGui::RadioButton("loop", &panel, 2);
     if (ImGui::IsItemHovered())
@@ -264,11 +270,10 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::Button("Clear pins")) e.clear_pins = true;
     ImGui::SameLine();
     ImGui::Text("%zu pinned", ui.pins.size());
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
-    ImGui::Separator();
-    e.merge(draw_data_controls(ui, dialog));
+    if (!ui.presentation) {
+        ImGui::Separator();
+        e.merge(draw_data_controls(ui, dialog));
+    }
     // Export trace CSV and Screenshot [S] are in the File menu: the panel keeps its rows for the teaching.
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::PopItemWidth();
@@ -286,6 +291,7 @@ UiEdits keyboard_edits(const UiState& ui) {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), true)) e.step_back = true;
     if (ImGui::IsKeyPressed('J', false)) e.jump_steady = true;
     if (help_key_pressed()) e.show_help = !ui.show_help;
+    if (ImGui::IsKeyPressed('P', false)) e.presentation = !ui.presentation;
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;
     if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;

@@ -227,11 +227,11 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
                 panel.bands.push_back({std::max(a, t0), h[k].tau, Ink::tip, 0.13f});
             }
         }
-        panel.series.push_back(key("T slips (shaded)", Ink::tip, 9, 0.25f));
+        panel.series.push_back(key("T slips", Ink::tip, 9, 0.25f));
     }
     // F_x averaged over the period before each instant (prefix sums over the samples): once the transient is
     // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
-    SeriesData run{"F_{x} averaged over the last period", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
+    SeriesData run{"F_{x}, mean of last period", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
     {
         std::vector<double> prefix(h.size() + 1, 0.0);
         for (std::size_t k = 0; k < h.size(); ++k) prefix[k + 1] = prefix[k] + h[k].F.x();
@@ -377,17 +377,29 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     return panel;
 }
 
+PanelData enlarged(PanelData panel, float k) {
+    if (k == 1) return panel;
+    panel.text_scale *= k;
+    for (SeriesData& x : panel.series) x.width *= k;
+    for (SegmentData& x : panel.segments) x.width *= k;
+    for (ArrowData& x : panel.arrows) x.width *= k;
+    for (CircleData& x : panel.circles) x.width *= k;
+    for (PointData& x : panel.points) x.size *= k;
+    return panel;
+}
+
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, LowerPanel lower, const RatioOverlay& overlay) {
+                                    bool busy, LowerPanel lower, const RatioOverlay& overlay, float style) {
     const DashboardLayout l = layout_dashboard(area);
     DashboardTransforms t;
-    t.top_view = paint_panel(canvas, top_view_panel(sim, view), l.top_view);
-    t.force = paint_panel(canvas, force_panel_live(sim, curves, view.rewind), l.force);
+    t.top_view = paint_panel(canvas, enlarged(top_view_panel(sim, view), style), l.top_view);
+    t.force = paint_panel(canvas, enlarged(force_panel_live(sim, curves, view.rewind), style), l.force);
     t.ratio = paint_panel(canvas,
-                          lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
-                          : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
-                                                      : ratio_panel_live(curves, busy, overlay),
+                          enlarged(lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
+                                   : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
+                                                               : ratio_panel_live(curves, busy, overlay),
+                                   style),
                           l.ratio);
     return t;
 }

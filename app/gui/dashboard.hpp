@@ -80,6 +80,8 @@ enum class LowerPanel { curves, map, loop };
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
                                     bool busy, LowerPanel lower = LowerPanel::curves,
-                                    const RatioOverlay& overlay = {});
+                                    const RatioOverlay& overlay = {}, float style = 1);
+// The panel with its text, lines and markers k times larger (presentation mode).
+PanelData enlarged(PanelData panel, float k);
 
 } // namespace fv::app

@@ -111,6 +111,10 @@ UiEdits draw_menu(const UiState& ui, OpenDataDialog& dialog) {
         if (ImGui::MenuItem("Quit", "Esc")) e.quit = true;
         ImGui::EndMenu();
     }
+    if (ImGui::BeginMenu("View")) {
+        if (ImGui::MenuItem("Presentation mode", "P", ui.presentation)) e.presentation = !ui.presentation;
+        ImGui::EndMenu();
+    }
     if (ImGui::BeginMenu("Help")) {
         if (ImGui::MenuItem("What you see", "F1, ?", ui.show_help)) e.show_help = !ui.show_help;
         ImGui::EndMenu();

@@ -26,6 +26,8 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using Ms = std::chrono::duration<double, std::milli>;
 constexpr float kPanelWidth = 340;
+// Presentation mode: type, lines and markers this much larger (the panel's font 22 px instead of 15).
+constexpr float kPresentationScale = 1.4f;
 
 std::string trace_csv(const LiveSim& sim) {
     std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy\n";
@@ -136,24 +138,28 @@ int run_gui(const GuiOptions& o) {
         // 3. Draw: the dashboard through the canvas, the panel through ImGui on top; the panel's and the
         //    mouse's edits are queued for the next frame.
         const gfx::Vec2 logical = session.logical_page();
+        const bool present = app.ui().presentation;
+        const float panel_w = present ? 450 : kPanelWidth;
+        ImGui::GetIO().FontDefault = session.fonts().font_for(present ? 22 : 15);
         platform->imgui_new_frame(logical);
         if (!real_time) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
         const UiState& ui = app.ui();
         const auto curves = app.worker().latest();
         const bool busy = app.worker().busy();
-        queued.merge(draw_controls(ui, app.sim(), curves, busy, kPanelWidth, logical.y, dialog));
+        queued.merge(draw_controls(ui, app.sim(), curves, busy, panel_w, logical.y, dialog));
         queued.merge(keyboard_edits(ui));
         handle_dashboard_mouse(app.ui().view, app.sim(), transforms);
-        if (ui.show_help && !draw_help_overlay(true, {kPanelWidth, 0, logical.x, logical.y}))
+        if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
             queued.show_help = false;
         ImGui::Render();
         const auto t_ui = Clock::now();
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(logical, session.pixel_ratio(), gfx::colors::white);
-        transforms = paint_dashboard(canvas, {kPanelWidth + 6, 4, logical.x - 4, logical.y - 4}, app.sim(),
+        transforms = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app.sim(),
                                      ui.view, curves, busy, lower_panel(ui),
-                                     {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins});
+                                     {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins},
+                                     present ? kPresentationScale : 1.0f);
         const auto t_layout = Clock::now();
         canvas.end();
         session.imgui().render(*ImGui::GetDrawData());

@@ -20,14 +20,13 @@ bool numeric(const std::string& a) {
 bool needs_value(const std::string& a) {
     return numeric(a) || a == "model" || a == "preset" || a == "load";
 }
-bool known(const std::string& a) {
-    return needs_value(a) || a == "play" || a == "pause" || a == "step" || a == "reset" || a == "map" ||
-           a == "curves" || a == "clear" || a == "fit" || a == "back" || a == "steady" || a == "help" ||
-           a == "loop" || a == "pin" || a == "unpin";
-}
 constexpr const char* kActions =
     "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-    "amplitude frequency vb zss load clear fit back rewind steady help loop pin unpin";
+    "amplitude frequency vb zss load clear fit back rewind steady help loop pin unpin present";
+// One list of the actions: the message's.
+bool known(const std::string& a) {
+    return !a.empty() && (" " + std::string(kActions) + " ").find(" " + a + " ") != std::string::npos;
+}
 
 } // namespace
 
@@ -120,6 +119,8 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             e.pin = true;
         else if (a == "unpin")
             e.clear_pins = true;
+        else if (a == "present")
+            e.presentation = !ui.presentation;
         else if (a == "map")
             e.show_map = true, e.show_loop = false;
         else if (a == "curves")

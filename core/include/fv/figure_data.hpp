@@ -93,6 +93,7 @@ struct PanelData {
     std::optional<HeatmapData> heatmap;
     std::vector<BandData> bands; // behind the series
     std::string legend = "best"; // best, none, top-left, top-right, bottom-left, bottom-right
+    float text_scale = 1;        // all of the panel's text (the app's presentation mode)
     // A second x axis along the top: top value = top_scale * x (fig19: v_b in m/s beside zeta); 0: none.
     double top_scale = 0;
     std::string top_title;
