@@ -200,8 +200,8 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     const double mean = sim.last_period_mean().x();
     if (std::isfinite(mean)) {
         const bool settled = curves && std::abs(mean - curves->current.rx) < 2e-3;
-        ImGui::Text("mean F_x, last period %s%s", format_number("%.4f", mean).c_str(),
-                    curves ? (settled ? "  = r_x: steady" : "  ≠ r_x: transient") : "");
+        ImGui::Text("period mean F_x %s%s", format_number("%.4f", mean).c_str(),
+                    curves ? (settled ? " = r_x: steady" : " ≠ r_x: transient") : "");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "The mean of F_x over the last animated period (Eq. 30) approaches the steady r_x "
