@@ -219,3 +219,24 @@ TEST_CASE("App presentation: every length of a panel grows by the factor, its da
     CHECK(b.x_min == a.x_min);
     CHECK(b.y_max == a.y_max);
 }
+
+TEST_CASE("App mechanism: the live arrows are the velocity and the friction on the body now",
+          "[gui][mechanism]") {
+    const Params p{0.5, kPi / 2, 2, 1};
+    LiveSim rigid(Model::rigid, p);
+    rigid.step(100);
+    const PanelData m = mechanism_panel_live(rigid);
+    REQUIRE(m.arrows.size() >= 2);
+    // Eq. (1): v/v_v = (zeta + cos tau cos theta, cos tau sin theta); Eq. (2): friction -F_c v/|v|.
+    const double c = std::cos(rigid.tau());
+    const Vec2 v{p.zeta + c * std::cos(p.theta), c * std::sin(p.theta)};
+    const ArrowData& vel = m.arrows[m.arrows.size() - 2];
+    const ArrowData& fr = m.arrows.back();
+    CHECK((vel.to - v).norm() < 1e-12);
+    CHECK((fr.to + v / v.norm()).norm() < 1e-12);
+    // Dahl: the friction on the body is -F, F = (P - T)/z_ss.
+    LiveSim dahl(Model::dahl, p);
+    dahl.step(100);
+    const PanelData d = mechanism_panel_live(dahl);
+    CHECK((d.arrows.back().to + (dahl.P() - dahl.T()) / p.zss()).norm() < 1e-9);
+}

@@ -89,6 +89,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (e.playing) ui_.playing = *e.playing;
     if (e.show_help) ui_.show_help = *e.show_help;
     if (e.show_loop) ui_.show_loop = *e.show_loop;
+    if (e.show_mechanism) ui_.show_mechanism = *e.show_mechanism;
     if (e.presentation) ui_.presentation = *e.presentation;
     if (e.clear_pins) ui_.pins.clear(), ui_.status = "pins cleared";
     bool ask_worker = false;

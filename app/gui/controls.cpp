@@ -23,6 +23,7 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.show_map) show_map = o.show_map;
     if (o.show_help) show_help = o.show_help;
     if (o.show_loop) show_loop = o.show_loop;
+    if (o.show_mechanism) show_mechanism = o.show_mechanism;
     if (o.presentation) presentation = o.presentation;
     pin |= o.pin;
     if (o.clear_pins) clear_pins = true, pin = false;
@@ -246,13 +247,13 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     }
     ImGui::Separator();
     // The lower-right panel: the r_x(zeta) curves (with pins), the (zeta, theta) map or the hysteresis loop.
-    int panel = ui.show_loop ? 2 : (ui.show_map ? 1 : 0);
+    int panel = ui.show_mechanism ? 3 : ui.show_loop ? 2 : (ui.show_map ? 1 : 0);
     const int before = panel;
     ImGui::RadioButton("r_x(ζ)", &panel, 0);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("r_x over the velocity ratio for this θ, r_disp, i, and the rigid model");
     ImGui::SameLine();
-    ImGui::RadioButton("(ζ, θ) map", &panel, 1);
+    ImGui::RadioButton("map", &panel, 1);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
@@ -262,7 +263,13 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         ImGui::SetTooltip(
             "the asperity's force along the vibration against the vibration displacement over the "
             "last period: its area is the energy the vibration loses to friction");
-    if (panel != before) e.show_map = panel == 1, e.show_loop = panel == 2;
+    ImGui::SameLine();
+    ImGui::RadioButton("why", &panel, 3);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "the mechanism (the paper's Fig. 4): the body's velocity turns with the vibration, the "
+            "friction turns with it, and its mean against v_b is less than F_c");
+    if (panel != before) e.show_map = panel == 1, e.show_loop = panel == 2, e.show_mechanism = panel == 3;
     if (ImGui::Button("Pin curve")) e.pin = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("keep this r_x(ζ) curve on the plot to compare with others (up to %zu)", kMaxPins);

@@ -1,4 +1,5 @@
 #include "dashboard.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
 #include "fv/paper_scheme.hpp"
@@ -377,6 +378,37 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     return panel;
 }
 
+PanelData mechanism_panel_live(const LiveSim& sim, double rewind) {
+    // The paper's Fig. 4 (the registered fig4: velocity and friction of the rigid model at tau = k pi/4,
+    // their loci, the mean friction) for the current zeta and theta, kept while they stay; the live instant
+    // on top.
+    static std::optional<std::pair<Vec2, PanelData>> cached;
+    const Params& p = sim.params();
+    const Vec2 key{p.zeta, p.theta};
+    if (!cached || cached->first != key) {
+        FigureInputs in;
+        in.zeta = p.zeta;
+        in.theta_deg = p.theta * 180 / kPi;
+        PanelData base = compute_figure(find_registered("fig4")->make(in)).panels.at(0);
+        // Faded: the live arrows are the ones to follow.
+        for (ArrowData& a : base.arrows) a.width *= 0.6f, a.label.clear();
+        for (SeriesData& x : base.series) x.opacity *= 0.6f;
+        cached.emplace(key, std::move(base));
+    }
+    PanelData panel = cached->second;
+    const SimMoment m = moment_at(sim, rewind);
+    const Vec2 v = m.velocity;
+    // The friction on the body: against the velocity (rigid), or -F of the asperity (Dahl).
+    const Vec2 f = sim.model() == Model::rigid ? Vec2(v.norm() > 0 ? Vec2(-v / v.norm()) : Vec2(Vec2::Zero()))
+                                               : Vec2(-m.F);
+    panel.title = "mechanism now (τ/2π = " + format_number("%.2f", std::fmod(m.tau / (2 * kPi), 1.0)) +
+                  "): v turns, friction follows";
+    panel.arrows.push_back({Vec2::Zero(), v, Ink::body, "v", 3.0f});
+    panel.arrows.push_back({Vec2::Zero(), f, Ink::tip, "friction", 3.0f});
+    panel.legend = "none"; // the loci are explained by the help overlay; a legend would cover arrows
+    return panel;
+}
+
 PanelData enlarged(PanelData panel, float k) {
     if (k == 1) return panel;
     panel.text_scale *= k;
@@ -396,9 +428,10 @@ DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, 
     t.top_view = paint_panel(canvas, enlarged(top_view_panel(sim, view), style), l.top_view);
     t.force = paint_panel(canvas, enlarged(force_panel_live(sim, curves, view.rewind), style), l.force);
     t.ratio = paint_panel(canvas,
-                          enlarged(lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
-                                   : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
-                                                               : ratio_panel_live(curves, busy, overlay),
+                          enlarged(lower == LowerPanel::map         ? map_panel_live(sim, curves, busy)
+                                   : lower == LowerPanel::loop      ? loop_panel_live(sim, view.rewind)
+                                   : lower == LowerPanel::mechanism ? mechanism_panel_live(sim, view.rewind)
+                                                                    : ratio_panel_live(curves, busy, overlay),
                                    style),
                           l.ratio);
     return t;

@@ -76,7 +76,10 @@ LoopData hysteresis_loop(const LiveSim& sim, double rewind = 0);
 PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
 
 // What the lower-right panel shows.
-enum class LowerPanel { curves, map, loop };
+enum class LowerPanel { curves, map, loop, mechanism };
+// The mechanism (the paper's Fig. 4) live: the velocity and the friction on the body at the shown instant
+// over the rigid model's arrows at tau = k pi/4, their loci and the mean friction.
+PanelData mechanism_panel_live(const LiveSim& sim, double rewind = 0);
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
                                     bool busy, LowerPanel lower = LowerPanel::curves,

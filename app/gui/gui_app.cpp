@@ -41,7 +41,10 @@ std::string trace_csv(const LiveSim& sim) {
 }
 
 LowerPanel lower_panel(const UiState& ui) {
-    return ui.show_loop ? LowerPanel::loop : ui.show_map ? LowerPanel::map : LowerPanel::curves;
+    return ui.show_mechanism ? LowerPanel::mechanism
+           : ui.show_loop    ? LowerPanel::loop
+           : ui.show_map     ? LowerPanel::map
+                             : LowerPanel::curves;
 }
 
 // The ImGui context for the app's lifetime: fonts from the session's atlas (rasterised at the pixel ratio),

@@ -22,7 +22,7 @@ bool needs_value(const std::string& a) {
 }
 constexpr const char* kActions =
     "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-    "amplitude frequency vb zss load clear fit back rewind steady help loop pin unpin present";
+    "amplitude frequency vb zss load clear fit back rewind steady help loop why pin unpin present";
 // One list of the actions: the message's.
 bool known(const std::string& a) {
     return !a.empty() && (" " + std::string(kActions) + " ").find(" " + a + " ") != std::string::npos;
@@ -114,7 +114,9 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
         else if (a == "help")
             e.show_help = !ui.show_help;
         else if (a == "loop")
-            e.show_loop = true, e.show_map = false;
+            e.show_loop = true, e.show_map = false, e.show_mechanism = false;
+        else if (a == "why")
+            e.show_mechanism = true, e.show_loop = false, e.show_map = false;
         else if (a == "pin")
             e.pin = true;
         else if (a == "unpin")
@@ -122,9 +124,9 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
         else if (a == "present")
             e.presentation = !ui.presentation;
         else if (a == "map")
-            e.show_map = true, e.show_loop = false;
+            e.show_map = true, e.show_loop = false, e.show_mechanism = false;
         else if (a == "curves")
-            e.show_map = false, e.show_loop = false;
+            e.show_map = false, e.show_loop = false, e.show_mechanism = false;
         else if (a == "speed")
             e.speed = x;
         else if (a == "trail")

@@ -5,8 +5,8 @@
 // from the menu or a drop; no spaces in PATH; relative to the script's directory), clear (the data), fit
 // (r_disp and i to the data; waits for it), back (one frame back in time), rewind PERIODS (show the state
 // that long ago; pauses), steady (jump onto the periodic steady state), help (show or hide the help overlay),
-// loop (the hysteresis loop), pin (the current r_x(zeta) curve; waits for it), unpin (all). Edits of frame f
-// are applied at the start of frame f, like edits from the panel.
+// loop (the hysteresis loop), why (the mechanism, Fig. 4), pin (the current r_x(zeta) curve; waits for it),
+// unpin (all). Edits of frame f are applied at the start of frame f, like edits from the panel.
 #pragma once
 
 #include "ui_state.hpp"

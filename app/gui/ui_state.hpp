@@ -20,7 +20,8 @@ struct UiState {
     bool show_map = false;  // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
     bool show_loop = false; // lower-right panel: the asperity's hysteresis loop (before the map and curves)
-    bool presentation = false; // larger type, thicker lines, the advanced panels folded away (View menu, P)
+    bool show_mechanism = false; // lower-right panel: the mechanism (Fig. 4) live (before all others)
+    bool presentation = false;   // larger type, thicker lines, the advanced panels folded away (View menu, P)
     std::vector<PinnedCurve> pins;
     double speed = 0.25; // vibration periods per second of wall time
     ViewState view;
@@ -42,7 +43,7 @@ struct UiState {
 struct UiEdits {
     std::optional<Model> model;
     std::optional<Params> params;
-    std::optional<bool> playing, show_map, show_help, show_loop, presentation;
+    std::optional<bool> playing, show_map, show_help, show_loop, show_mechanism, presentation;
     std::optional<double> speed, trail_periods;
     // A or f: v_b and z_ss stay, zeta and r_disp follow (as when an experimenter turns up the amplitude).
     std::optional<double> amplitude_um, frequency_khz;
