@@ -1,11 +1,13 @@
-// Time of each output format per figure (issue #13 item 8), in process: the figure's data (computed once,
-// not counted), then per format the drawing and encoding: png = paint + GL replay + readback + PNG encoding,
-// svg / pdf = paint (display list) + cairo replay into the document. Then the whole command end to end,
-// `frictionviz render --figure all --format F` for png, svg, pdf and png,svg,pdf (wall time, median of runs).
+// Time of each output format per registered figure (issue #13 item 8), in process: the figure's data
+// (computed once, its own column), then per format the drawing and encoding: png = paint + GL replay +
+// readback + PNG encoding, svg / pdf = paint (display list) + cairo replay into the document. Then the whole
+// command end to end, `frictionviz render --figure all --format F` for png, svg, pdf and png,svg,pdf (wall
+// time, median of runs).
 //   usage: fv_render_formats [--exe FRICTIONVIZ] [--size WxH] [--scale S] [--runs R]
 #include "figures/render_session.hpp"
 
 #include "fv/figure_data.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
 #include "fv/gfx/png.hpp"
 #include "fv/gfx/vector_output.hpp"
@@ -51,15 +53,24 @@ int main(int argc, char** argv) {
     co.scale = static_cast<float>(scale);
     fv::app::RenderSession session(co);
 
-    std::vector<fv::FigureSpec> specs = fv::paper_figures();
-    specs.push_back(fv::scene_figure({0.3, fv::kPi / 6, 2, 1}));
-    specs.push_back(fv::map_figure(2, 1));
-    std::printf("%s at --scale %g, seconds per figure (median of %d; data computed once, not counted)\n",
-                size.c_str(), scale, runs);
-    std::printf("%-8s %8s %8s %8s %10s %10s\n", "figure", "png", "svg", "pdf", "svg bytes", "pdf bytes");
-    double total[3] = {0, 0, 0};
+    // Every registered figure with the inputs of its README rendering (a relative data path is relative to
+    // the source tree), so that a new figure is timed without touching this file.
+    std::vector<fv::FigureSpec> specs;
+    for (const fv::FigureEntry& e : fv::figure_registry()) {
+        fv::FigureInputs in = e.example;
+        if (!in.data.empty() && in.data.front() != '/') in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
+        specs.push_back(e.make(in));
+    }
+    std::printf("%s at --scale %g, seconds per figure (data: once; formats: median of %d)\n", size.c_str(),
+                scale, runs);
+    std::printf("%-8s %8s %8s %8s %8s %10s %10s\n", "figure", "data", "png", "svg", "pdf", "svg bytes",
+                "pdf bytes");
+    double total[3] = {0, 0, 0}, total_data = 0;
     for (const fv::FigureSpec& spec : specs) {
+        const auto td = Clock::now();
         const fv::FigureData data = fv::compute_figure(spec);
+        const double data_s = seconds_since(td);
+        total_data += data_s;
         std::vector<double> t[3];
         std::size_t bytes[2] = {0, 0};
         for (int r = 0; r < runs; ++r) {
@@ -77,10 +88,10 @@ int main(int argc, char** argv) {
         }
         const double m[3] = {median(t[0]), median(t[1]), median(t[2])};
         for (int f = 0; f < 3; ++f) total[f] += m[f];
-        std::printf("%-8s %8.3f %8.3f %8.3f %10zu %10zu\n", spec.id.c_str(), m[0], m[1], m[2], bytes[0],
-                    bytes[1]);
+        std::printf("%-8s %8.3f %8.3f %8.3f %8.3f %10zu %10zu\n", spec.id.c_str(), data_s, m[0], m[1], m[2],
+                    bytes[0], bytes[1]);
     }
-    std::printf("%-8s %8.3f %8.3f %8.3f\n\n", "sum", total[0], total[1], total[2]);
+    std::printf("%-8s %8.3f %8.3f %8.3f %8.3f\n\n", "sum", total_data, total[0], total[1], total[2]);
 
     std::printf("frictionviz render --figure all --size %s --scale %g (wall seconds, median of %d)\n",
                 size.c_str(), scale, runs);
