@@ -2,6 +2,7 @@
 
 #include "measured_data.hpp"
 
+#include "fv/param_ranges.hpp"
 #include "fv/units.hpp"
 
 #include <imgui.h>
@@ -53,18 +54,26 @@ UiEdits draw_vibration_controls(const UiState& ui) {
     ImGui::PushItemWidth(half);
     double a = ui.amplitude_um, f = ui.frequency_khz;
     if (input_positive("A [µm]", &a, "%.4g")) e.amplitude_um = a;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("vibration amplitude x_v");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("vibration amplitude x_v in µm, allowed %s; v_b and z_ss stay, ζ and r_disp follow",
+                          describe(kAmplitudeRange).c_str());
     ImGui::SameLine();
     if (input_positive("f [kHz]", &f, "%.4g")) e.frequency_khz = f;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("vibration frequency");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("vibration frequency f in kHz, allowed %s; v_v = 2π f A",
+                          describe(kFrequencyRange).c_str());
     double vb = ui.vb_m_s, zss = ui.zss_um;
     if (ImGui::InputDouble("v_b [m/s]", &vb, 0, 0, "%.4g") && std::isfinite(vb)) e.vb_m_s = vb;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("sliding velocity of the body; sets ζ = v_b / v_v");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("sliding velocity of the body in m/s, allowed %s; sets ζ = v_b / v_v (ζ in %s)",
+                          describe(kVbRange).c_str(), describe(kZetaRange).c_str());
     ImGui::SameLine();
     if (ui.model == Model::rigid) ImGui::BeginDisabled();
     if (input_positive("z_ss [µm]", &zss, "%.4g")) e.zss_um = zss;
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("steady deflection of the asperity F_c / σ₀, Eq. (15); sets r_disp = A / z_ss");
+        ImGui::SetTooltip("steady deflection of the asperity F_c / σ₀ in µm, Eq. (15), allowed %s; sets "
+                          "r_disp = A / z_ss (r_disp in %s)",
+                          describe(kZssRange).c_str(), describe(kRdispRange).c_str());
     if (ui.model == Model::rigid) ImGui::EndDisabled();
     ImGui::PopItemWidth();
     return e;

@@ -58,7 +58,12 @@ class ImGuiScope {
         io.FontDefault = session.fonts().font_for(15);
         io.FontGlobalScale = 1.0f / session.pixel_ratio(); // the atlas is rasterised at ratio x size
         ImGui::StyleColorsLight();
-        ImGui::GetStyle().WindowRounding = 0;
+        ImGuiStyle& style = ImGui::GetStyle();
+        style.WindowRounding = 0;
+        // Slider handles never hide the value printed across the slider: a thin, translucent grab.
+        style.GrabMinSize = 5;
+        style.Colors[ImGuiCol_SliderGrab].w = 0.45f;
+        style.Colors[ImGuiCol_SliderGrabActive].w = 0.6f;
         platform_.connect_imgui();
     }
     ~ImGuiScope() {
