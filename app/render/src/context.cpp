@@ -1,6 +1,7 @@
 #include "fv/gfx/context.hpp"
 
 #include <cstring>
+#include <stdexcept>
 
 namespace fv::gfx {
 
@@ -38,7 +39,11 @@ std::unique_ptr<GpuContext> create_context(const ContextOptions& options) {
     case Backend::Headless:
         break;
     }
+#if defined(__EMSCRIPTEN__)
+    throw std::runtime_error("no headless (OSMesa) backend in the browser build");
+#else
     return std::make_unique<HeadlessContext>(options.width, options.height, options.scale);
+#endif
 }
 
 } // namespace fv::gfx

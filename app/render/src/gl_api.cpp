@@ -1,5 +1,6 @@
 #include "fv/gfx/gl_api.hpp"
 
+#include <cstring>
 #include <stdexcept>
 
 namespace fv::gfx {
@@ -10,7 +11,23 @@ void GlApi::load(ProcLoader loader) {
     if (member == nullptr) throw std::runtime_error("OpenGL entry point " #symbol " not available");
     FV_GL_FUNCTIONS(FV_GL_LOAD)
 #undef FV_GL_LOAD
+    DrawElementsBaseVertex = reinterpret_cast<PfnDrawElementsBaseVertex>(loader("glDrawElementsBaseVertex"));
 }
+
+#if defined(__EMSCRIPTEN__)
+void* linked_gl_proc(const char* name) {
+    struct Entry {
+        const char* name;
+        void* proc;
+    };
+#define FV_GL_ENTRY(type, member, symbol) {#symbol, reinterpret_cast<void*>(&::symbol)},
+    static const Entry table[] = {FV_GL_FUNCTIONS(FV_GL_ENTRY)};
+#undef FV_GL_ENTRY
+    for (const Entry& e : table)
+        if (std::strcmp(e.name, name) == 0) return e.proc;
+    return nullptr;
+}
+#endif
 
 std::string GlApi::describe() const {
     auto str = [this](GLenum e) {

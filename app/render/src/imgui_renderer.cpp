@@ -17,17 +17,23 @@ ImGuiRenderer::ImGuiRenderer(const GlApi& gl) : gl_(gl), program_(gl, "imgui.ver
     gl_.BindVertexArray(vao_);
     gl_.BindBuffer(GL_ARRAY_BUFFER, vbo_);
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ebo_);
-    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
     gl_.EnableVertexAttribArray(0);
     gl_.EnableVertexAttribArray(1);
     gl_.EnableVertexAttribArray(2);
-    gl_.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<void*>(offsetof(ImDrawVert, pos)));
-    gl_.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
-                            reinterpret_cast<void*>(offsetof(ImDrawVert, uv)));
-    gl_.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
-                            reinterpret_cast<void*>(offsetof(ImDrawVert, col)));
+    point_attributes(0);
     gl_.BindVertexArray(0);
+}
+
+void ImGuiRenderer::point_attributes(unsigned first) {
+    const auto stride = static_cast<GLsizei>(sizeof(ImDrawVert));
+    const std::size_t base = std::size_t{first} * sizeof(ImDrawVert);
+    gl_.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<void*>(base + offsetof(ImDrawVert, pos)));
+    gl_.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, stride,
+                            reinterpret_cast<void*>(base + offsetof(ImDrawVert, uv)));
+    gl_.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                            reinterpret_cast<void*>(base + offsetof(ImDrawVert, col)));
+    attributes_at_ = first;
 }
 
 ImGuiRenderer::~ImGuiRenderer() {
@@ -111,9 +117,15 @@ void ImGuiRenderer::render(const ImDrawData& dd) {
                         static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
             gl_.BindTexture(GL_TEXTURE_2D,
                             static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(cmd.GetTexID())));
-            gl_.DrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount), idx_type,
-                                       reinterpret_cast<void*>(cmd.IdxOffset * sizeof(ImDrawIdx)),
-                                       static_cast<GLint>(cmd.VtxOffset));
+            const auto count = static_cast<GLsizei>(cmd.ElemCount);
+            void* const first_index = reinterpret_cast<void*>(cmd.IdxOffset * sizeof(ImDrawIdx));
+            if (gl_.DrawElementsBaseVertex) {
+                gl_.DrawElementsBaseVertex(GL_TRIANGLES, count, idx_type, first_index,
+                                           static_cast<GLint>(cmd.VtxOffset));
+            } else {
+                if (cmd.VtxOffset != attributes_at_) point_attributes(cmd.VtxOffset);
+                gl_.DrawElements(GL_TRIANGLES, count, idx_type, first_index);
+            }
         }
     }
     gl_.BindVertexArray(0);

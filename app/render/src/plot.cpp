@@ -36,7 +36,6 @@ Series& Plot::add_series(std::string label, std::vector<double> x, std::vector<d
 namespace {
 
 constexpr float kTickLength = 5;
-constexpr float kPad = 6;
 
 struct Range {
     double lo, hi;

@@ -10,7 +10,9 @@ namespace fv::gfx {
 namespace {
 
 GLuint compile(const GlApi& gl, GLenum type, std::string_view file, std::string_view defines) {
-    std::string src(shader_source(file));
+    // The GLSL ES 3.00 twin of each source is embedded under "es300/" (cmake/embed_files.cmake).
+    std::string src(gl.glsl == GlslDialect::es300 ? shader_source("es300/" + std::string(file))
+                                                  : shader_source(file));
     if (!defines.empty()) {
         const std::size_t eol = src.find('\n'); // #version must stay the first line.
         src.insert(eol == std::string::npos ? src.size() : eol + 1, defines);

@@ -2,7 +2,13 @@
 // GL function table. Nothing in fvrender calls gl* symbols directly: headless mode resolves
 // entry points from a dlopen'ed OSMesa, a window from GLFW. Linking libGL and libOSMesa
 // together clashes (both export every gl* symbol), so the table is the only way in.
+// The browser build fills the same table from emscripten's WebGL 2 library (linked_gl_proc): WebGL 2 is
+// OpenGL ES 3.0, whose headers declare the same calls and PFN types as desktop GL's glcorearb.h.
+#if defined(__EMSCRIPTEN__)
+#include <GLES3/gl3.h>
+#else
 #include <GL/glcorearb.h>
+#endif
 
 #include <string>
 
@@ -10,6 +16,21 @@ namespace fv::gfx {
 
 /// Signature of OSMesaGetProcAddress / glfwGetProcAddress, adapted to return void*.
 using ProcLoader = void* (*)(const char* name);
+
+/// The GLSL the shaders are compiled as. The sources (shaders/*.glsl) are `#version 330 core`; the build
+/// embeds each also as `#version 300 es` with default precisions (app/render/cmake/embed_files.cmake).
+enum class GlslDialect {
+    glsl330, ///< desktop OpenGL 3.3 core and later
+    es300,   ///< OpenGL ES 3.0 / WebGL 2 (the browser build); desktop GL 4.3+ accepts it too
+};
+
+/// glDrawElementsBaseVertex (GL 3.2; not in GLES 3.0 or WebGL 2).
+#if defined(__EMSCRIPTEN__)
+using PfnDrawElementsBaseVertex = void (*)(GLenum mode, GLsizei count, GLenum type, const void* indices,
+                                           GLint basevertex);
+#else
+using PfnDrawElementsBaseVertex = PFNGLDRAWELEMENTSBASEVERTEXPROC;
+#endif
 
 // X-macro list: (PFN type, member name, GL symbol). Add here when a new call is needed.
 #define FV_GL_FUNCTIONS(X)                                                                                   \
@@ -60,21 +81,35 @@ using ProcLoader = void* (*)(const char* name);
     X(PFNGLACTIVETEXTUREPROC, ActiveTexture, glActiveTexture)                                                \
     X(PFNGLTEXIMAGE2DPROC, TexImage2D, glTexImage2D)                                                         \
     X(PFNGLTEXPARAMETERIPROC, TexParameteri, glTexParameteri)                                                \
-    X(PFNGLDRAWELEMENTSPROC, DrawElements, glDrawElements)                                                   \
-    X(PFNGLDRAWELEMENTSBASEVERTEXPROC, DrawElementsBaseVertex, glDrawElementsBaseVertex)
+    X(PFNGLDRAWELEMENTSPROC, DrawElements, glDrawElements)
 
 /// Table of GL entry points for one context. Members are named like the GL call without "gl".
 struct GlApi {
 #define FV_GL_MEMBER(type, member, symbol) type member = nullptr;
     FV_GL_FUNCTIONS(FV_GL_MEMBER)
 #undef FV_GL_MEMBER
+    /// Optional: null where the context has no glDrawElementsBaseVertex (WebGL 2); the ImGui renderer then
+    /// points its vertex attributes at the base vertex instead.
+    PfnDrawElementsBaseVertex DrawElementsBaseVertex = nullptr;
+
+#if defined(__EMSCRIPTEN__)
+    GlslDialect glsl = GlslDialect::es300;
+#else
+    GlslDialect glsl = GlslDialect::glsl330;
+#endif
 
     /// Fills the table from `loader` (context must be current). Throws std::runtime_error
-    /// naming the first missing entry point.
+    /// naming the first missing entry point (DrawElementsBaseVertex may stay null).
     void load(ProcLoader loader);
 
     /// "OpenGL 4.5 (Core Profile) Mesa ..., llvmpipe" style one-line description.
     std::string describe() const;
 };
+
+#if defined(__EMSCRIPTEN__)
+/// The browser build's ProcLoader: the entry points of FV_GL_FUNCTIONS as linked from emscripten's WebGL 2
+/// library, by name (null for any other name).
+void* linked_gl_proc(const char* name);
+#endif
 
 } // namespace fv::gfx

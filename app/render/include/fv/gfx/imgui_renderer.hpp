@@ -26,12 +26,17 @@ class ImGuiRenderer {
     void render(const ImDrawData& draw_data);
 
   private:
+    /// Points the vertex attributes at the vertex buffer from vertex `first` on (with the VAO and VBO bound):
+    /// the base vertex of a command where glDrawElementsBaseVertex is missing (WebGL 2).
+    void point_attributes(unsigned first);
+
     const GlApi& gl_;
     ShaderProgram program_;
     GLint loc_proj_ = -1;
     GLint loc_tex_ = -1;
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLuint font_texture_ = 0;
+    unsigned attributes_at_ = 0; ///< The vertex the attributes point at (point_attributes).
 };
 
 } // namespace fv::gfx
