@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Screenshot of a page of the browser build in headless Chromium with software WebGL 2 (ANGLE on SwiftShader),
+# the page served from 127.0.0.1 by python3's http.server on a free port; both stop before this script ends.
+#   screenshot.sh SITE_DIR PATH_AND_QUERY OUT.png WIDTH HEIGHT
+# Under --virtual-time-budget Chromium runs the page's timers and animation frames on a virtual clock, so the
+# shot is taken after the page has drawn, without waiting in real time.
+set -euo pipefail
+site=$1 query=$2 out=$3 width=$4 height=$5
+tmp=$(mktemp -d)
+server=""
+cleanup() {
+  if [ -n "$server" ]; then kill "$server" 2>/dev/null || true; wait "$server" 2>/dev/null || true; fi
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+python3 -u -m http.server --bind 127.0.0.1 --directory "$site" 0 >"$tmp/server.log" 2>&1 &
+server=$!
+port=""
+for _ in $(seq 1 100); do
+  port=$(sed -n 's/^Serving HTTP on 127\.0\.0\.1 port \([0-9]*\).*/\1/p' "$tmp/server.log")
+  [ -n "$port" ] && break
+  sleep 0.1
+done
+if [ -z "$port" ]; then
+  echo "screenshot.sh: the HTTP server did not start:" >&2
+  cat "$tmp/server.log" >&2
+  exit 1
+fi
+rm -f "$out"
+# (Debian's chromium wrapper prints a harmless shell error about memory size on large machines: filtered.)
+timeout 120 chromium --headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader \
+  --user-data-dir="$tmp/profile" --no-first-run --hide-scrollbars --window-size="$width,$height" \
+  --virtual-time-budget=10000 --enable-logging=stderr --screenshot="$out" "http://127.0.0.1:$port/$query" \
+  2>"$tmp/chromium.log" || { cat "$tmp/chromium.log" >&2; exit 1; }
+# The page's console (its printf and errors) for the test log.
+grep -a 'CONSOLE' "$tmp/chromium.log" | sed 's/^.*CONSOLE[^"]*/console: /' || true
+if [ ! -s "$out" ]; then
+  echo "screenshot.sh: no screenshot written" >&2
+  cat "$tmp/chromium.log" >&2
+  exit 1
+fi
