@@ -9,6 +9,8 @@ PACKAGES=(
   catch2                                    # tests (Catch2 v2)
   libimgui-dev libglfw3-dev libgl-dev libosmesa6-dev libstb-dev fonts-dejavu-core  # drawing
   libcairo2-dev                             # SVG and PDF output (cairo with FreeType)
+  libgif-dev libavcodec-dev libavformat-dev libavutil-dev libswscale-dev  # animate: GIF (giflib), H.264 MP4
+                                            # (FFmpeg's libraries; Debian's libavcodec brings libx264)
   librsvg2-bin poppler-utils                # tests: rsvg-convert, pdftoppm, pdftotext check SVG and PDF
   xvfb xauth libx11-dev                     # window tests without a display (xvfb-run needs xauth; the
                                             # drag-and-drop test speaks XDND through Xlib)

@@ -5,6 +5,7 @@
 #include "fv/gfx/compare.hpp"
 
 #include "tools/image_files.hpp"
+#include "tools/run_command.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -17,27 +18,14 @@
 
 namespace {
 
-struct Run {
-    int code;
-    std::string err;
-};
+using fv::test::Run;
 
 const std::string& root() {
-    static const std::string r = [] {
-        char tmpl[] = "/tmp/fv-platform-XXXXXX";
-        return std::string(::mkdtemp(tmpl));
-    }();
-    return r;
+    return fv::test::scratch_dir("fv-platform");
 }
 
 Run gui(const std::string& args) {
-    const std::string e = root() + "/stderr";
-    const int status =
-        std::system((std::string(FV_EXE) + " gui " + args + " >/dev/null 2>" + e + " </dev/null").c_str());
-    std::ifstream f(e);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, ss.str()};
+    return fv::test::run_command(std::string(FV_EXE) + " gui " + args, root());
 }
 
 bool exists(const std::string& p) {

@@ -18,5 +18,6 @@ Command add_trace_command(CLI::App& root);
 Command add_render_command(CLI::App& root);
 Command add_gui_command(CLI::App& root);
 Command add_fit_command(CLI::App& root);
+Command add_animate_command(CLI::App& root);
 
 } // namespace fv::cli

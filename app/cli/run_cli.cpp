@@ -35,9 +35,9 @@ int run_cli(int argc, char** argv, const RunOptions& options) {
     app.set_version_flag("--version", "frictionviz " FV_VERSION);
     app.require_subcommand(0, 1);
     app.footer(kExitStatusHelp);
-    const std::vector<Command> commands{add_ratio_command(app), add_sweep_command(app),
-                                        add_trace_command(app), add_render_command(app),
-                                        add_gui_command(app),   add_fit_command(app)};
+    const std::vector<Command> commands{
+        add_ratio_command(app), add_sweep_command(app), add_trace_command(app),  add_render_command(app),
+        add_gui_command(app),   add_fit_command(app),   add_animate_command(app)};
     for (const auto& c : commands) c.app->footer(kExitStatusHelp);
     // CLI11 would report an unknown subcommand as a missing one; name it instead.
     if (argc > 1 && argv[1][0] != '-') {

@@ -15,6 +15,28 @@
 
 namespace fv::app {
 
+RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated) {
+    RatioCurves out;
+    out.request = req;
+    out.current = steady_ratio(req.model, req.params);
+    out.zetas = ratio_zeta_grid(req.zeta_max);
+    if (outdated && outdated()) return out;
+    for (double z : out.zetas) out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
+    // One warm-started sweep along zeta with the continuous-time solver: a whole curve in a few tens of
+    // milliseconds, so a dragged slider redraws it within a frame or two.
+    if (req.model == Model::dahl) {
+        const auto rows =
+            sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp}, {req.params.i}, {}, 1);
+        // A failed point is not drawn as if it were valid: NaN leaves a gap in the curve.
+        for (const auto& r : rows) {
+            const bool good = ok(shown_status(r.result));
+            out.model_rx.push_back(good ? r.result.rx : std::nan(""));
+            out.model_failed += !good;
+        }
+    }
+    return out;
+}
+
 RatioWorker::RatioWorker() : thread_([this] { run(); }) {}
 
 RatioWorker::~RatioWorker() {
@@ -68,27 +90,8 @@ void RatioWorker::run() {
         }
         // A newer request makes this one moot: check between points and give up early.
         auto outdated = [&] { return generation_ != gen; };
-        RatioCurves out;
-        out.request = req;
-        out.current = steady_ratio(req.model, req.params);
-        out.zetas = ratio_zeta_grid(req.zeta_max);
+        RatioCurves out = compute_ratio_curves(req, outdated);
         bool aborted = outdated();
-        if (!aborted) {
-            for (double z : out.zetas) out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
-            // One warm-started sweep along zeta with the continuous-time solver: a whole curve in a few
-            // tens of milliseconds, so a dragged slider redraws it within a frame or two.
-            if (req.model == Model::dahl) {
-                const auto rows = sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp},
-                                        {req.params.i}, {}, 1);
-                // A failed point is not drawn as if it were valid: NaN leaves a gap in the curve.
-                for (const auto& r : rows) {
-                    const bool good = ok(shown_status(r.result));
-                    out.model_rx.push_back(good ? r.result.rx : std::nan(""));
-                    out.model_failed += !good;
-                }
-            }
-            aborted = outdated();
-        }
         // The map only changes with r_disp and i: keep the previous one when those did not move.
         if (!aborted && req.map && req.model == Model::dahl) {
             {

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <thread>
@@ -44,6 +45,10 @@ struct RatioCurves {
     SteadyResult current;                          // the steady state at request.params
     std::optional<PanelData> map;                  // the map panel when asked for
 };
+
+// The curves and the steady state at req.params (not the map), on the calling thread. `outdated` (may be
+// empty) is asked between the steps; when it says true the rest is skipped and the result is incomplete.
+RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated = {});
 
 class RatioWorker {
   public:

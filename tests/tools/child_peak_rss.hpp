@@ -16,9 +16,10 @@
 namespace fv::testing {
 
 struct ChildRun {
-    int exit_code = -1;   ///< -1 when the child could not start or did not exit normally
-    long peak_rss_kb = 0; ///< ru_maxrss of the child, KiB
-    double seconds = 0;   ///< wall time
+    int exit_code = -1;     ///< -1 when the child could not start or did not exit normally
+    long peak_rss_kb = 0;   ///< ru_maxrss of the child, KiB
+    double seconds = 0;     ///< wall time
+    double cpu_seconds = 0; ///< user + system time of the child (its threads summed)
 };
 
 /// argv[0] is the program's path. The child's stdout goes to /dev/null; its stderr stays.
@@ -42,6 +43,8 @@ inline ChildRun run_child(const std::vector<std::string>& argv) {
     ChildRun r;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.peak_rss_kb = ru.ru_maxrss;
+    r.cpu_seconds = static_cast<double>(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+                    1e-6 * static_cast<double>(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }

@@ -1,0 +1,238 @@
+#include "animation.hpp"
+
+#include "gif_encoder.hpp"
+#include "mp4_encoder.hpp"
+
+#include "figures/figure_painter.hpp"
+#include "figures/render_session.hpp"
+#include "gui/dashboard.hpp"
+
+#include "fv/atomic_file.hpp"
+#include "fv/format.hpp"
+#include "fv/steady_state.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+namespace fv::anim {
+namespace {
+
+// Periods the animation's stepping may take to settle on its own steady state after starting from the
+// continuous-time solver's (usually 1-3; slowly contracting cases are stopped here, well below a pixel).
+constexpr int kMaxSettlePeriods = 400;
+constexpr double kSettleTolerance = 1e-7; // of z_ss, per period
+
+std::string pretty(double v) {
+    std::ostringstream o;
+    o << v;
+    return o.str();
+}
+
+// Every x coordinate of the panel moved by dx (the loop's axes move with the body and with time).
+void shift_x(PanelData& p, double dx) {
+    const Vec2 d(dx, 0);
+    for (SeriesData& s : p.series)
+        for (double& x : s.x) x += dx;
+    for (SegmentData& s : p.segments) s.a += d, s.b += d;
+    for (PointData& q : p.points) q.at += d;
+    for (CircleData& c : p.circles) c.center += d;
+    for (ArrowData& a : p.arrows) a.from += d, a.to += d;
+    for (BandData& b : p.bands) b.x0 += dx, b.x1 += dx;
+    if (p.heatmap) p.heatmap->x0 += dx, p.heatmap->x1 += dx;
+    if (p.x_min) *p.x_min += dx;
+    if (p.x_max) *p.x_max += dx;
+}
+
+std::string caption_of(const Spec& s, double rx) {
+    const Params& p = s.params;
+    std::string c = s.model == Model::rigid ? "rigid model" : "Dahl model, i = " + format_number("%g", p.i);
+    c += "   ζ = " + format_number("%g", p.zeta) + "   θ = " + format_number("%g", p.theta * 180 / kPi) + "°";
+    if (s.model == Model::dahl) c += "   r_{disp} = " + format_number("%g", p.rdisp);
+    c += "   steady state: r_{x} = " + format_number("%.4f", rx);
+    return c;
+}
+
+} // namespace
+
+std::optional<Format> format_for_path(const std::string& path) {
+    const auto dot = path.find_last_of('.');
+    const auto slash = path.find_last_of('/');
+    if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot + 1 == path.size() ||
+        dot == 0 || (slash != std::string::npos && dot == slash + 1))
+        return std::nullopt;
+    std::string ext = path.substr(dot + 1);
+    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext == "gif") return Format::gif;
+    if (ext == "mp4") return Format::mp4;
+    return std::nullopt;
+}
+
+const char* allowed_extensions() {
+    return "FILE.gif, FILE.mp4";
+}
+
+void even_size(Spec& spec) {
+    if (spec.format != Format::mp4) return;
+    spec.width += spec.width % 2;
+    spec.height += spec.height % 2;
+}
+
+int frame_count(const Spec& s) {
+    return static_cast<int>(std::lround(s.periods * s.fps / s.speed));
+}
+
+std::string check_spec(const Spec& s) {
+    if (s.periods < kMinPeriods || s.periods > kMaxPeriods)
+        return "--periods " + std::to_string(s.periods) + " is out of range; allowed: integers in [" +
+               std::to_string(kMinPeriods) + ", " + std::to_string(kMaxPeriods) + "]";
+    const double max_fps = s.format == Format::gif ? kMaxGifFps : kMaxFps;
+    if (!(s.fps >= kMinFps && s.fps <= max_fps))
+        return "--fps " + pretty(s.fps) + " is out of range; allowed: [" + pretty(kMinFps) + ", " +
+               pretty(max_fps) + "]" +
+               (s.format == Format::gif ? " for a GIF (its frames last whole 1/100 s, at least 2)" : "");
+    if (!(s.speed >= kMinSpeed && s.speed <= kMaxSpeed))
+        return "--speed " + pretty(s.speed) + " is out of range; allowed: [" + pretty(kMinSpeed) + ", " +
+               pretty(kMaxSpeed) + "] periods per second";
+    if (frame_count(s) > kMaxFrames)
+        return "--periods " + std::to_string(s.periods) + " at --fps " + pretty(s.fps) + " and --speed " +
+               pretty(s.speed) + " is " + std::to_string(frame_count(s)) + " frames; allowed: at most " +
+               std::to_string(kMaxFrames) + " (periods x fps / speed)";
+    if (frame_count(s) < 2)
+        return "--periods " + std::to_string(s.periods) + " at --fps " + pretty(s.fps) + " and --speed " +
+               pretty(s.speed) + " is fewer than 2 frames; allowed: periods x fps / speed >= 2";
+    if (s.format == Format::mp4 && (s.width % 2 || s.height % 2))
+        return "an MP4 (yuv420p) needs an even width and height";
+    if (s.format == Format::mp4)
+        if (std::string why = h264_unavailable(); !why.empty()) return "cannot write MP4: " + why;
+    return {};
+}
+
+Frames::Frames(const Spec& spec)
+    : spec_(spec), count_(frame_count(spec)), start_(spec.model, spec.params), sim_(spec.model, spec.params) {
+    const SteadyResult steady = steady_ratio(spec.model, spec.params, spec.steady);
+    rx_ = steady.rx;
+    if (spec.view == View::dashboard)
+        curves_ = app::compute_ratio_curves({spec.model, spec.params, false, app::ratio_zeta_max(nullptr)});
+    // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
+    // stepping settle on its fixed point, a whole number of periods at a time.
+    Vec2 lag = Vec2::Zero();
+    if (spec.model == Model::dahl && !steady.period.empty())
+        lag = steady.period.back().P - steady.period.back().T;
+    const int n = start_.steps_per_period();
+    // Two periods (the force plot's) less half a step: the history then always holds 2n samples (with
+    // exactly two periods rounding would make it 2n or 2n + 1 by turns, and the oldest sample would sit on
+    // the plot's edge), so the panels draw the same samples every period.
+    start_.set_history_periods(2 - 0.5 / n);
+    start_.start_steady(lag);
+    const double tol = kSettleTolerance * spec.params.zss();
+    for (int k = 0; k < kMaxSettlePeriods; ++k) {
+        const Vec2 before = start_.P() - start_.T();
+        start_.step(n);
+        if (((start_.P() - start_.T()) - before).norm() <= tol) break;
+    }
+    // Two more periods: the trails and the force plot's history are the steady ones. And one step: no frame
+    // falls on a multiple of pi, where the picture's choices that go by the phase (which end of the vibration
+    // line is labelled) would be decided by rounding.
+    start_.step(2 * n + 1);
+    sim_ = start_;
+}
+
+const LiveSim& Frames::sim_at(int k) {
+    if (k < at_) {
+        sim_ = start_;
+        at_ = 0;
+    }
+    // Frame k sits floor(k N / count) steps into the loop of N = periods x n steps: frame count is the
+    // loop's start again.
+    const long n = static_cast<long>(spec_.periods) * sim_.steps_per_period();
+    const auto steps_to = [&](int f) { return static_cast<long>(f) * n / count_; };
+    sim_.step(static_cast<int>(steps_to(k) - steps_to(at_)));
+    at_ = k;
+    return sim_;
+}
+
+void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
+    const LiveSim& sim = sim_at(k);
+    gfx::TextStyle ts;
+    ts.size = 14;
+    ts.halign = gfx::HAlign::Center;
+    canvas.text({page.x / 2, 5}, caption_of(spec_, rx_), ts);
+    const gfx::Rect area{4, 24, page.x - 4, page.y - 4};
+
+    // The top view in the frame moving with the body's mean velocity v_b: the camera fixed on where P would
+    // be without vibrating, the axis reading x - v_b t. The trails stay where they were laid down.
+    app::ViewState view;
+    const double centre = sim.vibration_centre().x();
+    view.follow = false;
+    view.pan = Vec2(centre, 0);
+    PanelData top = app::top_view_panel(sim, view);
+    shift_x(top, -centre);
+    top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
+    if (spec_.view == View::scene) {
+        app::paint_panel(canvas, top, area);
+        return;
+    }
+    const app::DashboardLayout l = app::layout_dashboard(area);
+    app::paint_panel(canvas, top, l.top_view);
+    // The force plot's time axis counts back from now, so that it reads the same every period.
+    PanelData force = app::force_panel_live(sim, curves_);
+    shift_x(force, -sim.tau());
+    force.x_title = "time τ − τ_{now}";
+    app::paint_panel(canvas, force, l.force);
+    app::paint_panel(canvas, app::ratio_panel_live(curves_, false, {nullptr, spec_.vv_m_s}), l.ratio);
+}
+
+std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress) {
+    gfx::ContextOptions o;
+    o.width = spec.width;
+    o.height = spec.height;
+    o.scale = spec.scale;
+    app::RenderSession session(o);
+    Frames frames(spec);
+    const int total = frames.count();
+    const gfx::Vec2 page = session.logical_page();
+    auto render = [&](int k) {
+        gfx::Canvas& canvas = session.canvas();
+        canvas.begin(page, session.pixel_ratio(), gfx::colors::white);
+        frames.paint(canvas, page, k);
+        canvas.end();
+        gfx::Image img = session.context().read_pixels();
+        session.context().present();
+        return img;
+    };
+    auto cancelled = [&] { return progress.cancel && progress.cancel->load(); };
+    std::string bytes;
+    try {
+        if (spec.format == Format::gif) {
+            // One palette for the loop, from four frames spread over a period.
+            std::vector<gfx::Image> samples;
+            for (int q = 0; q < 4; ++q) samples.push_back(render(q * total / (4 * spec.periods)));
+            std::vector<const gfx::Image*> ptrs;
+            for (const gfx::Image& s : samples) ptrs.push_back(&s);
+            GifEncoder gif(session.context().framebuffer_size().width,
+                           session.context().framebuffer_size().height, build_palette(ptrs));
+            samples.clear();
+            for (int k = 0; k < total; ++k) {
+                if (cancelled()) return "cancelled";
+                gif.add(render(k), gif_delay_cs(k, spec.fps));
+                if (progress.report) progress.report(k + 1, total);
+            }
+            bytes = gif.finish();
+        } else {
+            Mp4Encoder mp4(spec.width, spec.height, spec.fps);
+            for (int k = 0; k < total; ++k) {
+                if (cancelled()) return "cancelled";
+                mp4.add(render(k));
+                if (progress.report) progress.report(k + 1, total);
+            }
+            bytes = mp4.finish();
+        }
+    } catch (const std::runtime_error& e) {
+        return e.what();
+    }
+    return write_file_atomic(path, bytes);
+}
+
+} // namespace fv::anim

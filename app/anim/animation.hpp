@@ -1,0 +1,93 @@
+// Animation export (issue #14 item 7): the periodic steady state as a seamless loop, rendered headless
+// through OSMesa (RenderSession) and encoded as an animated GIF (giflib) or an H.264 MP4 (FFmpeg), written
+// atomically. The same code serves `frictionviz animate` and the app's File > Export animation (which runs
+// it on a worker thread with its own headless context: GL contexts are per thread).
+#pragma once
+
+#include "gui/ratio_worker.hpp"
+
+#include "fv/gfx/canvas.hpp"
+#include "fv/live_sim.hpp"
+#include "fv/params.hpp"
+#include "fv/steady_state.hpp"
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace fv::anim {
+
+enum class Format { gif, mp4 };
+// scene: the top view alone over the whole frame. dashboard: the app's picture without its control panel
+// (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x.
+enum class View { scene, dashboard };
+
+inline constexpr int kMinPeriods = 1, kMaxPeriods = 20;
+inline constexpr double kMinFps = 1, kMaxFps = 60;
+inline constexpr double kMaxGifFps = 50; // a GIF frame lasts a whole number of 1/100 s, at least 2
+inline constexpr double kMinSpeed = 0.05, kMaxSpeed = 10; // vibration periods per second (the app's range)
+inline constexpr int kMaxFrames = 3600;
+
+struct Spec {
+    Model model = Model::dahl;
+    Params params{0.15, kPi / 2, 2, 1};
+    int periods = 2;    // steady periods in the loop
+    double fps = 30;    // frames per second
+    double speed = 0.5; // vibration periods per second of the animation (slow motion: 2 s per period)
+    int width = 960, height = 600; // pixels (MP4: even, see even_size())
+    float scale = 1;               // pixels per logical unit
+    View view = View::dashboard;
+    Format format = Format::gif;
+    SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point
+    double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
+};
+
+// The format a file name asks for by its extension (.gif, .mp4; any case), if any.
+std::optional<Format> format_for_path(const std::string& path);
+// "FILE.gif, FILE.mp4": what format_for_path() accepts, for messages.
+const char* allowed_extensions();
+// The size rounded up to even numbers for MP4 (4:2:0 chroma needs them); unchanged for GIF.
+void even_size(Spec& spec);
+
+// Frames in the loop: periods x fps / speed, rounded.
+int frame_count(const Spec& spec);
+// "" or a one-line reason the spec cannot be exported, naming what is allowed (ranges, frame count, the GIF
+// frame rate, MP4's even size, libx264 missing).
+std::string check_spec(const Spec& spec);
+
+// The loop's frames: the steady state of the live simulation (the continuous-time solver's fixed point,
+// then the animation's own stepping settled on it), sampled at periods x steps_per_period / frames steps
+// apart, so that the frame after the last is the first.
+class Frames {
+  public:
+    explicit Frames(const Spec& spec);
+    int count() const { return count_; }
+    // Draws frame k over the logical page (the canvas between begin() and end()). Frames are cheapest in
+    // increasing order; any order works.
+    void paint(gfx::Canvas& canvas, gfx::Vec2 page, int k);
+    // The steady r_x the caption shows.
+    double rx() const { return rx_; }
+
+  private:
+    const LiveSim& sim_at(int k);
+
+    Spec spec_;
+    int count_ = 0;
+    double rx_ = 0;
+    std::optional<app::RatioCurves> curves_;
+    LiveSim start_, sim_;
+    int at_ = 0; // the frame sim_ is at
+};
+
+struct Progress {
+    std::function<void(int done, int total)> report; // after each frame (from the exporting thread)
+    const std::atomic<bool>* cancel = nullptr;       // set: stop, write nothing, return "cancelled"
+};
+
+// Renders the frames and writes `path` through fv::write_file_atomic. The spec must have passed check_spec()
+// and its format match the path. Returns "" or a one-line error (nothing written then). Throws
+// std::runtime_error when no headless GL context can be made.
+std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress = {});
+
+} // namespace fv::anim

@@ -1,0 +1,118 @@
+// frictionviz animate: the periodic steady state as a seamless loop, an animated GIF or an H.264 MP4
+// (anim/animation.hpp), rendered headless. Every flag is checked before anything is computed or written.
+#include "commands.hpp"
+#include "errors.hpp"
+#include "model_options.hpp"
+#include "output.hpp"
+#include "render_output.hpp"
+
+#include "anim/animation.hpp"
+
+#include "fv/units.hpp"
+
+#include <cstdio>
+#include <memory>
+#include <unistd.h>
+
+namespace fv::cli {
+namespace {
+
+// "animate  [##########..........]  60/120 frames" on one terminal line, redrawn in place.
+void draw_progress(int done, int total) {
+    constexpr int kWidth = 30;
+    const int filled = total > 0 ? done * kWidth / total : kWidth;
+    std::fprintf(stderr, "\ranimate  [%.*s%.*s]  %d/%d frames", filled, "##############################",
+                 kWidth - filled, "..............................", done, total);
+    if (done == total) std::fputc('\n', stderr);
+    std::fflush(stderr);
+}
+
+} // namespace
+
+Command add_animate_command(CLI::App& root) {
+    struct Args {
+        ModelArgs model;
+        std::string out, view = "dashboard", size = "960x600";
+        int periods = 2;
+        double fps = 30, speed = 0.5, scale = 1;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* cmd = root.add_subcommand(
+        "animate", "the steady state as a seamless looping animation: an animated GIF or an H.264 MP4");
+    add_model_options(*cmd, a->model, true);
+    add_unit_options(*cmd, a->model.units, UnitShape::single,
+                     "A and f also put v_v on the r_x(zeta) axis (as in the app)");
+    cmd->add_option("--out", a->out,
+                    std::string("the animation: ") + anim::allowed_extensions() +
+                        " (by the extension), written atomically; a symbolic link is followed and its target "
+                        "replaced")
+        ->required();
+    cmd->add_option("--periods", a->periods,
+                    "steady vibration periods in the loop (the frame after the last is the first)")
+        ->check(integer_in(anim::kMinPeriods, anim::kMaxPeriods))
+        ->capture_default_str();
+    cmd->add_option("--fps", a->fps, "frames per second, in [1, 60] (GIF: [1, 50])")
+        ->check(number_in({anim::kMinFps, anim::kMaxFps}))
+        ->capture_default_str();
+    cmd->add_option("--speed", a->speed,
+                    "vibration periods per second of the animation, in [0.05, 10] (slow motion; the app's "
+                    "speed slider); a period takes fps/speed frames")
+        ->check(number_in({anim::kMinSpeed, anim::kMaxSpeed}))
+        ->capture_default_str();
+    cmd->add_option("--size", a->size, "frame size WxH in pixels (MP4: rounded up to even numbers)")
+        ->check(size_spec())
+        ->capture_default_str();
+    cmd->add_option("--scale", a->scale,
+                    "pixels per logical unit, in " + scale_range_text() +
+                        ": --size 1920x1200 --scale 2 is the 960x600 picture at twice the resolution")
+        ->check(number_in({kMinScale, kMaxScale}))
+        ->capture_default_str();
+    cmd->add_option("--view", a->view,
+                    "scene: the top view alone, full frame; dashboard: the app's picture without its control "
+                    "panel (top view, force plot, r_x(zeta)); both under a caption with the parameters")
+        ->check(CLI::IsMember({"scene", "dashboard"}))
+        ->capture_default_str();
+    return {cmd, [a] {
+                const std::optional<anim::Format> format = anim::format_for_path(a->out);
+                if (!format)
+                    throw UsageError("--out: '" + a->out +
+                                     "' has no known extension; allowed: " + anim::allowed_extensions());
+                anim::Spec s;
+                s.format = *format;
+                s.model = model_of(a->model);
+                s.params = to_params(a->model);
+                s.steady = steady_options(a->model);
+                const Vibration v =
+                    vibration_of(a->model.units, s.model == Model::dahl ? std::vector<double>{s.params.rdisp}
+                                                                        : std::vector<double>{});
+                if (v.amplitude_um && v.frequency_khz)
+                    s.vv_m_s = units::vibration_velocity(*v.amplitude_um, *v.frequency_khz);
+                s.periods = a->periods;
+                s.fps = a->fps;
+                s.speed = a->speed;
+                s.view = a->view == "scene" ? anim::View::scene : anim::View::dashboard;
+                const PixelSize sz = parse_size(a->size);
+                s.width = sz.w;
+                s.height = sz.h;
+                s.scale = static_cast<float>(a->scale);
+                anim::even_size(s);
+                OutputArgs page; // the page checks of render: --size / --scale within 320x240 .. 7680x4320
+                page.scale = a->scale;
+                check_output_args(page, s.width, s.height);
+                if (const std::string why = anim::check_spec(s); !why.empty()) throw UsageError(why);
+                check_out(a->out, "--out");
+                if (s.width != sz.w || s.height != sz.h)
+                    std::fprintf(stderr, "animate: an MP4 needs an even size: %dx%d\n", s.width, s.height);
+                anim::Progress progress;
+                if (::isatty(STDERR_FILENO)) progress.report = draw_progress;
+                std::string err;
+                try {
+                    err = anim::export_animation(s, a->out, progress);
+                } catch (const std::runtime_error& e) {
+                    err = e.what();
+                }
+                if (!err.empty()) throw RuntimeFailure(err);
+            }};
+}
+
+} // namespace fv::cli

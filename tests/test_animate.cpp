@@ -1,0 +1,158 @@
+// frictionviz animate through the real executable (issue #14 item 7): the GIF and the MP4 decoded back
+// (frame count = periods x frames per period, size, frames differ, GIF loops, MP4 is H.264 in yuv420p), the
+// loop is seamless (the picture repeats every period and the step from the last frame to the first is like
+// any other), and bad input exits 2 with one line, nothing written, an existing file untouched.
+#include "tools/anim_decode.hpp"
+#include "tools/run_command.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace {
+
+using fv::test::Run;
+
+const std::string& root() {
+    return fv::test::scratch_dir("fv-animate");
+}
+
+Run animate(const std::string& args) {
+    return fv::test::run_command(std::string(FV_EXE) + " animate " + args, root());
+}
+
+std::string slurp(const std::string& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+const std::string kModel = "--zeta 0.15 --theta 60 --rdisp 2 --i 1 ";
+
+// Consecutive frames differ (it moves), frame k and frame k + per_period are the same picture up to
+// `same_tol` (the steady state repeats every period), and the last frame steps to the first like any other
+// frame to the next (within a factor of the largest and smallest consecutive steps).
+void check_loop(const std::vector<fv::gfx::Image>& frames, int per_period, double same_tol) {
+    REQUIRE(frames.size() > static_cast<std::size_t>(per_period));
+    double lo = 1e9, hi = 0;
+    for (std::size_t k = 0; k + 1 < frames.size(); ++k) {
+        const double d = fv::test::mean_abs_diff(frames[k], frames[k + 1]);
+        lo = std::min(lo, d), hi = std::max(hi, d);
+    }
+    INFO("consecutive frames differ by " << lo << " .. " << hi);
+    CHECK(lo > 0.05);
+    for (std::size_t k = 0; k + per_period < frames.size(); ++k) {
+        INFO("frame " << k << " vs " << k + per_period);
+        CHECK(fv::test::mean_abs_diff(frames[k], frames[k + per_period]) <= same_tol);
+    }
+    const double wrap = fv::test::mean_abs_diff(frames.back(), frames.front());
+    INFO("last -> first: " << wrap);
+    CHECK(wrap >= 0.5 * lo);
+    CHECK(wrap <= 1.5 * hi);
+}
+
+} // namespace
+
+TEST_CASE("animate GIF: periods x frames per period, size, loops forever, seamless", "[animate][gif]") {
+    const std::string out = root() + "/loop.gif";
+    // 2 periods at 10 fps and 1 period per second: 10 frames per period.
+    const Run r = animate(kModel + "--fps 10 --speed 1 --size 480x300 --out " + out);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK(r.err.empty()); // no progress bar when stderr is not a terminal
+    const fv::test::DecodedGif g = fv::test::decode_gif(out);
+    REQUIRE(g.error.empty());
+    CHECK(g.image_count == 20);
+    CHECK(g.width == 480);
+    CHECK(g.height == 300);
+    CHECK(g.loops);
+    int total = 0;
+    for (int d : g.delays_cs) total += d;
+    CHECK(total == 200); // 20 frames at 10 fps
+    check_loop(g.frames, 10, 0.02);
+}
+
+TEST_CASE("animate GIF: the scene view and the default loop length", "[animate][gif]") {
+    const std::string out = root() + "/scene.gif";
+    // Defaults: 2 periods, 30 fps, 0.5 periods per second -> 120 frames.
+    const Run r = animate("--zeta 0.3 --theta 0 --rdisp 5 --i 0 --view scene --size 640x400 --out " + out);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    const fv::test::DecodedGif g = fv::test::decode_gif(out);
+    REQUIRE(g.error.empty());
+    CHECK(g.image_count == 120);
+    CHECK(g.loops);
+    check_loop(g.frames, 60, 0.02);
+}
+
+TEST_CASE("animate MP4: H.264 in yuv420p, odd sizes rounded up to even, seamless", "[animate][mp4]") {
+    const std::string out = root() + "/loop.mp4";
+    const Run r = animate(kModel + "--fps 10 --speed 1 --size 481x301 --out " + out);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK(r.err.find("482x302") != std::string::npos); // says so
+    const fv::test::DecodedVideo v = fv::test::decode_video(out);
+    REQUIRE(v.error.empty());
+    CHECK(v.container.find("mp4") != std::string::npos);
+    CHECK(v.codec == "h264");
+    CHECK(v.pix_fmt == "yuv420p");
+    CHECK(v.width == 482);
+    CHECK(v.height == 302);
+    CHECK(v.fps == Approx(10));
+    CHECK(v.frames.size() == 20);
+    check_loop(v.frames, 10, 0.6); // lossy: the same picture encoded twice differs a little
+}
+
+TEST_CASE("animate: bad input exits 2 with one line naming what is allowed, nothing written",
+          "[animate][cli]") {
+    struct Case {
+        std::string args;
+        std::string out; // file name inside root()
+        const char* says;
+    };
+    for (const Case& c : {
+             Case{kModel, "x.avi", "FILE.gif, FILE.mp4"},
+             Case{kModel, "noext", "FILE.gif, FILE.mp4"},
+             Case{kModel, "x.gif.png", "FILE.gif, FILE.mp4"},
+             Case{kModel + "--fps 60", "x.gif", "[1, 50]"},
+             Case{kModel + "--fps 0", "x.mp4", "[1, 60]"},
+             Case{kModel + "--fps abc", "x.mp4", "[1, 60]"},
+             Case{kModel + "--periods 0", "x.gif", "[1, 20]"},
+             Case{kModel + "--periods 2.5", "x.gif", "[1, 20]"},
+             Case{kModel + "--speed 0.01", "x.gif", "[0.05, 10]"},
+             Case{kModel + "--periods 20 --fps 60 --speed 0.05", "x.mp4", "at most 3600"},
+             Case{kModel + "--size 100x100", "x.gif", "320"},
+             Case{kModel + "--size 640x400 --scale 4", "x.gif", "320x240"},
+             Case{kModel + "--scale 9", "x.gif", "[0.25, 8]"},
+             Case{kModel + "--view side", "x.gif", "scene"},
+             Case{"--zeta 0.15 --theta 60 --rdisp 2", "x.gif", "--i"},
+             Case{"--zeta 200 --theta 60 --rdisp 2 --i 1", "x.gif", "100"},
+             Case{kModel, "missing-dir/x.gif", "does not exist"},
+         }) {
+        const std::string out = root() + "/" + c.out;
+        const Run r = animate(c.args + " --out " + out);
+        INFO(c.args << " --out " << c.out << " -> " << r.err);
+        CHECK(r.code == 2);
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        CHECK(r.err.find(c.says) != std::string::npos);
+        CHECK(::access(out.c_str(), F_OK) != 0);
+        // The same mistake aimed at an existing file leaves it as it was.
+        if (c.out.find('/') != std::string::npos) continue;
+        std::ofstream(out) << "keep";
+        const Run again = animate(c.args + " --out " + out);
+        CHECK(again.code == 2);
+        CHECK(slurp(out) == "keep");
+        ::unlink(out.c_str());
+    }
+    // No --out at all.
+    const Run r = animate(kModel);
+    CHECK(r.code == 2);
+    CHECK(r.err.find("--out") != std::string::npos);
+}
