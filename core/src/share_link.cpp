@@ -1,0 +1,168 @@
+#include "fv/share_link.hpp"
+
+#include "fv/param_ranges.hpp"
+#include "fv/parse_number.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <iterator>
+#include <string>
+
+namespace fv {
+namespace {
+
+[[noreturn]] void fail(std::size_t offset, const std::string& what) {
+    throw LinkError("column " + std::to_string(offset + 1) + ": " + what);
+}
+
+int hex_digit(char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+}
+
+// %XX escapes decoded; `offset` is where s starts in the text (for the message).
+std::string decode(std::string_view s, std::size_t offset) {
+    std::string out;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        if (s[k] != '%') {
+            out += s[k];
+            continue;
+        }
+        const int hi = k + 1 < s.size() ? hex_digit(s[k + 1]) : -1;
+        const int lo = k + 2 < s.size() ? hex_digit(s[k + 2]) : -1;
+        if (hi < 0 || lo < 0) fail(offset + k, "'%' must start an escape %XX (two hex digits)");
+        out += static_cast<char>(hi * 16 + lo);
+        k += 2;
+    }
+    return out;
+}
+
+// A decimal number (no hex, inf, nan, blanks or '+' sign), finite, -0 read as 0.
+double number(const std::string& key, const std::string& v, std::size_t offset, ParamRange r) {
+    const std::string allowed = "; allowed: " + key + " in " + describe(r);
+    double x = 0;
+    const char* first = v.data();
+    const char* last = first + v.size();
+    const char* digits = first + (!v.empty() && v[0] == '-' ? 1 : 0);
+    const ParseNumberResult res = parse_number(first, last, x);
+    if (v.empty() || digits == last ||
+        !(std::isdigit(static_cast<unsigned char>(*digits)) || *digits == '.') ||
+        res.ec == std::errc::invalid_argument || res.ptr != last)
+        fail(offset, key + " = '" + v + "' is not a decimal number" + allowed);
+    if (res.ec == std::errc::result_out_of_range)
+        fail(offset, key + " = " + v + " is out of range (beyond double precision)" + allowed);
+    x += 0.0;
+    if (!inside(x, r)) fail(offset, key + " = " + v + " is out of range" + allowed);
+    return x;
+}
+
+// The numeric keys: where each goes and its range in the shared table.
+struct NumberKey {
+    const char* key;
+    std::optional<double> ShareLink::*slot;
+    ParamRange range;
+};
+constexpr NumberKey kNumberKeys[] = {{"zeta", &ShareLink::zeta, kZetaRange},
+                                     {"theta", &ShareLink::theta_deg, kThetaRange},
+                                     {"rdisp", &ShareLink::rdisp, kRdispRange},
+                                     {"i", &ShareLink::i, kIRange}};
+
+} // namespace
+
+ShareLink parse_share_link(std::string_view text) {
+    std::size_t from = 0, to = text.size();
+    if (const auto q = text.find('?'); q != std::string_view::npos) from = q + 1;
+    if (const auto h = text.find('#', from); h != std::string_view::npos) to = h;
+    if (from == to)
+        fail(from, "no parameters; expected KEY=VALUE pairs joined by '&', e.g. "
+                   "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl (keys: " +
+                       std::string(kLinkKeys) + ")");
+    ShareLink link;
+    for (std::size_t at = from; at <= to;) {
+        std::size_t end = text.find('&', at);
+        if (end == std::string_view::npos || end > to) end = to;
+        const std::string_view item = text.substr(at, end - at);
+        if (item.empty()) fail(at, "empty item (a stray '&'); expected KEY=VALUE");
+        const std::size_t eq = item.find('=');
+        const std::string key = decode(item.substr(0, eq), at);
+        if (eq == std::string_view::npos) fail(at, "'" + key + "' has no value; expected KEY=VALUE");
+        const std::size_t vat = at + eq + 1;
+        const std::string value = decode(item.substr(eq + 1), vat);
+        const auto once = [&](bool given) {
+            if (given) fail(at, "'" + key + "' is given twice; each key at most once");
+        };
+        const NumberKey* nk = std::find_if(std::begin(kNumberKeys), std::end(kNumberKeys),
+                                           [&](const NumberKey& n) { return key == n.key; });
+        if (nk != std::end(kNumberKeys)) {
+            once((link.*nk->slot).has_value());
+            link.*nk->slot = number(key, value, vat, nk->range);
+        } else if (key == "model") {
+            once(link.model.has_value());
+            link.model = parse_model(value);
+            if (!link.model) fail(vat, "model = '" + value + "'; allowed: dahl, rigid");
+        } else {
+            fail(at, "unknown key '" + key + "'; allowed: " + kLinkKeys);
+        }
+        at = end + 1;
+    }
+    return link;
+}
+
+void apply_share_link(const ShareLink& link, Model& model, Params& params) {
+    if (link.zeta) params.zeta = *link.zeta;
+    if (link.theta_deg) params.theta = *link.theta_deg * kPi / 180;
+    if (link.rdisp) params.rdisp = *link.rdisp;
+    if (link.i) params.i = *link.i;
+    if (link.model) model = *link.model;
+}
+
+std::string shortest_decimal(double v) {
+    if (v == 0) v = 0; // -0
+    char buf[48];
+    int digits = 1;
+    for (; digits < 17; ++digits) {
+        std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
+        if (std::strtod(buf, nullptr) == v) break;
+    }
+    // Those significant digits without an exponent where that is short (60, not 6e+01; 0.0001), else
+    // with one (1e-07, 1e20).
+    std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
+    const int exponent = std::atoi(std::strchr(buf, 'e') + 1);
+    if (exponent >= -5 && exponent < 17)
+        std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits - 1 - exponent), v);
+    else
+        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    std::string s = buf;
+    if (const auto plus = s.find("e+"); plus != std::string::npos) s.erase(plus + 1, 1);
+    return s;
+}
+
+double theta_degrees(double theta_rad) {
+    const double deg = theta_rad * 180 / kPi;
+    double best = deg;
+    std::size_t best_len = 0;
+    // Degrees to radians rounds: look a few doubles either side for one that maps back exactly, and take
+    // the shortest to write.
+    double d = deg;
+    for (int k = 0; k < 4; ++k) d = std::nextafter(d, -HUGE_VAL);
+    for (int k = 0; k < 9; ++k, d = std::nextafter(d, HUGE_VAL)) {
+        if (d * kPi / 180 != theta_rad) continue;
+        const std::size_t len = shortest_decimal(d).size();
+        if (best_len == 0 || len < best_len) best = d, best_len = len;
+    }
+    return best;
+}
+
+std::string share_link(Model model, const Params& p) {
+    return "?zeta=" + shortest_decimal(p.zeta) + "&theta=" + shortest_decimal(theta_degrees(p.theta)) +
+           "&rdisp=" + shortest_decimal(p.rdisp) + "&i=" + shortest_decimal(p.i) +
+           "&model=" + to_string(model);
+}
+
+} // namespace fv

@@ -1,0 +1,157 @@
+// The share link (fv/share_link.hpp): the query the app shows, `gui --link` takes and the browser build
+// reads. Accepted forms, every refusal with its column, and the round trip app state -> link -> state.
+#include "fv/param_ranges.hpp"
+#include "fv/share_link.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <random>
+#include <string>
+
+using namespace fv;
+
+namespace {
+
+// The message of the LinkError `text` raises ("" when it parses).
+std::string refusal(const std::string& text) {
+    try {
+        parse_share_link(text);
+    } catch (const LinkError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("share link: the query alone, with '?', or inside a URL; any subset of the keys", "[link]") {
+    for (const std::string text :
+         {"zeta=0.3&theta=60&rdisp=5&i=1&model=dahl", "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl",
+          "https://example.org/frictionviz/index.html?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl#top",
+          "?model=dahl&i=1&rdisp=5&theta=60&zeta=0.3", "?zeta=3e-1&theta=6%30&rdisp=5.0&i=1e0&model=%64ahl",
+          "?zeta=0.3&theta=60&rdisp=0.5e1&i=1&model=dahl"}) {
+        INFO(text);
+        const ShareLink l = parse_share_link(text);
+        CHECK(l.zeta == 0.3);
+        CHECK(l.theta_deg == 60.0);
+        CHECK(l.rdisp == 5.0);
+        CHECK(l.i == 1.0);
+        CHECK(l.model == Model::dahl);
+    }
+    // Missing keys keep what they are; '+' is a plus sign (an exponent's), not a space; -0 is 0.
+    const ShareLink l = parse_share_link("?zeta=1e+1&model=rigid&theta=-0");
+    CHECK(l.zeta == 10.0);
+    CHECK_FALSE(l.rdisp);
+    CHECK_FALSE(l.i);
+    CHECK(l.model == Model::rigid);
+    CHECK_FALSE(std::signbit(*l.theta_deg));
+    Model m = Model::dahl;
+    Params p{0.15, kPi / 2, 2, 1};
+    apply_share_link(l, m, p);
+    CHECK(m == Model::rigid);
+    CHECK(p.zeta == 10.0);
+    CHECK(p.theta == 0.0);
+    CHECK(p.rdisp == 2.0);
+    CHECK(p.i == 1.0);
+}
+
+TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and malformed items are refused "
+          "with the column and what is allowed",
+          "[link]") {
+    struct Case {
+        const char* text;
+        const char* message;
+    };
+    for (const Case& c : {
+             Case{"?zeta=0.3&thetta=60",
+                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model"},
+             Case{"?zeta=abc", "column 7: zeta = 'abc' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=0x10", "column 7: zeta = '0x10' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=inf", "column 7: zeta = 'inf' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=nan", "column 7: zeta = 'nan' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=", "column 7: zeta = '' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta= 1", "column 7: zeta = ' 1' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=1x", "column 7: zeta = '1x' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=+1", "column 7: zeta = '+1' is not a decimal number; allowed: zeta in [0, 100]"},
+             Case{"?zeta=1e400", "column 7: zeta = 1e400 is out of range (beyond double precision); allowed: "
+                                 "zeta in [0, 100]"},
+             Case{"?zeta=200", "column 7: zeta = 200 is out of range; allowed: zeta in [0, 100]"},
+             Case{"?zeta=-1", "column 7: zeta = -1 is out of range; allowed: zeta in [0, 100]"},
+             Case{"?theta=181", "column 8: theta = 181 is out of range; allowed: theta in [0, 180]"},
+             Case{"?rdisp=0", "column 8: rdisp = 0 is out of range; allowed: rdisp in (0, 10000]"},
+             Case{"?i=11", "column 4: i = 11 is out of range; allowed: i in [0, 10]"},
+             Case{"?model=coulomb", "column 8: model = 'coulomb'; allowed: dahl, rigid"},
+             Case{"?zeta=1&i=1&zeta=2", "column 13: 'zeta' is given twice; each key at most once"},
+             Case{"?model=dahl&model=dahl", "column 13: 'model' is given twice; each key at most once"},
+             Case{"?zeta=1&&i=1", "column 9: empty item (a stray '&'); expected KEY=VALUE"},
+             Case{"?zeta=1&", "column 9: empty item (a stray '&'); expected KEY=VALUE"},
+             Case{"?zeta", "column 2: 'zeta' has no value; expected KEY=VALUE"},
+             Case{"?zeta=%2", "column 7: '%' must start an escape %XX (two hex digits)"},
+             Case{"?zeta=1%zz", "column 8: '%' must start an escape %XX (two hex digits)"},
+             Case{"", "column 1: no parameters; expected KEY=VALUE pairs joined by '&'"},
+             Case{"https://example.org/?#zeta=1", "column 22: no parameters"},
+         }) {
+        INFO(c.text);
+        const std::string why = refusal(c.text);
+        CHECK(why.rfind(c.message, 0) == 0);
+        CHECK(why.find('\n') == std::string::npos);
+    }
+    // The ranges are the shared table's.
+    CHECK(refusal("?zeta=" + std::to_string(kZetaRange.hi)).empty());
+    CHECK(refusal("?rdisp=" + std::to_string(kRdispRange.hi * 1.001)).find(describe(kRdispRange)) !=
+          std::string::npos);
+}
+
+TEST_CASE("share link: the app's link reads back as the same parameters, bit for bit", "[link]") {
+    CHECK(share_link(Model::dahl, Params{0.3, 60 * kPi / 180, 5, 1}) ==
+          "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl");
+    CHECK(share_link(Model::rigid, Params{0.15, kPi / 2, 2, 0}) ==
+          "?zeta=0.15&theta=90&rdisp=2&i=0&model=rigid");
+    // Every whole degree comes back as itself, in the link as in radians.
+    for (int d = 0; d <= 180; ++d) {
+        INFO(d);
+        CHECK(theta_degrees(d * kPi / 180) == d);
+    }
+    std::mt19937_64 rng(14);
+    std::uniform_real_distribution<double> zeta(0, 3), theta(0, kPi), logr(-1, 4), i(0, 10);
+    for (int k = 0; k < 20000; ++k) {
+        const Params p{zeta(rng), theta(rng), std::pow(10.0, logr(rng)), i(rng)};
+        const Model m = k % 2 ? Model::rigid : Model::dahl;
+        const std::string link = share_link(m, p);
+        INFO(link);
+        Model m2 = Model::dahl;
+        Params q{};
+        apply_share_link(parse_share_link(link), m2, q);
+        REQUIRE(m2 == m);
+        REQUIRE(q.zeta == p.zeta);
+        REQUIRE(q.rdisp == p.rdisp);
+        REQUIRE(q.i == p.i);
+        // Degrees to radians rounds; where no double of degrees maps back exactly, one ulp is the most.
+        REQUIRE(std::abs(q.theta - p.theta) <= std::nextafter(p.theta, 4.0) - p.theta);
+    }
+}
+
+TEST_CASE("shortest_decimal: the shortest text strtod reads back exactly, no '+' in it", "[link]") {
+    CHECK(shortest_decimal(60) == "60");
+    CHECK(shortest_decimal(0.15) == "0.15");
+    CHECK(shortest_decimal(0.1 + 0.2) == "0.30000000000000004");
+    CHECK(shortest_decimal(1e-7) == "1e-07");
+    CHECK(shortest_decimal(1e20) == "1e20");
+    CHECK(shortest_decimal(-0.0) == "0");
+    CHECK(shortest_decimal(5e-324) == "5e-324");
+    std::mt19937_64 rng(6);
+    for (int k = 0; k < 100000; ++k) {
+        const std::uint64_t bits = rng();
+        double v;
+        std::memcpy(&v, &bits, sizeof v);
+        if (!std::isfinite(v)) continue;
+        const std::string s = shortest_decimal(v);
+        INFO(s);
+        REQUIRE(std::strtod(s.c_str(), nullptr) == (v == 0 ? 0.0 : v));
+        REQUIRE(s.find('+') == std::string::npos);
+        REQUIRE(s.size() <= 24);
+    }
+}
