@@ -11,6 +11,7 @@
 #include "gui/platform.hpp"
 
 #include "fv/measurements.hpp"
+#include "fv/share_link.hpp"
 
 #include <memory>
 
@@ -24,6 +25,41 @@ std::string no_window_message(const std::string& why) {
            "frictionviz gui`";
 }
 
+// The starting state from the model, unit and data flags (or a --link), the rest from Fig. 14a's parameters.
+template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::GuiOptions& o) {
+    app::Session& s = o.start;
+    const UnitArgs& u = a.model.units;
+    if (auto zeta = zeta_of(a.model.zeta_opt, a.model.zeta, u, false)) s.params.zeta = *zeta;
+    if (cmd.get_option("--theta")->count()) s.params.theta = a.model.theta_deg * kPi / 180;
+    // r_disp from --zss whatever the model: the window can switch to the Dahl model.
+    if (auto rdisp = rdisp_of(a.model.rdisp_opt, a.model.rdisp, u, false)) s.params.rdisp = *rdisp;
+    if (cmd.get_option("--i")->count()) s.params.i = a.model.i;
+    if (cmd.get_option("--model")->count()) s.model = model_of(a.model);
+    if (cmd.get_option("--link")->count() > 0) {
+        try {
+            apply_share_link(parse_share_link(a.link), s.model, s.params);
+        } catch (const LinkError& e) {
+            throw UsageError("--link: " + std::string(e.what()));
+        }
+    }
+    if (*u.amplitude_opt) s.amplitude_um = u.amplitude;
+    if (*u.frequency_opt) s.frequency_khz = u.frequency;
+    // The window combines a given amplitude or frequency with the default of the other one.
+    check_vibration({s.amplitude_um, s.frequency_khz}, {s.params.rdisp});
+    // A malformed data file is a usage error before any window opens.
+    if (!a.data.empty()) {
+        ReadOptions ro;
+        ro.amplitude_um = s.amplitude_um;
+        ro.frequency_khz = s.frequency_khz;
+        try {
+            o.data = read_measurements(a.data, ro);
+        } catch (const DataError& e) {
+            throw UsageError(e.what()); // FILE:LINE:COL: message
+        }
+        if (o.data->points.empty()) throw UsageError("--data: " + a.data + " has no data rows");
+    }
+}
+
 } // namespace
 
 Command add_gui_command(CLI::App& root) {
@@ -33,7 +69,7 @@ Command add_gui_command(CLI::App& root) {
         std::string platform = "auto", size;
         double scale = 0;
         int frames = 0, bench = 0;
-        std::string script, screenshot, data;
+        std::string script, screenshot, data, session, link;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
@@ -51,6 +87,24 @@ Command add_gui_command(CLI::App& root) {
                     "measured r_x to show on the ratio plot: CSV zeta,r_x or vb,r_x [,theta_deg,sigma,label] "
                     "(vb converted with the window's amplitude and frequency)")
         ->check(file_name());
+    CLI::Option* session =
+        cmd->add_option(
+               "--session", a->session,
+               "start from a session file (JSON: parameters, model, units, animation, view, data; see "
+               "README), instead of the model, unit and --data flags")
+            ->check(file_name());
+    CLI::Option* link =
+        cmd->add_option("--link", a->link,
+                        "start from a share link, ?zeta=Z&theta=DEG&rdisp=R&i=I&model=dahl|rigid "
+                        "(any of the keys; or a URL with that query), instead of the model flags");
+    // A session holds the whole state, a link the model and its parameters: flags for the same things
+    // would contradict them.
+    for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--vb", "--zss"}) {
+        session->excludes(flag);
+        link->excludes(flag);
+    }
+    for (const char* flag : {"--amplitude", "--frequency", "--data"}) session->excludes(flag);
+    session->excludes(link);
     cmd->add_option(
            "--platform", a->platform,
            "where the app runs: window, headless (an OSMesa buffer, the same pixels; needs --frames or "
@@ -118,29 +172,18 @@ Command add_gui_command(CLI::App& root) {
                 throw UsageError("--platform headless needs --frames N or --bench N (a headless app has no "
                                  "window to close)");
             }
-            // Start from the given flags, the rest from Fig. 14a's parameters.
-            const UnitArgs& u = a->model.units;
-            if (auto zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false)) o.params.zeta = *zeta;
-            if (cmd->get_option("--theta")->count()) o.params.theta = a->model.theta_deg * kPi / 180;
-            // r_disp from --zss whatever the model: the window can switch to the Dahl model.
-            if (auto rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false)) o.params.rdisp = *rdisp;
-            if (cmd->get_option("--i")->count()) o.params.i = a->model.i;
-            if (cmd->get_option("--model")->count()) o.model = model_of(a->model);
-            if (*u.amplitude_opt) o.amplitude_um = u.amplitude;
-            if (*u.frequency_opt) o.frequency_khz = u.frequency;
-            // The window combines a given amplitude or frequency with the default of the other one.
-            check_vibration({o.amplitude_um, o.frequency_khz}, {o.params.rdisp});
-            // A malformed data file is a usage error before any window opens.
-            if (!a->data.empty()) {
-                ReadOptions ro;
-                ro.amplitude_um = o.amplitude_um;
-                ro.frequency_khz = o.frequency_khz;
+            if (!a->session.empty()) {
+                // Everything from the file (its data read with its A and f): a bad one is a usage error.
                 try {
-                    o.data = read_measurements(a->data, ro);
-                } catch (const DataError& e) {
-                    throw UsageError(e.what()); // FILE:LINE:COL: message
+                    app::LoadedSession l = app::load_session(a->session);
+                    o.start = l.session;
+                    o.data = std::move(l.data);
+                    o.session_file = a->session;
+                } catch (const app::SessionError& e) {
+                    throw UsageError(std::string("--session: ") + e.what());
                 }
-                if (o.data->points.empty()) throw UsageError("--data: " + a->data + " has no data rows");
+            } else {
+                start_from_flags(*a, *cmd, o);
             }
             try {
                 const int rc = app::run_gui(o);

@@ -10,17 +10,47 @@
 
 namespace fv::app {
 
+namespace {
+
+Session start_of(Model model, const Params& params, double amplitude_um, double frequency_khz) {
+    Session s;
+    s.model = model;
+    s.params = params;
+    s.amplitude_um = amplitude_um;
+    s.frequency_khz = frequency_khz;
+    return s;
+}
+
+// The status line after a session has been opened.
+std::string opened(const std::string& file, const std::string& loaded) {
+    return "opened session " + file + (loaded.empty() ? "" : "; " + loaded);
+}
+
+} // namespace
+
+AppState::AppState(const Session& start, std::optional<MeasurementSet> data, const std::string& session_file)
+    : sim_(start.model, start.params) {
+    const std::string loaded = show_session(start, std::move(data));
+    ui_.status = session_file.empty() ? loaded : opened(session_file, loaded);
+}
+
 AppState::AppState(Model model, const Params& params, double amplitude_um, double frequency_khz,
                    std::optional<MeasurementSet> data)
-    : sim_(model, params) {
-    ui_.model = model;
-    ui_.params = params;
-    ui_.amplitude_um = amplitude_um;
-    ui_.frequency_khz = frequency_khz;
-    if (data) ui_.status = show_measured(ui_, std::move(*data));
+    : AppState(start_of(model, params, amplitude_um, frequency_khz), std::move(data)) {}
+
+std::string AppState::show_session(const Session& s, std::optional<MeasurementSet> data) {
+    copy_session_fields(ui_, s);
+    ui_.view.rewind = 0; // the simulation restarts: no history to look back into
+    ui_.data.reset();
+    const std::string loaded = data ? show_measured(ui_, std::move(*data)) : "";
     sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
+    sim_.apply(ui_.model, ui_.params);
+    sim_.reset();
+    step_carry_ = 0;
+    step_pending_ = false;
     refresh_units();
     worker_.request(ratio_request());
+    return loaded;
 }
 
 RatioRequest AppState::ratio_request() const {
@@ -39,6 +69,16 @@ void AppState::refresh_units() {
 
 AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     ++syncs_;
+    if (e.open_session) {
+        try {
+            LoadedSession l = load_session(*e.open_session);
+            const std::string loaded = show_session(l.session, std::move(l.data));
+            drop_fit_ = fit_.running();
+            ui_.status = opened(*e.open_session, loaded);
+        } catch (const SessionError& x) {
+            ui_.status = std::string(x.what()) + " (session not opened; nothing changed)";
+        }
+    }
     std::optional<Params> params = e.params;
     std::optional<Model> model = e.model;
     bool reset = e.reset;
@@ -82,8 +122,12 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     }
     // A finished fit sets r_disp and i.
     if (const auto done = fit_.poll(ui_, wait)) {
-        ui_.status = done->status;
-        if (done->params) ui_.params = *done->params, model_changed = true;
+        if (drop_fit_) {
+            drop_fit_ = false;
+        } else {
+            ui_.status = done->status;
+            if (done->params) ui_.params = *done->params, model_changed = true;
+        }
     }
     ui_.fitting = fit_.running();
     if (e.playing) ui_.playing = *e.playing;
@@ -112,7 +156,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (e.jump_steady) jump_to_steady();
     step_pending_ = e.step;
     refresh_units();
-    return {e.screenshot, e.export_csv, e.quit};
+    return {e.screenshot, e.export_csv, e.quit, e.save_session.value_or("")};
 }
 
 double AppState::frame_tau() const {

@@ -7,6 +7,7 @@
 
 #include "measured_data.hpp"
 #include "ratio_worker.hpp"
+#include "session.hpp"
 #include "ui_state.hpp"
 
 #include "fv/live_sim.hpp"
@@ -24,16 +25,23 @@ inline constexpr ParamRange kTrailRange{0.1, 10};
 
 class AppState {
   public:
+    // Starts from a session's state (from flags, a link or a file; checked by whoever made it), with its
+    // measured data already read. session_file: the file it came from (the status line names it, as when
+    // the session is opened from the menu), or "".
+    explicit AppState(const Session& start, std::optional<MeasurementSet> data = std::nullopt,
+                      const std::string& session_file = "");
     AppState(Model model, const Params& params, double amplitude_um, double frequency_khz,
              std::optional<MeasurementSet> data = std::nullopt);
 
     // What a frame's edits ask of the loop rather than of the state (files, exit).
     struct Actions {
         bool screenshot = false, export_csv = false, quit = false;
+        std::string save_session; // a path, or empty
     };
-    // Applies one frame's edits, in a fixed order: preset, model, parameters, v_b/z_ss, A/f, data, fit,
-    // playback, view. An edit outside the ranges changes nothing and says why in ui().status. wait: block
-    // for a running fit (scripted runs, for reproducible pictures).
+    // Applies one frame's edits, in a fixed order: session, preset, model, parameters, v_b/z_ss, A/f, data,
+    // fit, playback, view. An edit outside the ranges changes nothing and says why in ui().status; so does a
+    // session that does not load (session.hpp), the state before it kept. wait: block for a running fit
+    // (scripted runs, for reproducible pictures).
     Actions sync(const UiEdits& edits, bool wait = false);
     // Advances the simulation by dt seconds of wall time at ui().speed while playing, then the single step
     // asked for by the last sync.
@@ -51,6 +59,9 @@ class AppState {
     void pin_current_curve(bool wait);
     double frame_tau() const; // dimensionless time of one displayed frame at the current speed (1/60 s)
     void refresh_units();
+    // The whole state from `s` and `data`; the simulation restarts at tau = 0. Returns the data's status
+    // line ("loaded FILE: N points"), or "" without data.
+    std::string show_session(const Session& s, std::optional<MeasurementSet> data);
 
     UiState ui_;
     LiveSim sim_;
@@ -58,6 +69,7 @@ class AppState {
     DataFit fit_;
     double step_carry_ = 0;
     bool step_pending_ = false;
+    bool drop_fit_ = false; // a session was opened while a fit ran: its result is for another state
     int syncs_ = 0;
 };
 

@@ -34,6 +34,8 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.frequency_khz) frequency_khz = o.frequency_khz;
     if (o.load_data) load_data = o.load_data, clear_data = false;
     if (o.clear_data) clear_data = true, load_data.reset();
+    if (o.open_session) open_session = o.open_session;
+    if (o.save_session) save_session = o.save_session;
     fit_data |= o.fit_data;
     step |= o.step;
     if (o.rewind) rewind = o.rewind;
@@ -75,7 +77,7 @@ void range_tooltip(const char* meaning, ParamRange slider, ParamRange allowed) {
 } // namespace
 
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height, OpenDataDialog& dialog) {
+                      bool busy, float width, float height, FileDialogs& dialog) {
     UiEdits e;
     ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
@@ -89,6 +91,8 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
     ImGui::TextUnformatted("Parameters");
+    ImGui::SameLine();
+    draw_share_link(ui); // the share link of these parameters, on the header's row
     changed |= slider_double("ζ", &p.zeta, kSliders.zeta, "%.3f");
     range_tooltip("velocity ratio ζ = v_b / v_v, Eq. (6)", kSliders.zeta, kZetaRange);
     changed |= slider_double("θ [°]", &theta_deg, kSliders.theta_deg, "%.1f");
@@ -284,7 +288,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     // Export trace CSV and Screenshot [S] are in the File menu: the panel keeps its rows for the teaching.
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::PopItemWidth();
-    e.merge(draw_open_dialog(dialog));
+    e.merge(draw_file_dialogs(dialog));
     ImGui::End();
     return e;
 }

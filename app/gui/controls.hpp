@@ -19,7 +19,7 @@ inline constexpr SliderRanges kSliders{kZetaSlider, kThetaSlider, kRdispSlider, 
 
 // Draws the panel at the left edge (width in logical pixels) and returns what the user changed.
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height, OpenDataDialog& dialog);
+                      bool busy, float width, float height, FileDialogs& dialog);
 
 // Space, Right, R, S, Esc (ignored while a text field has the keyboard or a dialog is open).
 UiEdits keyboard_edits(const UiState& ui);

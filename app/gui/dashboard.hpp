@@ -11,6 +11,7 @@
 #include "fv/gfx/plot.hpp"
 #include "fv/live_sim.hpp"
 #include "fv/measurements.hpp"
+#include "fv/param_ranges.hpp"
 
 #include <optional>
 
@@ -23,6 +24,9 @@ struct ViewState {
     double trail_periods = 1.5;
     double rewind = 0; // dimensionless time behind the live simulation that is shown (0: live)
 };
+// What the mouse can set (and a session file may hold): zoom factor, each pan coordinate.
+inline constexpr ParamRange kZoomRange{0.05, 20};
+inline constexpr ParamRange kPanRange{-1e6, 1e6};
 
 // The state shown at `rewind` behind the live simulation (from its history; the live state at 0).
 struct SimMoment {

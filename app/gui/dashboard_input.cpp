@@ -15,10 +15,12 @@ void handle_dashboard_mouse(ViewState& view, const LiveSim& sim, const Dashboard
     const gfx::Vec2 m{io.MousePos.x, io.MousePos.y};
     const auto& tv = t.top_view;
     if (tv.area.contains(m)) {
-        if (io.MouseWheel != 0) view.zoom = std::clamp(view.zoom * std::pow(0.85, io.MouseWheel), 0.05, 20.0);
+        if (io.MouseWheel != 0)
+            view.zoom = std::clamp(view.zoom * std::pow(0.85, io.MouseWheel), kZoomRange.lo, kZoomRange.hi);
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             const double sx = (tv.x1 - tv.x0) / tv.area.width(), sy = (tv.y1 - tv.y0) / tv.area.height();
             view.pan += Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy);
+            for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp(view.pan[k], kPanRange.lo, kPanRange.hi);
         }
         if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
             view = ViewState{1, {0, 0}, true, view.trail_periods};

@@ -3,6 +3,7 @@
 #include "measured_data.hpp"
 
 #include "fv/param_ranges.hpp"
+#include "fv/share_link.hpp"
 #include "fv/units.hpp"
 
 #include <imgui.h>
@@ -25,14 +26,15 @@ bool input_positive(const char* label, double* v, const char* format) {
     return true;
 }
 
-// The .csv files in `dir` (sorted), at most 200: enough to pick from, never a stall on a huge directory.
-std::vector<std::string> csv_files(const std::filesystem::path& dir) {
+// The files with extension `ext` in `dir` (sorted), at most 200: enough to pick from, never a stall on a huge
+// directory.
+std::vector<std::string> files_with(const std::filesystem::path& dir, const char* ext) {
     std::vector<std::string> out;
     std::error_code ec;
     for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end && out.size() < 200;
          it.increment(ec)) {
         const auto& p = it->path();
-        if (p.extension() == ".csv" && it->is_regular_file(ec)) out.push_back(p.filename().string());
+        if (p.extension() == ext && it->is_regular_file(ec)) out.push_back(p.filename().string());
     }
     std::sort(out.begin(), out.end());
     return out;
@@ -79,7 +81,7 @@ UiEdits draw_vibration_controls(const UiState& ui) {
     return e;
 }
 
-UiEdits draw_data_controls(const UiState& ui, OpenDataDialog& dialog) {
+UiEdits draw_data_controls(const UiState& ui, FileDialogs& dialog) {
     UiEdits e;
     ImGui::TextUnformatted("Measured data");
     if (ui.data) {
@@ -91,7 +93,7 @@ UiEdits draw_data_controls(const UiState& ui, OpenDataDialog& dialog) {
     } else {
         ImGui::TextWrapped("none: File > Open, or drop a CSV file onto the window");
     }
-    if (ImGui::Button("Open…")) dialog.open_requested = true;
+    if (ImGui::Button("Open…")) dialog.data.open_requested = true;
     if (ui.data) {
         ImGui::SameLine();
         const bool can_fit = !ui.fitting && ui.model == Model::dahl;
@@ -107,12 +109,15 @@ UiEdits draw_data_controls(const UiState& ui, OpenDataDialog& dialog) {
     return e;
 }
 
-UiEdits draw_menu(const UiState& ui, OpenDataDialog& dialog) {
+UiEdits draw_menu(const UiState& ui, FileDialogs& dialog) {
     UiEdits e;
     if (!ImGui::BeginMenuBar()) return e;
     if (ImGui::BeginMenu("File")) {
-        if (ImGui::MenuItem("Open data file…")) dialog.open_requested = true;
+        if (ImGui::MenuItem("Open data file…")) dialog.data.open_requested = true;
         if (ImGui::MenuItem("Clear data", nullptr, false, ui.data.has_value())) e.clear_data = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Open session…")) dialog.open_session.open_requested = true;
+        if (ImGui::MenuItem("Save session…")) dialog.save_session.open_requested = true;
         ImGui::Separator();
         if (ImGui::MenuItem("Export trace CSV")) e.export_csv = true;
         if (ImGui::MenuItem("Screenshot", "S")) e.screenshot = true;
@@ -132,48 +137,102 @@ UiEdits draw_menu(const UiState& ui, OpenDataDialog& dialog) {
     return e;
 }
 
-UiEdits draw_open_dialog(OpenDataDialog& dialog) {
-    UiEdits e;
-    if (dialog.open_requested) {
-        ImGui::OpenPopup("Open data file");
-        dialog.open_requested = false;
+namespace {
+
+struct PathDialogText {
+    const char* title;  // also the ImGui id
+    const char* help;   // a line above the path field
+    const char* ext;    // ".csv": the files listed
+    const char* action; // the button: "Open", "Save"
+};
+
+// A modal dialog with a path field and the files of one kind in the directory typed so far (or the working
+// directory): returns the path chosen (Enter, the button, a double click), nothing while it is open.
+std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
+    if (d.open_requested) {
+        ImGui::OpenPopup(t.title);
+        d.open_requested = false;
     }
     ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
-    if (!ImGui::BeginPopupModal("Open data file", nullptr, ImGuiWindowFlags_NoSavedSettings)) return e;
-    ImGui::TextWrapped("CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f set in the "
-                       "panel); optional theta_deg, sigma, label.");
+    if (!ImGui::BeginPopupModal(t.title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return std::nullopt;
+    ImGui::TextWrapped("%s", t.help);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
     ImGui::SetNextItemWidth(-1);
-    const bool enter = ImGui::InputText("##path", &dialog.path, ImGuiInputTextFlags_EnterReturnsTrue);
-    // The CSV files in the directory typed so far (or the working directory).
-    std::filesystem::path dir = std::filesystem::path(dialog.path).parent_path();
+    const bool enter = ImGui::InputText("##path", &d.path, ImGuiInputTextFlags_EnterReturnsTrue);
+    std::filesystem::path dir = std::filesystem::path(d.path).parent_path();
     const bool is_dir = [&] {
         std::error_code ec;
-        return std::filesystem::is_directory(dialog.path, ec);
+        return std::filesystem::is_directory(d.path, ec);
     }();
-    if (is_dir) dir = dialog.path;
-    const std::vector<std::string> files = csv_files(dir.empty() ? "." : dir);
-    bool open = enter;
+    if (is_dir) dir = d.path;
+    const std::vector<std::string> files = files_with(dir.empty() ? "." : dir, t.ext);
+    bool chosen = enter;
     if (ImGui::BeginListBox("##files", ImVec2(-1, 8 * ImGui::GetTextLineHeightWithSpacing()))) {
         for (const std::string& name : files) {
             const std::string full = (dir / name).string();
-            if (ImGui::Selectable(name.c_str(), full == dialog.path, ImGuiSelectableFlags_AllowDoubleClick)) {
-                dialog.path = full;
-                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) open = true;
+            if (ImGui::Selectable(name.c_str(), full == d.path, ImGuiSelectableFlags_AllowDoubleClick)) {
+                d.path = full;
+                if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) chosen = true;
             }
         }
-        if (files.empty()) ImGui::TextDisabled("no .csv files in %s", dir.empty() ? "." : dir.c_str());
+        if (files.empty()) ImGui::TextDisabled("no %s files in %s", t.ext, dir.empty() ? "." : dir.c_str());
         ImGui::EndListBox();
     }
-    if ((ImGui::Button("Open") || open) && !dialog.path.empty() && !is_dir) {
-        e.load_data = dialog.path;
+    std::optional<std::string> out;
+    if ((ImGui::Button(t.action) || chosen) && !d.path.empty() && !is_dir) {
+        out = d.path;
         ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
     if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
         ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
+    return out;
+}
+
+} // namespace
+
+UiEdits draw_file_dialogs(FileDialogs& dialog) {
+    UiEdits e;
+    e.load_data =
+        path_dialog(dialog.data, {"Open data file",
+                                  "CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f "
+                                  "set in the panel); optional theta_deg, sigma, label.",
+                                  ".csv", "Open"});
+    e.open_session = path_dialog(
+        dialog.open_session, {"Open session",
+                              "A session file (JSON) saved by File > Save session: parameters, model, units, "
+                              "animation, view and data file. The animation restarts from it.",
+                              ".json", "Open"});
+    if (dialog.save_session.open_requested && dialog.save_session.path.empty())
+        dialog.save_session.path = "frictionviz-session.json";
+    e.save_session = path_dialog(
+        dialog.save_session, {"Save session",
+                              "Saves parameters, model, units, animation, view and the data file's path as "
+                              "JSON (File > Open session, or frictionviz gui --session FILE).",
+                              ".json", "Save"});
     return e;
+}
+
+void draw_share_link(const UiState& ui) {
+    std::string link = share_link(ui.model, ui.params);
+    // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
+    // height, so the panel's rows below stay where they are.
+    const ImGuiStyle& st = ImGui::GetStyle();
+    ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(st.FramePadding.x, 0));
+    const char* copy = "Copy link";
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize(copy).x -
+                            2 * st.FramePadding.x - st.ItemSpacing.x);
+    ImGui::InputText("##link", &link, ImGuiInputTextFlags_ReadOnly);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Share link: the model and its parameters (θ in degrees)\n%s\n"
+                          "frictionviz gui --link '%s' starts from it, and the browser version reads the "
+                          "same keys from its address.",
+                          link.c_str(), link.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton(copy)) ImGui::SetClipboardText(link.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("copy the share link to the clipboard");
+    ImGui::PopStyleVar();
 }
 
 } // namespace fv::app

@@ -1,4 +1,4 @@
-// The control panel's physical-units and measured-data sections, the File menu and its open dialog.
+// The control panel's physical-units, measured-data and share-link sections, the File menu and its dialogs.
 #pragma once
 
 #include "ui_state.hpp"
@@ -7,23 +7,32 @@
 
 namespace fv::app {
 
-// State of the "Open data file" dialog between frames (the path being typed).
-struct OpenDataDialog {
+// A path dialog's state between frames: the path being typed, and a request to show the dialog.
+struct PathDialog {
     std::string path;
     bool open_requested = false;
+};
+// The File menu's dialogs: open a data file, open a session, save a session.
+struct FileDialogs {
+    PathDialog data, open_session, save_session;
 };
 
 // Amplitude and frequency inputs; v_b and z_ss as inputs that set zeta and r_disp (Eqs. (6), (34)).
 UiEdits draw_vibration_controls(const UiState& ui);
 
 // The data file shown, its points, and buttons to open, fit and clear.
-UiEdits draw_data_controls(const UiState& ui, OpenDataDialog& dialog);
+UiEdits draw_data_controls(const UiState& ui, FileDialogs& dialog);
 
-// The panel's menu bar: File (open data, clear data, export, screenshot, quit). Call right after Begin()
-// of a window with ImGuiWindowFlags_MenuBar.
-UiEdits draw_menu(const UiState& ui, OpenDataDialog& dialog);
+// The share link of the state shown (fv/share_link.hpp) in a read-only field, with a button that copies it
+// to the clipboard; one line of text high (for the Parameters header's row).
+void draw_share_link(const UiState& ui);
 
-// The modal open dialog (a path field and the CSV files next to it); call once per frame, at window level.
-UiEdits draw_open_dialog(OpenDataDialog& dialog);
+// The panel's menu bar: File (open data, clear data, open and save a session, export, screenshot, quit).
+// Call right after Begin() of a window with ImGuiWindowFlags_MenuBar.
+UiEdits draw_menu(const UiState& ui, FileDialogs& dialog);
+
+// The modal dialogs (a path field and the CSV or JSON files next to it); call once per frame, at window
+// level.
+UiEdits draw_file_dialogs(FileDialogs& dialog);
 
 } // namespace fv::app

@@ -96,6 +96,8 @@ void write_requested_files(const AppState::Actions& act, const std::string& scre
         report(path, write_file_atomic(path, trace_csv(app.sim())),
                " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)");
     }
+    if (!act.save_session.empty())
+        report(act.save_session, write_session(act.save_session, session_of(app.ui())), " (session)");
 }
 
 } // namespace
@@ -113,8 +115,8 @@ int run_gui(const GuiOptions& o) {
     const bool scripted = o.frames > 0 || o.bench_frames > 0;
     const bool real_time = platform->interactive() && !scripted; // else a fixed 1/60 s per frame, no mouse
     const Script script = o.script.empty() ? Script{} : load_script(o.script);
-    AppState app(o.model, o.params, o.amplitude_um, o.frequency_khz, o.data);
-    OpenDataDialog dialog;
+    AppState app(o.start, o.data, o.session_file);
+    FileDialogs dialog;
     UiEdits queued;
     DashboardTransforms transforms{};
     FrameStats stats;

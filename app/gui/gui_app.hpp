@@ -2,6 +2,8 @@
 // screenshots, benchmarks).
 #pragma once
 
+#include "session.hpp"
+
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
 
@@ -14,16 +16,16 @@ struct GuiOptions {
     std::string platform = "auto"; // make_platform(): window, headless or auto
     int width = 0, height = 0;     // framebuffer pixels; 0: the platform's default (1280 x 800 logical)
     float scale = 0;               // pixels per logical unit; 0: the platform's (monitor content scale)
-    Model model = Model::dahl;
-    Params params{0.15, kPi / 2, 2, 1};
-    // The vibration, for physical units beside zeta and r_disp: the paper's Littmann experiment (Sec. 4), 0.7
-    // um at 60 kHz, unless --amplitude / --frequency say otherwise. Both finite and > 0, v_v = 2 pi f A too.
-    double amplitude_um = 0.7, frequency_khz = 60;
-    int frames = 0;         // > 0: stop after this many frames (scripted runs)
-    std::string script;     // scripted slider changes, see script.hpp
-    std::string screenshot; // write the last frame here (PNG)
-    int bench_frames = 0;   // > 0: change the sliders every frame and print frame-time percentiles
-    std::optional<MeasurementSet> data; // measured r_x(zeta) to show from the start, read with A and f above
+    // The state to start from: the command line's flags, a --link or a --session file, checked (the
+    // vibration: both finite and > 0, v_v = 2 pi f A too). Default: Fig. 14a's parameters, the paper's
+    // Littmann experiment (Sec. 4: 0.7 um at 60 kHz).
+    Session start;
+    std::string session_file; // the --session file start came from (named in the status line), or ""
+    int frames = 0;           // > 0: stop after this many frames (scripted runs)
+    std::string script;       // scripted slider changes, see script.hpp
+    std::string screenshot;   // write the last frame here (PNG)
+    int bench_frames = 0;     // > 0: change the sliders every frame and print frame-time percentiles
+    std::optional<MeasurementSet> data; // measured r_x(zeta) to show from the start, read with start's A, f
 };
 
 // Returns the process exit code. Throws std::invalid_argument for an unknown platform and

@@ -1,5 +1,6 @@
 #include "script.hpp"
 
+#include "fv/atomic_file.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/input_file.hpp"
 #include "fv/units.hpp"
@@ -17,12 +18,16 @@ bool numeric(const std::string& a) {
     return a == "zeta" || a == "theta" || a == "rdisp" || a == "i" || a == "speed" || a == "trail" ||
            a == "amplitude" || a == "frequency" || a == "vb" || a == "zss" || a == "rewind";
 }
+bool is_path(const std::string& a) {
+    return a == "load" || a == "save-session" || a == "open-session";
+}
 bool needs_value(const std::string& a) {
-    return numeric(a) || a == "model" || a == "preset" || a == "load";
+    return numeric(a) || is_path(a) || a == "model" || a == "preset";
 }
 constexpr const char* kActions =
     "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-    "amplitude frequency vb zss load clear fit back rewind steady help loop why pin unpin present";
+    "amplitude frequency vb zss load clear fit back rewind steady help loop why pin unpin present "
+    "save-session open-session";
 // One list of the actions: the message's.
 bool known(const std::string& a) {
     return !a.empty() && (" " + std::string(kActions) + " ").find(" " + a + " ") != std::string::npos;
@@ -68,9 +73,13 @@ Script load_script(const std::string& path) {
             }
         }
         if (ls >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
-        // A data file is found next to the script, wherever the script is run from.
-        if (action == "load" && !value.empty() && value.front() != '/')
+        // Files are found next to the script, wherever the script is run from.
+        if (is_path(action) && value.front() != '/')
             value = (std::filesystem::path(path).parent_path() / value).lexically_normal().string();
+        // A session that cannot be written is refused before the run, like --screenshot.
+        if (action == "save-session")
+            if (const std::string why = check_writable(value); !why.empty())
+                throw std::runtime_error(where + "save-session " + value + ": " + why);
         s.lines[frame].push_back(action + " " + value);
     }
     return s;
@@ -155,6 +164,10 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             e.clear_data = true;
         else if (a == "fit")
             e.fit_data = true;
+        else if (a == "save-session")
+            e.save_session = v;
+        else if (a == "open-session")
+            e.open_session = v;
     }
     if (params_changed) e.params = p;
     return e;

@@ -6,7 +6,10 @@
 // (r_disp and i to the data; waits for it), back (one frame back in time), rewind PERIODS (show the state
 // that long ago; pauses), steady (jump onto the periodic steady state), help (show or hide the help overlay),
 // loop (the hysteresis loop), why (the mechanism, Fig. 4), pin (the current r_x(zeta) curve; waits for it),
-// unpin (all). Edits of frame f are applied at the start of frame f, like edits from the panel.
+// unpin (all), save-session PATH (the state after this frame's edits, as the File menu saves it; refused
+// before the run when PATH cannot be written), open-session PATH (as the File menu opens it: a bad file
+// leaves the state and says why in the status line); paths relative to the script's directory. Edits of
+// frame f are applied at the start of frame f, like edits from the panel.
 #pragma once
 
 #include "ui_state.hpp"

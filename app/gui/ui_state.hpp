@@ -51,6 +51,9 @@ struct UiEdits {
     // before this frame's A or f edits (as the panel shows them).
     std::optional<double> vb_m_s, zss_um;
     std::optional<std::string> load_data; // a CSV path to read (replaces the data shown)
+    // A session file to open (replaces the whole state, applied before the frame's other edits) or to save
+    // (the state after this frame's edits).
+    std::optional<std::string> open_session, save_session;
     bool clear_data = false, fit_data = false;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;
     // Time: scrub to this far behind the live simulation (pauses), one frame back, onto the steady state.

@@ -1,0 +1,451 @@
+#include "session.hpp"
+
+#include "app_state.hpp"
+
+#include "fv/atomic_file.hpp"
+#include "fv/input_file.hpp"
+#include "fv/share_link.hpp"
+#include "fv/units.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace fv::app {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr std::size_t kMaxSessionBytes = 1u << 20;
+
+// Where each key and each value of a (valid) JSON text starts, by JSON pointer ("/view/zoom"), and the first
+// key given twice in one object. nlohmann's parser keeps no positions; the text is re-scanned after it has
+// accepted it, so the scan need not check anything. Containers deeper than kDepth are skipped unrecorded.
+class Positions {
+  public:
+    explicit Positions(const std::string& text) : s_(text) {
+        if (s_.compare(0, 3, "\xEF\xBB\xBF") == 0) k_ = 3; // the BOM nlohmann skips
+        value("", 0);
+    }
+    std::size_t value_at(const std::string& ptr) const { return find(values_, ptr); }
+    std::size_t key_at(const std::string& ptr) const { return find(keys_, ptr); }
+    const std::string& duplicate() const { return duplicate_; } // pointer, or ""
+
+  private:
+    static constexpr int kDepth = 8;
+    static std::size_t find(const std::map<std::string, std::size_t>& m, const std::string& ptr) {
+        const auto it = m.find(ptr);
+        return it == m.end() ? 0 : it->second;
+    }
+    void blank() {
+        while (k_ < s_.size() && (s_[k_] == ' ' || s_[k_] == '\t' || s_[k_] == '\n' || s_[k_] == '\r')) ++k_;
+    }
+    std::string string() { // at the opening quote; escapes kept as written
+        const std::size_t from = ++k_;
+        while (k_ < s_.size() && s_[k_] != '"') k_ += s_[k_] == '\\' ? 2 : 1;
+        return s_.substr(from, k_++ - from);
+    }
+    void skip_container() { // at '{' or '['
+        int depth = 0;
+        do {
+            if (s_[k_] == '"') {
+                string();
+                continue;
+            }
+            if (s_[k_] == '{' || s_[k_] == '[') ++depth;
+            if (s_[k_] == '}' || s_[k_] == ']') --depth;
+            ++k_;
+        } while (depth > 0 && k_ < s_.size());
+    }
+    void value(const std::string& ptr, int depth) {
+        blank();
+        if (k_ >= s_.size()) return;
+        values_.emplace(ptr, k_);
+        const char open = s_[k_];
+        if ((open == '{' || open == '[') && depth >= kDepth) return skip_container();
+        if (open == '"') {
+            string();
+        } else if (open == '{' || open == '[') {
+            ++k_;
+            for (int index = 0;; ++index) {
+                blank();
+                if (s_[k_] == '}' || s_[k_] == ']') break;
+                std::string child = ptr + "/" + std::to_string(index);
+                if (open == '{') {
+                    const std::size_t at = k_;
+                    child = ptr + "/" + string();
+                    // A repeated key: keep the first one found, pointing at its second occurrence.
+                    if (!keys_.emplace(child, at).second && duplicate_.empty())
+                        duplicate_ = child, keys_[child] = at;
+                    blank();
+                    ++k_; // ':'
+                }
+                value(child, depth + 1);
+                blank();
+                if (s_[k_] == ',') ++k_;
+            }
+            ++k_;
+        } else {
+            while (k_ < s_.size() && std::string_view(",]} \t\r\n").find(s_[k_]) == std::string_view::npos)
+                ++k_;
+        }
+    }
+
+    const std::string& s_;
+    std::size_t k_ = 0;
+    std::map<std::string, std::size_t> values_, keys_;
+    std::string duplicate_;
+};
+
+// "FILE:LINE:COL" of a byte offset (line and column from 1, the column in bytes).
+std::string where(const std::string& file, const std::string& text, std::size_t offset) {
+    offset = std::min(offset, text.size());
+    const std::size_t line =
+        1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
+    const std::size_t nl = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+    const std::size_t col = nl == std::string::npos ? offset + 1 : offset - nl;
+    return file + ":" + std::to_string(line) + ":" + std::to_string(col);
+}
+
+std::string type_name(const Json& v) {
+    if (v.is_number()) return "a number";
+    if (v.is_string()) return "a string";
+    if (v.is_boolean()) return "true/false";
+    if (v.is_null()) return "null";
+    if (v.is_array()) return "an array";
+    return "an object";
+}
+
+// Reads the checked values of one object (the top level or "view") and says where a bad one is.
+class Reader {
+  public:
+    Reader(const std::string& file, const std::string& text, const Positions& pos)
+        : file_(file), text_(text), pos_(pos) {}
+
+    [[noreturn]] void fail_at(const std::string& ptr, const std::string& what, bool key = false) const {
+        throw SessionError(where(file_, text_, key ? pos_.key_at(ptr) : pos_.value_at(ptr)) + ": " + what);
+    }
+
+    // Every key of `obj` (at `ptr`) must be one of `allowed`.
+    void only(const Json& obj, const std::string& ptr, const std::vector<std::string>& allowed) const {
+        std::string unknown, first, list;
+        for (const auto& [k, v] : obj.items())
+            if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+                if (first.empty()) first = ptr + "/" + k;
+                unknown += (unknown.empty() ? "\"" : ", \"") + k + "\"";
+            }
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        if (!first.empty())
+            fail_at(first,
+                    "unknown key" + std::string(unknown.find(',') != std::string::npos ? "s " : " ") +
+                        unknown + (ptr.empty() ? "" : " in \"" + ptr.substr(1) + "\"") + "; allowed: " + list,
+                    true);
+    }
+
+    template <class T, class Check>
+    void get(const Json& obj, const std::string& ptr, const char* key, T& out, Check check) const {
+        if (!obj.contains(key)) return;
+        const std::string p = ptr + "/" + key;
+        const Json& v = obj.at(key);
+        if constexpr (std::is_same_v<T, double>) {
+            if (!v.is_number()) fail_at(p, std::string(key) + ": expected a number, got " + type_name(v));
+            const double x = v.get<double>();
+            if (const std::string why = check(x); !why.empty()) fail_at(p, why);
+            out = x;
+        } else if constexpr (std::is_same_v<T, bool>) {
+            if (!v.is_boolean())
+                fail_at(p, std::string(key) + ": expected true or false, got " + type_name(v));
+            out = v.get<bool>();
+        } else {
+            if (!v.is_string()) fail_at(p, std::string(key) + ": expected a string, got " + type_name(v));
+            if (const std::string why = check(v.get<std::string>()); !why.empty()) fail_at(p, why);
+            out = v.get<std::string>();
+        }
+    }
+
+  private:
+    const std::string& file_;
+    const std::string& text_;
+    const Positions& pos_;
+};
+
+auto in_range(const char* name, ParamRange r) {
+    return [name, r](double x) -> std::string {
+        if (inside(x, r)) return "";
+        return std::string(name) + " = " + shortest_decimal(x) + "; allowed: " + name + " in " + describe(r);
+    };
+}
+
+auto one_of(const char* name, std::vector<std::string> allowed) {
+    return [name, allowed](const std::string& v) -> std::string {
+        if (std::find(allowed.begin(), allowed.end(), v) != allowed.end()) return "";
+        std::string list;
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        return std::string(name) + " = \"" + v + "\"; allowed: " + list;
+    };
+}
+
+// The message of nlohmann's parse_error without its id and position (those are given as FILE:LINE:COL).
+std::string parse_detail(const nlohmann::json::parse_error& e) {
+    std::string w = e.what();
+    const auto col = w.find("column ");
+    const auto colon = w.find(": ", col == std::string::npos ? 0 : col);
+    return colon == std::string::npos ? w : w.substr(colon + 2);
+}
+
+} // namespace
+
+Session session_of(const UiState& ui) {
+    Session s;
+    copy_session_fields(s, ui);
+    if (ui.data) {
+        std::error_code ec;
+        const auto abs = std::filesystem::absolute(ui.data->file, ec);
+        s.data_file = ec ? ui.data->file : abs.lexically_normal().string();
+    }
+    return s;
+}
+
+namespace {
+
+// JSON with objects and arrays of objects one item a line, arrays of numbers on one line ("pan": [0.3, -1]).
+void pretty(const Json& j, int indent, std::string& out) {
+    const bool flat =
+        j.is_array() && std::none_of(j.begin(), j.end(), [](const Json& v) { return v.is_structured(); });
+    if (!j.is_structured() || j.empty() || flat) {
+        if (!flat) {
+            out += j.dump();
+            return;
+        }
+        out += '[';
+        for (std::size_t k = 0; k < j.size(); ++k) out += (k ? ", " : "") + j[k].dump();
+        out += ']';
+        return;
+    }
+    const std::string pad(static_cast<std::size_t>(indent) + 2, ' ');
+    out += j.is_object() ? "{\n" : "[\n";
+    std::size_t k = 0;
+    for (auto it = j.begin(); it != j.end(); ++it, ++k) {
+        out += pad;
+        if (j.is_object()) out += Json(it.key()).dump() + ": ";
+        pretty(*it, indent + 2, out);
+        out += k + 1 < j.size() ? ",\n" : "\n";
+    }
+    out += std::string(static_cast<std::size_t>(indent), ' ') + (j.is_object() ? "}" : "]");
+}
+
+const char* panel_name(const Session& s) {
+    return s.show_mechanism ? "why" : s.show_loop ? "loop" : s.show_map ? "map" : "curves";
+}
+
+} // namespace
+
+std::string session_json(const Session& s) {
+    Json j;
+    j["version"] = kSessionVersion;
+    j["model"] = to_string(s.model);
+    j["zeta"] = s.params.zeta;
+    j["theta"] = theta_degrees(s.params.theta);
+    j["rdisp"] = s.params.rdisp;
+    j["i"] = s.params.i;
+    j["amplitude_um"] = s.amplitude_um;
+    j["frequency_khz"] = s.frequency_khz;
+    j["speed"] = s.speed;
+    j["playing"] = s.playing;
+    j["panel"] = panel_name(s);
+    j["view"] = Json{{"zoom", s.view.zoom},
+                     {"pan", {s.view.pan.x(), s.view.pan.y()}},
+                     {"follow", s.view.follow},
+                     {"trail_periods", s.view.trail_periods},
+                     {"presentation", s.presentation}};
+    j["pins"] = Json::array();
+    for (const PinnedCurve& p : s.pins) {
+        Json rx = Json::array();
+        for (double v : p.rx)
+            rx.push_back(std::isfinite(v) ? Json(v) : Json(nullptr)); // a failed point: a gap
+        j["pins"].push_back(Json{{"label", p.label}, {"zeta", p.zeta}, {"r_x", rx}});
+    }
+    j["data"] = s.data_file.empty() ? Json(nullptr) : Json(s.data_file);
+    std::string out;
+    pretty(j, 0, out);
+    return out + "\n";
+}
+
+namespace {
+
+// "pins": [{"label": "..", "zeta": [..], "r_x": [.., null, ..]}, ...]: at most kMaxPins curves, zeta in its
+// range, r_x a number or null (a point the solver did not vouch for: a gap), both of one length.
+std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
+    if (!pins.is_array()) r.fail_at("/pins", "pins: expected an array of curves, got " + type_name(pins));
+    if (pins.size() > kMaxPins)
+        r.fail_at("/pins", "pins: " + std::to_string(pins.size()) + " curves; allowed: at most " +
+                               std::to_string(kMaxPins));
+    std::vector<PinnedCurve> out;
+    for (std::size_t k = 0; k < pins.size(); ++k) {
+        const std::string ptr = "/pins/" + std::to_string(k);
+        const Json& c = pins[k];
+        if (!c.is_object())
+            r.fail_at(ptr,
+                      "pins: expected {\"label\": .., \"zeta\": [..], \"r_x\": [..]}, got " + type_name(c));
+        r.only(c, ptr, {"label", "zeta", "r_x"});
+        for (const char* key : {"label", "zeta", "r_x"})
+            if (!c.contains(key)) r.fail_at(ptr, std::string("pin without \"") + key + "\"");
+        PinnedCurve pin;
+        r.get(c, ptr, "label", pin.label, [](const std::string&) { return std::string(); });
+        const Json &zeta = c["zeta"], &rx = c["r_x"];
+        for (const auto& [key, a] : {std::pair<const char*, const Json*>{"zeta", &zeta}, {"r_x", &rx}})
+            if (!a->is_array() || a->empty() || a->size() > 100000)
+                r.fail_at(ptr + "/" + key,
+                          std::string(key) + ": expected an array of 1 to 100000 numbers, got " +
+                              (a->is_array() ? std::to_string(a->size()) + " items" : type_name(*a)));
+        if (zeta.size() != rx.size())
+            r.fail_at(ptr + "/r_x", "r_x: " + std::to_string(rx.size()) + " values for " +
+                                        std::to_string(zeta.size()) + " zeta values; allowed: one per zeta");
+        for (std::size_t n = 0; n < zeta.size(); ++n) {
+            const std::string at = "/" + std::to_string(n);
+            if (!zeta[n].is_number())
+                r.fail_at(ptr + "/zeta" + at, "zeta: expected a number, got " + type_name(zeta[n]));
+            if (const std::string why = in_range("zeta", kZetaRange)(zeta[n].get<double>()); !why.empty())
+                r.fail_at(ptr + "/zeta" + at, why);
+            if (!rx[n].is_number() && !rx[n].is_null())
+                r.fail_at(ptr + "/r_x" + at,
+                          "r_x: expected a number or null (a gap), got " + type_name(rx[n]));
+            pin.zeta.push_back(zeta[n].get<double>());
+            pin.rx.push_back(rx[n].is_null() ? std::nan("") : rx[n].get<double>());
+        }
+        out.push_back(std::move(pin));
+    }
+    return out;
+}
+
+} // namespace
+
+Session parse_session(const std::string& text, const std::string& file) {
+    Json j;
+    try {
+        j = Json::parse(text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw SessionError(where(file, text, e.byte > 0 ? e.byte - 1 : 0) +
+                           ": not valid JSON: " + parse_detail(e));
+    } catch (const nlohmann::json::exception& e) {
+        // A number beyond the doubles ("number overflow parsing '1e400'"): no byte position, so look for it.
+        std::string w = e.what();
+        const auto q = w.find('\'');
+        const std::string token = q == std::string::npos ? "" : w.substr(q + 1, w.find('\'', q + 1) - q - 1);
+        const std::size_t at = token.empty() ? 0 : text.find(token);
+        throw SessionError(where(file, text, at == std::string::npos ? 0 : at) + ": " +
+                           w.substr(w.find(']') + 2) + " (beyond double precision)");
+    }
+    const Positions pos(text);
+    const Reader r(file, text, pos);
+    if (!j.is_object())
+        r.fail_at("", "a session is a JSON object ({\"version\": 1, ...}), not " + type_name(j));
+    if (!pos.duplicate().empty())
+        r.fail_at(pos.duplicate(),
+                  "key \"" + pos.duplicate().substr(1) + "\" is given twice; each key at most once", true);
+    r.only(j, "",
+           {"version", "model", "zeta", "theta", "rdisp", "i", "amplitude_um", "frequency_khz", "speed",
+            "playing", "panel", "view", "pins", "data"});
+    if (!j.contains("version"))
+        r.fail_at("", "no \"version\"; a frictionviz session starts {\"version\": " +
+                          std::to_string(kSessionVersion) + ", ...}");
+    const Json& version = j["version"];
+    if (!version.is_number_integer() || version.get<long long>() != kSessionVersion)
+        r.fail_at("/version", "version " + version.dump() + " is not one this frictionviz reads; allowed: " +
+                                  std::to_string(kSessionVersion));
+
+    Session s;
+    std::string model = to_string(s.model), panel = panel_name(s);
+    r.get(j, "", "model", model, one_of("model", {"dahl", "rigid"}));
+    s.model = *parse_model(model);
+    double theta_deg = s.params.theta * 180 / kPi;
+    r.get(j, "", "zeta", s.params.zeta, in_range("zeta", kZetaRange));
+    r.get(j, "", "theta", theta_deg, in_range("theta", kThetaRange));
+    if (j.contains("theta")) s.params.theta = theta_deg * kPi / 180;
+    r.get(j, "", "rdisp", s.params.rdisp, in_range("rdisp", kRdispRange));
+    r.get(j, "", "i", s.params.i, in_range("i", kIRange));
+    r.get(j, "", "amplitude_um", s.amplitude_um, in_range("amplitude_um", kAmplitudeRange));
+    r.get(j, "", "frequency_khz", s.frequency_khz, in_range("frequency_khz", kFrequencyRange));
+    try {
+        units::vibration_velocity(s.amplitude_um, s.frequency_khz);
+    } catch (const units::UnitError& e) {
+        r.fail_at(j.contains("frequency_khz") ? "/frequency_khz" : "/amplitude_um", e.what());
+    }
+    r.get(j, "", "speed", s.speed, in_range("speed", kSpeedRange));
+    r.get(j, "", "playing", s.playing, nullptr);
+    r.get(j, "", "panel", panel, one_of("panel", {"curves", "map", "loop", "why"}));
+    s.show_map = panel == "map";
+    s.show_loop = panel == "loop";
+    s.show_mechanism = panel == "why";
+
+    if (j.contains("view")) {
+        const Json& v = j["view"];
+        if (!v.is_object())
+            r.fail_at("/view", "view: expected an object {\"zoom\": ..}, got " + type_name(v));
+        r.only(v, "/view", {"zoom", "pan", "follow", "trail_periods", "presentation"});
+        r.get(v, "/view", "presentation", s.presentation, nullptr);
+        r.get(v, "/view", "zoom", s.view.zoom, in_range("zoom", kZoomRange));
+        r.get(v, "/view", "follow", s.view.follow, nullptr);
+        r.get(v, "/view", "trail_periods", s.view.trail_periods, in_range("trail_periods", kTrailRange));
+        if (v.contains("pan")) {
+            const Json& p = v["pan"];
+            if (!p.is_array() || p.size() != 2)
+                r.fail_at("/view/pan",
+                          "pan: expected [x, y], got " + (p.is_array() ? p.dump() : type_name(p)));
+            for (int k = 0; k < 2; ++k) {
+                const std::string ptr = "/view/pan/" + std::to_string(k);
+                if (!p[k].is_number()) r.fail_at(ptr, "pan: expected a number, got " + type_name(p[k]));
+                const double x = p[k].get<double>();
+                if (const std::string why = in_range(k == 0 ? "pan x" : "pan y", kPanRange)(x); !why.empty())
+                    r.fail_at(ptr, why);
+                s.view.pan[k] = x;
+            }
+        }
+    }
+    if (j.contains("pins")) s.pins = read_pins(j["pins"], r);
+    if (j.contains("data") && !j["data"].is_null()) {
+        r.get(j, "", "data", s.data_file, [](const std::string& f) {
+            return f.empty() ? std::string("data: an empty path; give a CSV file or null") : std::string();
+        });
+        const std::filesystem::path p(s.data_file);
+        if (p.is_relative())
+            s.data_file = (std::filesystem::path(file).parent_path() / p).lexically_normal().string();
+    }
+    return s;
+}
+
+LoadedSession load_session(const std::string& path) {
+    std::string text;
+    InputLimits limits;
+    limits.max_bytes = kMaxSessionBytes;
+    if (const std::string why = read_input_file(path, text, limits); !why.empty())
+        throw SessionError(path + ": " + why);
+    if (text.size() > kMaxSessionBytes)
+        throw SessionError(path + ": larger than 1 MiB; a session file is a few hundred bytes");
+    LoadedSession out{parse_session(text, path), std::nullopt};
+    const Session& s = out.session;
+    if (!s.data_file.empty()) {
+        ReadOptions ro;
+        ro.amplitude_um = s.amplitude_um;
+        ro.frequency_khz = s.frequency_khz;
+        const std::string at = where(path, text, Positions(text).value_at("/data")) + ": data: ";
+        try {
+            out.data = read_measurements(s.data_file, ro);
+        } catch (const DataError& e) {
+            throw SessionError(at + e.what());
+        }
+        if (out.data->points.empty()) throw SessionError(at + s.data_file + " has no data rows");
+    }
+    return out;
+}
+
+std::string write_session(const std::string& path, const Session& s) {
+    return write_file_atomic(path, session_json(s));
+}
+
+} // namespace fv::app

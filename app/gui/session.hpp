@@ -1,0 +1,95 @@
+// Session files: the app's state as JSON, to hand a class the exact setup. Saved and opened from the File
+// menu, `gui --session FILE` and the script actions save-session / open-session; written through
+// write_file_atomic, read through read_input_file (the project's output and input policy).
+//
+//   {
+//     "version": 1,
+//     "model": "dahl",                         dahl | rigid
+//     "zeta": 0.15, "theta": 90,               the share link's keys (theta in degrees), same ranges
+//     "rdisp": 2, "i": 1,
+//     "amplitude_um": 0.7, "frequency_khz": 60, the vibration behind the physical units
+//     "speed": 0.25, "playing": true,          animation: vibration periods per second, running or paused
+//     "panel": "curves",                       lower right: curves | map | loop | why (mechanism)
+//     "view": {"zoom": 1, "pan": [0, 0], "follow": true, "trail_periods": 1.5, "presentation": false},
+//     "pins": [{"label": "..", "zeta": [..], "r_x": [..]}],   pinned r_x(zeta) curves (at most 6; null: a
+//     gap) "data": null                             a measurements CSV (absolute when saved; a relative path
+//   }                                          is taken from the session file's directory), or null
+//
+// Reading is strict: "version" is required and must be 1; every other key is optional (a missing one takes
+// the app's default, so a hand-written session may name only what it changes); an unknown or repeated key,
+// a value of the wrong type or outside the shared range table (fv/param_ranges.hpp and the app's ranges)
+// and a data file that does not load are errors "FILE:LINE:COL: message" pointing at the offending key or
+// value. Opening a session restarts the simulation from its state (tau = 0): the simulation's history is
+// not part of it, so a session opened twice shows the same frames.
+#pragma once
+
+#include "ui_state.hpp"
+
+#include "fv/measurements.hpp"
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace fv::app {
+
+inline constexpr int kSessionVersion = 1;
+
+struct Session {
+    Model model = Model::dahl;
+    Params params = UiState{}.params;
+    double amplitude_um = UiState{}.amplitude_um, frequency_khz = UiState{}.frequency_khz;
+    double speed = UiState{}.speed;
+    bool playing = true;
+    bool show_map = false, show_loop = false, show_mechanism = false;
+    bool presentation = false; // larger type and lines, the advanced panels folded away (View menu)
+    ViewState view;            // rewind is not saved: the simulation restarts
+    std::vector<PinnedCurve> pins;
+    std::string data_file; // empty: no data
+};
+
+// The fields a Session shares with UiState (same names), copied from one to the other.
+template <class To, class From> void copy_session_fields(To& to, const From& from) {
+    to.model = from.model;
+    to.params = from.params;
+    to.amplitude_um = from.amplitude_um;
+    to.frequency_khz = from.frequency_khz;
+    to.speed = from.speed;
+    to.playing = from.playing;
+    to.show_map = from.show_map;
+    to.show_loop = from.show_loop;
+    to.show_mechanism = from.show_mechanism;
+    to.presentation = from.presentation;
+    to.view = from.view;
+    to.pins = from.pins;
+}
+
+// One line "FILE:LINE:COL: message".
+struct SessionError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The state of the app as a session (the data file's path made absolute).
+Session session_of(const UiState& ui);
+
+// The session as JSON text (2-space indent, keys in the order above, numbers that read back bit for bit).
+std::string session_json(const Session& s);
+
+// Parses and checks the text of the session file `file` (named in messages; a relative data path is taken
+// from its directory). Throws SessionError.
+Session parse_session(const std::string& text, const std::string& file);
+
+// A session read from `path` with its data file loaded (with the session's A and f), ready to show.
+struct LoadedSession {
+    Session session;
+    std::optional<MeasurementSet> data;
+};
+// Throws SessionError: unreadable file ("FILE: reason"), a parse or range error, or a data file that does not
+// load ("FILE:LINE:COL: data: DATAFILE:LINE:COL: message").
+LoadedSession load_session(const std::string& path);
+
+// Writes `s` to `path` atomically; returns "" or a one-line reason.
+std::string write_session(const std::string& path, const Session& s);
+
+} // namespace fv::app

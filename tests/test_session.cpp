@@ -1,0 +1,385 @@
+// Session files (app/gui/session.hpp) without a window: every field through JSON and back, defaults for
+// missing keys, each refusal pointing at its line and column, and opening one in the app (AppState::sync):
+// the state replaced and the simulation restarted, or, for a bad file, nothing changed. The pixel round
+// trip through the real executable is in test_gui_session.cpp.
+#include "gui/app_state.hpp"
+#include "gui/script.hpp"
+#include "gui/session.hpp"
+
+#include "fv/param_ranges.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+using namespace fv;
+using namespace fv::app;
+
+namespace {
+
+const std::string& scratch() {
+    static const std::string dir = [] {
+        char tmpl[] = "/tmp/fv-session-XXXXXX";
+        return std::string(::mkdtemp(tmpl));
+    }();
+    return dir;
+}
+
+std::string write(const std::string& name, const std::string& text) {
+    const std::string path = scratch() + "/" + name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+std::string read(const std::string& path) {
+    std::ifstream f(path);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+}
+
+const std::string kData = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
+
+// Every field away from its default, so that a field lost on the way shows.
+Session unusual() {
+    Session s;
+    s.model = Model::rigid;
+    s.params = Params{0.731, 37.5 * kPi / 180, 12.5, 0.25};
+    s.amplitude_um = 1.3;
+    s.frequency_khz = 45;
+    s.speed = 2.5;
+    s.playing = false;
+    s.show_map = true;
+    s.view.zoom = 2.5;
+    s.view.pan = Vec2(0.3, -1.25);
+    s.view.follow = false;
+    s.view.trail_periods = 3.5;
+    s.presentation = true;
+    s.pins.push_back({"Dahl, θ = 60°, r_{disp} = 2, i = 0", {0, 0.5, 1.0 / 3}, {0.1, std::nan(""), 0.7}});
+    s.pins.push_back({"rigid, θ = 90°", {0.25}, {0.2 + 0.1}});
+    s.data_file = kData;
+    return s;
+}
+
+void check_same(const Session& a, const Session& b) {
+    CHECK(a.model == b.model);
+    CHECK(a.params.zeta == b.params.zeta);
+    CHECK(a.params.theta == b.params.theta);
+    CHECK(a.params.rdisp == b.params.rdisp);
+    CHECK(a.params.i == b.params.i);
+    CHECK(a.amplitude_um == b.amplitude_um);
+    CHECK(a.frequency_khz == b.frequency_khz);
+    CHECK(a.speed == b.speed);
+    CHECK(a.playing == b.playing);
+    CHECK(a.show_map == b.show_map);
+    CHECK(a.view.zoom == b.view.zoom);
+    CHECK(a.view.pan.x() == b.view.pan.x());
+    CHECK(a.view.pan.y() == b.view.pan.y());
+    CHECK(a.view.follow == b.view.follow);
+    CHECK(a.view.trail_periods == b.view.trail_periods);
+    CHECK(a.show_loop == b.show_loop);
+    CHECK(a.show_mechanism == b.show_mechanism);
+    CHECK(a.presentation == b.presentation);
+    REQUIRE(a.pins.size() == b.pins.size());
+    for (std::size_t k = 0; k < a.pins.size(); ++k) {
+        CHECK(a.pins[k].label == b.pins[k].label);
+        CHECK(a.pins[k].zeta == b.pins[k].zeta);
+        REQUIRE(a.pins[k].rx.size() == b.pins[k].rx.size());
+        for (std::size_t n = 0; n < a.pins[k].rx.size(); ++n) // NaN: a gap on both sides
+            CHECK((a.pins[k].rx[n] == b.pins[k].rx[n] ||
+                   (std::isnan(a.pins[k].rx[n]) && std::isnan(b.pins[k].rx[n]))));
+    }
+    CHECK(a.data_file == b.data_file);
+}
+
+std::string refusal(const std::string& text) {
+    try {
+        parse_session(text, "s.json");
+    } catch (const SessionError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("session JSON: every field goes through the file and back unchanged", "[gui][session]") {
+    const Session s = unusual();
+    // Each field differs from the default: a field the writer or the reader dropped would come back as it.
+    const Session d;
+    CHECK(s.model != d.model);
+    CHECK(s.params.zeta != d.params.zeta);
+    CHECK(s.params.theta != d.params.theta);
+    CHECK(s.params.rdisp != d.params.rdisp);
+    CHECK(s.params.i != d.params.i);
+    CHECK(s.amplitude_um != d.amplitude_um);
+    CHECK(s.frequency_khz != d.frequency_khz);
+    CHECK(s.speed != d.speed);
+    CHECK(s.playing != d.playing);
+    CHECK(s.show_map != d.show_map);
+    CHECK(s.view.zoom != d.view.zoom);
+    CHECK(s.view.pan.x() != d.view.pan.x());
+    CHECK(s.view.pan.y() != d.view.pan.y());
+    CHECK(s.view.follow != d.view.follow);
+    CHECK(s.view.trail_periods != d.view.trail_periods);
+    CHECK(s.pins.size() != d.pins.size());
+    CHECK(s.presentation != d.presentation);
+    CHECK(s.data_file != d.data_file);
+
+    const std::string text = session_json(s);
+    INFO(text);
+    check_same(parse_session(text, "s.json"), s);
+    // The documented keys, theta in degrees, the panel by name.
+    for (const char* key :
+         {"\"version\": 1", "\"model\": \"rigid\"", "\"zeta\": 0.731", "\"theta\": 37.5", "\"rdisp\": 12.5",
+          "\"i\": 0.25", "\"amplitude_um\": 1.3", "\"frequency_khz\": 45.0", "\"speed\": 2.5",
+          "\"playing\": false", "\"panel\": \"map\"", "\"zoom\": 2.5", "\"follow\": false",
+          "\"trail_periods\": 3.5", "\"data\": \"", "\"pan\": [0.3, -1.25]", "\"presentation\": true",
+          "\"r_x\": [0.1, null, 0.7]", "\"zeta\": [0.25]"})
+        CHECK(text.find(key) != std::string::npos);
+    // The other panels: show_map, show_loop and show_mechanism are one choice in the file.
+    Session loop = s;
+    loop.show_map = false;
+    loop.show_loop = true;
+    check_same(parse_session(session_json(loop), "s.json"), loop);
+    CHECK(session_json(loop).find("\"panel\": \"loop\"") != std::string::npos);
+    Session why = loop;
+    why.show_loop = false;
+    why.show_mechanism = true;
+    check_same(parse_session(session_json(why), "s.json"), why);
+    CHECK(session_json(why).find("\"panel\": \"why\"") != std::string::npos);
+    // Numbers that are not short decimals come back bit for bit too.
+    Session odd = s;
+    odd.params.zeta = 0.1 + 0.2;
+    odd.params.theta = 1.0; // radians: 57.29577951308232 degrees
+    odd.view.pan = Vec2(1.0 / 3, -2.0 / 3);
+    check_same(parse_session(session_json(odd), "s.json"), odd);
+
+    // Through the app: a state started from the session gives the session back.
+    AppState app(s);
+    Session back = session_of(app.ui());
+    CHECK(back.data_file.empty()); // no data given to the app
+    back.data_file = s.data_file;
+    check_same(back, s);
+}
+
+TEST_CASE("session JSON: missing keys take the app's defaults; a relative data path is the session's "
+          "neighbour",
+          "[gui][session]") {
+    check_same(parse_session("{\"version\": 1}", "s.json"), Session{});
+    const UiState ui;
+    const Session d = parse_session("{\"version\": 1}", "s.json");
+    CHECK(d.params.zeta == ui.params.zeta);
+    CHECK(d.speed == ui.speed);
+    CHECK(d.view.trail_periods == ui.view.trail_periods);
+    CHECK(parse_session(R"({"version": 1, "data": "m.csv"})", "dir/sub/s.json").data_file == "dir/sub/m.csv");
+    CHECK(parse_session(R"({"version": 1, "data": "../m.csv"})", "dir/sub/s.json").data_file == "dir/m.csv");
+    CHECK(parse_session(R"({"version": 1, "data": "/abs/m.csv"})", "dir/s.json").data_file == "/abs/m.csv");
+    CHECK(parse_session(R"({"version": 1, "data": null})", "dir/s.json").data_file.empty());
+}
+
+TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offending key or value",
+          "[gui][session]") {
+    struct Case {
+        const char* text;
+        const char* message;
+    };
+    for (const Case& c : {
+             Case{"{\n  \"version\": 1,\n  \"zeta\": 0.2,\n  \"theta\" 3\n}",
+                  "s.json:4:11: not valid JSON: syntax error while parsing object separator"},
+             Case{"{\n  \"version\": 1,\n  \"zeta\": 0.2,\n}", "s.json:4:1: not valid JSON: syntax error"},
+             Case{"",
+                  "s.json:1:1: not valid JSON: syntax error while parsing value - unexpected end of input"},
+             Case{"{\"version\": 1, \"rdisp\": 1e400}", "s.json:1:25: number overflow parsing '1e400'"},
+             Case{"{\n  \"version\": 1,\n  \"zeta\": 200\n}",
+                  "s.json:3:11: zeta = 200; allowed: zeta in [0, 100]"},
+             Case{"{\"version\": 1,\n \"rdisp\": 0}", "s.json:2:11: rdisp = 0; allowed: rdisp in (0, 10000]"},
+             Case{"{\"version\": 1,\n \"theta\": 270}",
+                  "s.json:2:11: theta = 270; allowed: theta in [0, 180]"},
+             Case{"{\"version\": 1,\n \"i\": -1}", "s.json:2:7: i = -1; allowed: i in [0, 10]"},
+             Case{"{\"version\": 1,\n \"speed\": 100}",
+                  "s.json:2:11: speed = 100; allowed: speed in [0.05, 10]"},
+             Case{"{\"version\": 1,\n \"amplitude_um\": 0}",
+                  "s.json:2:18: amplitude_um = 0; allowed: amplitude_um in (0, 1e+06]"},
+             Case{"{\"version\": 1,\n \"zeta\": \"0.3\"}",
+                  "s.json:2:10: zeta: expected a number, got a string"},
+             Case{"{\"version\": 1,\n \"playing\": 1}",
+                  "s.json:2:13: playing: expected true or false, got a number"},
+             Case{"{\"version\": 1,\n \"model\": \"coulomb\"}",
+                  "s.json:2:11: model = \"coulomb\"; allowed: dahl, rigid"},
+             Case{"{\"version\": 1,\n \"model\": 1}", "s.json:2:11: model: expected a string, got a number"},
+             Case{"{\"version\": 1,\n \"panel\": \"plot\"}",
+                  "s.json:2:11: panel = \"plot\"; allowed: curves, map, loop, why"},
+             Case{"{\"version\": 1,\n \"zetta\": 1}",
+                  "s.json:2:2: unknown key \"zetta\"; allowed: version, model, zeta"},
+             Case{"{\"version\": 1,\n \"view\": {\"zoom\": 2, \"tilt\": 1}}",
+                  "s.json:2:22: unknown key \"tilt\" in \"view\"; allowed: zoom, pan, follow, trail_periods, "
+                  "presentation"},
+             Case{"{\"version\": 1,\n \"view\": {\"zoom\": 50}}",
+                  "s.json:2:19: zoom = 50; allowed: zoom in [0.05, 20]"},
+             Case{"{\"version\": 1,\n \"view\": {\"pan\": [1]}}",
+                  "s.json:2:18: pan: expected [x, y], got [1]"},
+             Case{"{\"version\": 1,\n \"view\": {\"pan\": [1, \"a\"]}}",
+                  "s.json:2:22: pan: expected a number, got a string"},
+             Case{"{\"version\": 1,\n \"view\": 3}", "s.json:2:10: view: expected an object"},
+             Case{"{\"version\": 1,\n \"zeta\": 1,\n \"zeta\": 2}",
+                  "s.json:3:2: key \"zeta\" is given twice; each key at most once"},
+             Case{"{\"zeta\": 1}", "s.json:1:1: no \"version\""},
+             Case{"{\"version\": 2}", "s.json:1:13: version 2 is not one this frictionviz reads; allowed: 1"},
+             Case{"{\"version\": \"1\"}", "s.json:1:13: version \"1\" is not one this frictionviz reads"},
+             Case{"[1, 2]", "s.json:1:1: a session is a JSON object"},
+             Case{"{\"version\": 1,\n \"data\": \"\"}", "s.json:2:10: data: an empty path"},
+             Case{"{\"version\": 1,\n \"data\": 5}", "s.json:2:10: data: expected a string, got a number"},
+             Case{"{\"version\": 1,\n \"pins\": {}}", "s.json:2:10: pins: expected an array of curves"},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"zeta\": [0.1],\n \"r_x\": [0.5, 0.6]}]}",
+                  "s.json:2:9: r_x: 2 values for 1 zeta values; allowed: one per zeta"},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\",\n \"zeta\": [0.1, 101], \"r_x\": [0.5, "
+                  "0.6]}]}",
+                  "s.json:2:16: zeta = 101; allowed: zeta in [0, 100]"},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"zeta\": [0.1], \"r_x\": [\"x\"]}]}",
+                  "s.json:1:63: r_x: expected a number or null (a gap), got a string"},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"zeta\": []}]}",
+                  "s.json:1:25: pin without \"r_x\""},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"zeta\": [], \"r_x\": []}]}",
+                  "s.json:1:48: zeta: expected an array of 1 to 100000 numbers, got 0 items"},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"colour\": 1, \"zeta\": [1], \"r_x\": "
+                  "[1]}]}",
+                  "s.json:1:40: unknown key \"colour\" in \"pins/0\""},
+             Case{"{\"version\": 1, \"pins\": [1, 2, 3, 4, 5, 6, 7]}",
+                  "s.json:1:24: pins: 7 curves; allowed: at most 6"},
+         }) {
+        INFO(c.text);
+        const std::string why = refusal(c.text);
+        INFO(why);
+        CHECK(why.rfind(c.message, 0) == 0);
+        CHECK(why.find('\n') == std::string::npos);
+    }
+}
+
+TEST_CASE("session file: read by the input policy, its data file loaded or refused where it is named",
+          "[gui][session]") {
+    const std::string good = write("good.json", session_json(unusual()));
+    const LoadedSession l = load_session(good);
+    check_same(l.session, unusual());
+    REQUIRE(l.data);
+    CHECK(l.data->points.size() > 5);
+
+    const std::string missing = write("missing.json", "{\"version\": 1,\n  \"data\": \"nope.csv\"}");
+    try {
+        load_session(missing);
+        FAIL("a missing data file was accepted");
+    } catch (const SessionError& e) {
+        CHECK(std::string(e.what()) == missing + ":2:11: data: " + scratch() + "/nope.csv: does not exist");
+    }
+    const std::string bad_data = write("bad.csv", "zeta,r_x\n0.1,abc\n");
+    const std::string with_bad = write("with-bad.json", "{\"version\": 1, \"data\": \"bad.csv\"}");
+    try {
+        load_session(with_bad);
+        FAIL("a malformed data file was accepted");
+    } catch (const SessionError& e) {
+        INFO(e.what());
+        CHECK(std::string(e.what()).rfind(with_bad + ":1:24: data: " + bad_data + ":2:5: ", 0) == 0);
+    }
+    try {
+        load_session(scratch());
+        FAIL("a directory was read");
+    } catch (const SessionError& e) {
+        CHECK(std::string(e.what()).find("directory") != std::string::npos);
+    }
+    const std::string big = write("big.json", "{\"version\": 1}" + std::string(2u << 20, ' '));
+    CHECK_THROWS_WITH(load_session(big), Catch::Contains("larger than 1 MiB"));
+}
+
+TEST_CASE("session file: written atomically, nothing left behind when the target cannot be written",
+          "[gui][session]") {
+    const std::string path = scratch() + "/written.json";
+    CHECK(write_session(path, unusual()).empty());
+    CHECK(read(path) == session_json(unusual()));
+    CHECK_FALSE(write_session(scratch() + "/no/such/dir/s.json", unusual()).empty());
+    CHECK(::access((scratch() + "/no").c_str(), F_OK) != 0);
+    CHECK_FALSE(write_session(scratch(), unusual()).empty()); // a directory
+}
+
+TEST_CASE("AppState: opening a session replaces the whole state and restarts the simulation; a bad one "
+          "changes nothing",
+          "[gui][session]") {
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    a.sync({});
+    for (int k = 0; k < 30; ++k) a.advance(1.0 / 60);
+    REQUIRE(a.sim().tau() > 0);
+
+    const std::string path = write("open.json", session_json(unusual()));
+    UiEdits open;
+    open.open_session = path;
+    a.sync(open);
+    check_same(session_of(a.ui()), unusual());
+    CHECK(a.sim().tau() == 0);
+    CHECK(a.sim().model() == Model::rigid);
+    CHECK(a.sim().params().zeta == unusual().params.zeta);
+    CHECK(a.ui().status.rfind("opened session " + path + "; loaded synthetic_theta90_rdisp3_i0.csv", 0) == 0);
+    CHECK(std::abs(a.ui().vv_m_s - 2 * kPi * 45e3 * 1.3e-6) < 1e-15); // units converted for the panel
+
+    // A bad session: the status line says where and why, the state is what it was.
+    UiEdits play;
+    play.playing = true;
+    a.sync(play);
+    for (int k = 0; k < 10; ++k) a.advance(1.0 / 60);
+    const double tau = a.sim().tau();
+    REQUIRE(tau > 0);
+    const Session before = session_of(a.ui());
+    for (const std::string& bad : {write("bad1.json", "{\"version\": 1,\n \"zeta\": 500}"),
+                                   write("bad2.json", "{\"version\": 1, \"data\": \"nope.csv\"}"),
+                                   scratch() + "/does-not-exist.json"}) {
+        UiEdits e;
+        e.open_session = bad;
+        a.sync(e);
+        INFO(a.ui().status);
+        CHECK(a.ui().status.rfind(bad + ":", 0) == 0);
+        CHECK(a.ui().status.find("session not opened; nothing changed") != std::string::npos);
+        check_same(session_of(a.ui()), before);
+        CHECK(a.sim().tau() == tau);
+    }
+    CHECK(a.ui().status.find(":2:9: zeta = 500") == std::string::npos); // the last one: the missing file
+}
+
+TEST_CASE("AppState: a session opened with other edits in the same frame lands first, the edits on top",
+          "[gui][session]") {
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    UiEdits e;
+    e.open_session = write("first.json", "{\"version\": 1, \"zeta\": 0.5, \"theta\": 30}");
+    e.params = Params{0.9, kPi / 2, 2, 1};
+    a.sync(e);
+    CHECK(a.ui().params.zeta == 0.9);
+    CHECK(a.ui().params.theta == kPi / 2);
+}
+
+TEST_CASE("script: save-session and open-session take paths next to the script; an unwritable save is "
+          "refused before the run",
+          "[gui][session][script]") {
+    const std::string script = write("s.txt", "3 save-session out.json\n4 open-session in.json\n");
+    const Script s = load_script(script);
+    UiState ui;
+    CHECK(script_edits(s, 3, ui).save_session == scratch() + "/out.json");
+    CHECK(script_edits(s, 4, ui).open_session == scratch() + "/in.json");
+    CHECK_FALSE(script_edits(s, 3, ui).open_session);
+
+    const std::string bad = write("bad.txt", "# a comment\n2 save-session no/such/dir/s.json\n");
+    CHECK_THROWS_WITH(load_script(bad),
+                      Catch::StartsWith(bad + ":2: save-session " + scratch() + "/no/such/dir/s.json: "));
+    const std::string novalue = write("novalue.txt", "2 open-session\n");
+    CHECK_THROWS_WITH(load_script(novalue), Catch::StartsWith(novalue + ":1: 'open-session' needs a value"));
+}
+
+TEST_CASE("README: the session example is what the app saves in its default state",
+          "[gui][session][readme]") {
+    const std::string readme = read(std::string(FV_TEST_DATA_DIR) + "/../../README.md");
+    const auto section = readme.find("**Session files**");
+    REQUIRE(section != std::string::npos);
+    const auto from = readme.find("```json\n", section);
+    REQUIRE(from != std::string::npos);
+    const auto to = readme.find("```\n", from + 8);
+    CHECK(readme.substr(from + 8, to - from - 8) == session_json(session_of(UiState{})));
+}
