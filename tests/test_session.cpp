@@ -11,6 +11,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <random>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -382,4 +383,41 @@ TEST_CASE("README: the session example is what the app saves in its default stat
     REQUIRE(from != std::string::npos);
     const auto to = readme.find("```\n", from + 8);
     CHECK(readme.substr(from + 8, to - from - 8) == session_json(session_of(UiState{})));
+}
+
+TEST_CASE("session JSON: damaged files are refused with one line, never anything else", "[gui][session]") {
+    // Bytes changed, dropped and repeated at random in a valid file: parse_session returns a session or
+    // throws SessionError "s.json:LINE:COL: ..." (the position scan runs only on text nlohmann accepted).
+    const std::string good = session_json(unusual());
+    std::mt19937 rng(2006);
+    const std::string alphabet = "{}[]\",:0123456789.eE+-truefalsnul \n\\/\"xyz";
+    int refused = 0;
+    for (int k = 0; k < 20000; ++k) {
+        std::string t = good;
+        const int edits = 1 + static_cast<int>(rng() % 4);
+        for (int e = 0; e < edits && !t.empty(); ++e) {
+            const std::size_t at = rng() % t.size();
+            switch (rng() % 3) {
+            case 0:
+                t[at] = alphabet[rng() % alphabet.size()];
+                break;
+            case 1:
+                t.erase(at, 1 + rng() % 8);
+                break;
+            default:
+                t.insert(at, t.substr(rng() % t.size(), 1 + rng() % 12));
+                break;
+            }
+        }
+        try {
+            parse_session(t, "s.json");
+        } catch (const SessionError& e) {
+            const std::string w = e.what();
+            INFO(t << "\n-> " << w);
+            REQUIRE(w.rfind("s.json:", 0) == 0);
+            REQUIRE(w.find('\n') == std::string::npos);
+            ++refused;
+        }
+    }
+    CHECK(refused > 15000); // most damage is caught
 }

@@ -92,6 +92,8 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
              Case{"?zeta=%2", "column 7: '%' must start an escape %XX (two hex digits)"},
              Case{"?zeta=1%zz", "column 8: '%' must start an escape %XX (two hex digits)"},
              Case{"", "column 1: no parameters; expected KEY=VALUE pairs joined by '&'"},
+             Case{"?ze%0Ata=1", "column 2: unknown key 'ze\\nta'; allowed:"},
+             Case{"?model=da%0D%0Ahl", "column 8: model = 'da\\r\\nhl'; allowed: dahl, rigid"},
              Case{"https://example.org/?#zeta=1", "column 22: no parameters"},
          }) {
         INFO(c.text);
@@ -153,5 +155,29 @@ TEST_CASE("shortest_decimal: the shortest text strtod reads back exactly, no '+'
         REQUIRE(std::strtod(s.c_str(), nullptr) == (v == 0 ? 0.0 : v));
         REQUIRE(s.find('+') == std::string::npos);
         REQUIRE(s.size() <= 24);
+    }
+}
+
+TEST_CASE("share link: damaged links are refused with one line, never anything else", "[link]") {
+    const std::string good = "https://example.org/app?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl#x";
+    const std::string alphabet = "?&=#%0aA9.eE+-zetahrdispmolgic\n\r ";
+    std::mt19937 rng(2006);
+    for (int k = 0; k < 50000; ++k) {
+        std::string t = good;
+        for (int e = 0, n = 1 + static_cast<int>(rng() % 4); e < n && !t.empty(); ++e) {
+            const std::size_t at = rng() % t.size();
+            if (rng() % 2)
+                t[at] = alphabet[rng() % alphabet.size()];
+            else
+                t.erase(at, 1 + rng() % 6);
+        }
+        try {
+            parse_share_link(t);
+        } catch (const LinkError& e) {
+            const std::string w = e.what();
+            INFO(t << " -> " << w);
+            REQUIRE(w.rfind("column ", 0) == 0);
+            REQUIRE(w.find_first_of("\r\n") == std::string::npos);
+        }
     }
 }

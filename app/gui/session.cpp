@@ -45,6 +45,10 @@ class Positions {
     void blank() {
         while (k_ < s_.size() && (s_[k_] == ' ' || s_[k_] == '\t' || s_[k_] == '\n' || s_[k_] == '\r')) ++k_;
     }
+    // A key as nlohmann gives it: escapes (\n, \u00e9) decoded.
+    static std::string decoded(const std::string& raw) {
+        return Json::parse("\"" + raw + "\"").get<std::string>();
+    }
     std::string string() { // at the opening quote; escapes kept as written
         const std::size_t from = ++k_;
         while (k_ < s_.size() && s_[k_] != '"') k_ += s_[k_] == '\\' ? 2 : 1;
@@ -78,7 +82,7 @@ class Positions {
                 std::string child = ptr + "/" + std::to_string(index);
                 if (open == '{') {
                     const std::size_t at = k_;
-                    child = ptr + "/" + string();
+                    child = ptr + "/" + decoded(string());
                     // A repeated key: keep the first one found, pointing at its second occurrence.
                     if (!keys_.emplace(child, at).second && duplicate_.empty())
                         duplicate_ = child, keys_[child] = at;
@@ -101,6 +105,13 @@ class Positions {
     std::map<std::string, std::size_t> values_, keys_;
     std::string duplicate_;
 };
+
+// A message on one line whatever the file holds (keys, values and paths may contain line breaks).
+[[noreturn]] void fail_with(std::string what) {
+    for (std::size_t k = 0; (k = what.find_first_of("\r\n", k)) != std::string::npos; k += 2)
+        what.replace(k, 1, what[k] == '\n' ? "\\n" : "\\r");
+    throw SessionError(what);
+}
 
 // "FILE:LINE:COL" of a byte offset (line and column from 1, the column in bytes).
 std::string where(const std::string& file, const std::string& text, std::size_t offset) {
@@ -128,7 +139,7 @@ class Reader {
         : file_(file), text_(text), pos_(pos) {}
 
     [[noreturn]] void fail_at(const std::string& ptr, const std::string& what, bool key = false) const {
-        throw SessionError(where(file_, text_, key ? pos_.key_at(ptr) : pos_.value_at(ptr)) + ": " + what);
+        fail_with(where(file_, text_, key ? pos_.key_at(ptr) : pos_.value_at(ptr)) + ": " + what);
     }
 
     // Every key of `obj` (at `ptr`) must be one of `allowed`.
@@ -330,16 +341,15 @@ Session parse_session(const std::string& text, const std::string& file) {
     try {
         j = Json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        throw SessionError(where(file, text, e.byte > 0 ? e.byte - 1 : 0) +
-                           ": not valid JSON: " + parse_detail(e));
+        fail_with(where(file, text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON: " + parse_detail(e));
     } catch (const nlohmann::json::exception& e) {
         // A number beyond the doubles ("number overflow parsing '1e400'"): no byte position, so look for it.
         std::string w = e.what();
         const auto q = w.find('\'');
         const std::string token = q == std::string::npos ? "" : w.substr(q + 1, w.find('\'', q + 1) - q - 1);
         const std::size_t at = token.empty() ? 0 : text.find(token);
-        throw SessionError(where(file, text, at == std::string::npos ? 0 : at) + ": " +
-                           w.substr(w.find(']') + 2) + " (beyond double precision)");
+        fail_with(where(file, text, at == std::string::npos ? 0 : at) + ": " + w.substr(w.find(']') + 2) +
+                  " (beyond double precision)");
     }
     const Positions pos(text);
     const Reader r(file, text, pos);
@@ -424,9 +434,9 @@ LoadedSession load_session(const std::string& path) {
     InputLimits limits;
     limits.max_bytes = kMaxSessionBytes;
     if (const std::string why = read_input_file(path, text, limits); !why.empty())
-        throw SessionError(path + ": " + why);
+        fail_with(path + ": " + why);
     if (text.size() > kMaxSessionBytes)
-        throw SessionError(path + ": larger than 1 MiB; a session file is a few hundred bytes");
+        fail_with(path + ": larger than 1 MiB; a session file is a few hundred bytes");
     LoadedSession out{parse_session(text, path), std::nullopt};
     const Session& s = out.session;
     if (!s.data_file.empty()) {
@@ -437,9 +447,9 @@ LoadedSession load_session(const std::string& path) {
         try {
             out.data = read_measurements(s.data_file, ro);
         } catch (const DataError& e) {
-            throw SessionError(at + e.what());
+            fail_with(at + e.what());
         }
-        if (out.data->points.empty()) throw SessionError(at + s.data_file + " has no data rows");
+        if (out.data->points.empty()) fail_with(at + s.data_file + " has no data rows");
     }
     return out;
 }

@@ -15,7 +15,10 @@
 namespace fv {
 namespace {
 
-[[noreturn]] void fail(std::size_t offset, const std::string& what) {
+// One line whatever the link holds (%0A decodes to a line break).
+[[noreturn]] void fail(std::size_t offset, std::string what) {
+    for (std::size_t k = 0; (k = what.find_first_of("\r\n", k)) != std::string::npos; k += 2)
+        what.replace(k, 1, what[k] == '\n' ? "\\n" : "\\r");
     throw LinkError("column " + std::to_string(offset + 1) + ": " + what);
 }
 
