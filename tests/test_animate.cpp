@@ -156,3 +156,28 @@ TEST_CASE("animate: bad input exits 2 with one line naming what is allowed, noth
     CHECK(r.code == 2);
     CHECK(r.err.find("--out") != std::string::npos);
 }
+
+TEST_CASE("app: File > Export animation (the script's animate) writes the loop in the background",
+          "[animate][gui]") {
+    const std::string gif = root() + "/app.gif", bad = root() + "/app.avi", script = root() + "/export.txt";
+    // Speed 2 periods/s: 2 periods at 30 fps are 30 frames. A bad extension leaves a status line, no file.
+    std::ofstream(script) << "1 zeta 0.3\n2 speed 2\n3 animate " << gif << "\n4 animate " << bad << "\n";
+    auto check = [&](const std::string& prefix, const std::string& platform) {
+        ::unlink(gif.c_str());
+        const Run r = fv::test::run_command(
+            prefix + " " + FV_EXE + " gui --platform " + platform + " --frames 8 --script " + script, root());
+        INFO(platform << ": " << r.err);
+        REQUIRE(r.code == 0);
+        const fv::test::DecodedGif g = fv::test::decode_gif(gif);
+        REQUIRE(g.error.empty());
+        CHECK(g.image_count == 30);
+        CHECK(g.width == 960);
+        CHECK(g.height == 600);
+        CHECK(g.loops);
+        check_loop(g.frames, 15, 0.02);
+        CHECK(::access(bad.c_str(), F_OK) != 0);
+    };
+    check("", "headless");
+    // The window's GL context on the main thread, the export's OSMesa context on its worker thread.
+    if (std::system("command -v xvfb-run >/dev/null 2>&1") == 0) check("xvfb-run -a", "window");
+}

@@ -12,7 +12,6 @@
 #include "fv/steady_state.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <sstream>
 
@@ -57,16 +56,7 @@ std::string caption_of(const Spec& s, double rx) {
 } // namespace
 
 std::optional<Format> format_for_path(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    const auto slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash) || dot + 1 == path.size() ||
-        dot == 0 || (slash != std::string::npos && dot == slash + 1))
-        return std::nullopt;
-    std::string ext = path.substr(dot + 1);
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext == "gif") return Format::gif;
-    if (ext == "mp4") return Format::mp4;
-    return std::nullopt;
+    return app::animation_format(path);
 }
 
 const char* allowed_extensions() {
@@ -233,6 +223,29 @@ std::string export_animation(const Spec& spec, const std::string& path, const Pr
         return e.what();
     }
     return write_file_atomic(path, bytes);
+}
+
+app::AnimationExporter app_exporter() {
+    return [](const app::AnimationRequest& r, const std::function<void(int, int)>& progress,
+              const std::atomic<bool>& cancel) -> std::string {
+        const std::optional<Format> format = format_for_path(r.path);
+        if (!format) return "'" + r.path + "': allowed: " + allowed_extensions();
+        Spec s;
+        s.format = *format;
+        s.model = r.model;
+        s.params = r.params;
+        s.periods = r.periods;
+        s.fps = r.fps;
+        s.speed = r.speed;
+        s.width = r.width;
+        s.height = r.height;
+        s.view = r.scene ? View::scene : View::dashboard;
+        s.vv_m_s = r.vv_m_s;
+        even_size(s);
+        if (std::string why = check_spec(s); !why.empty()) return why;
+        if (std::string why = check_writable(r.path); !why.empty()) return why;
+        return export_animation(s, r.path, {progress, &cancel});
+    };
 }
 
 } // namespace fv::anim

@@ -4,6 +4,7 @@
 // it on a worker thread with its own headless context: GL contexts are per thread).
 #pragma once
 
+#include "gui/animation_export.hpp"
 #include "gui/ratio_worker.hpp"
 
 #include "fv/gfx/canvas.hpp"
@@ -18,7 +19,7 @@
 
 namespace fv::anim {
 
-enum class Format { gif, mp4 };
+using Format = app::AnimationFormat;
 // scene: the top view alone over the whole frame. dashboard: the app's picture without its control panel
 // (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x.
 enum class View { scene, dashboard };
@@ -89,5 +90,9 @@ struct Progress {
 // and its format match the path. Returns "" or a one-line error (nothing written then). Throws
 // std::runtime_error when no headless GL context can be made.
 std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress = {});
+
+// The app's File > Export animation…: a request (format by extension, view, periods, speed, the parameters)
+// checked like the command line's flags and exported as above.
+app::AnimationExporter app_exporter();
 
 } // namespace fv::anim

@@ -7,6 +7,7 @@
 #include "output.hpp"
 #include "render_output.hpp"
 
+#include "anim/animation.hpp"
 #include "gui/gui_app.hpp"
 #include "gui/platform.hpp"
 
@@ -185,6 +186,7 @@ Command add_gui_command(CLI::App& root) {
             } else {
                 start_from_flags(*a, *cmd, o);
             }
+            o.animation_exporter = anim::app_exporter();
             try {
                 const int rc = app::run_gui(o);
                 if (rc != 0) throw RuntimeFailure("the window closed with an error");

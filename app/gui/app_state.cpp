@@ -156,7 +156,14 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (e.jump_steady) jump_to_steady();
     step_pending_ = e.step;
     refresh_units();
-    return {e.screenshot, e.export_csv, e.quit, e.save_session.value_or("")};
+    Actions act{e.screenshot,         e.export_csv,      e.quit, e.save_session.value_or(""),
+                e.open_export_dialog, e.export_animation};
+    if (act.export_animation) {
+        act.export_animation->model = ui_.model;
+        act.export_animation->params = ui_.params;
+        act.export_animation->vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
+    }
+    return act;
 }
 
 double AppState::frame_tau() const {

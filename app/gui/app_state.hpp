@@ -37,6 +37,8 @@ class AppState {
     struct Actions {
         bool screenshot = false, export_csv = false, quit = false;
         std::string save_session; // a path, or empty
+        bool open_export_dialog = false;
+        std::optional<AnimationRequest> export_animation; // with the model and parameters in effect
     };
     // Applies one frame's edits, in a fixed order: session, preset, model, parameters, v_b/z_ss, A/f, data,
     // fit, playback, view. An edit outside the ranges changes nothing and says why in ui().status; so does a

@@ -44,6 +44,8 @@ void UiEdits::merge(const UiEdits& o) {
     reset |= o.reset;
     screenshot |= o.screenshot;
     export_csv |= o.export_csv;
+    open_export_dialog |= o.open_export_dialog;
+    if (o.export_animation) export_animation = o.export_animation;
     quit |= o.quit;
 }
 

@@ -121,6 +121,7 @@ UiEdits draw_menu(const UiState& ui, FileDialogs& dialog) {
         ImGui::Separator();
         if (ImGui::MenuItem("Export trace CSV")) e.export_csv = true;
         if (ImGui::MenuItem("Screenshot", "S")) e.screenshot = true;
+        if (ImGui::MenuItem("Export animation…")) e.open_export_dialog = true;
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Esc")) e.quit = true;
         ImGui::EndMenu();

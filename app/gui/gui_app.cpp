@@ -117,6 +117,8 @@ int run_gui(const GuiOptions& o) {
     const Script script = o.script.empty() ? Script{} : load_script(o.script);
     AppState app(o.start, o.data, o.session_file);
     FileDialogs dialog;
+    ExportDialog export_dialog;
+    AnimationExportJob animation(o.animation_exporter);
     UiEdits queued;
     DashboardTransforms transforms{};
     FrameStats stats;
@@ -137,6 +139,12 @@ int run_gui(const GuiOptions& o) {
         const AppState::Actions act = app.sync(queued, scripted);
         if (act.quit) break;
         queued = UiEdits{};
+        if (act.open_export_dialog) export_dialog.open_requested = true;
+        if (act.export_animation) {
+            app.ui().status = animation.start(*act.export_animation);
+            if (scripted) animation.wait(); // the file is there before the next frame
+        }
+        if (auto status = animation.poll()) app.ui().status = *status;
 
         // 2. Simulation time: fixed steps, their number from the elapsed wall time (a fixed 1/60 s per frame
         //    when not real time, so that scripted runs are reproducible).
@@ -158,6 +166,7 @@ int run_gui(const GuiOptions& o) {
         const auto curves = app.worker().latest();
         const bool busy = app.worker().busy();
         queued.merge(draw_controls(ui, app.sim(), curves, busy, panel_w, logical.y, dialog));
+        queued.export_animation = draw_export_dialog(export_dialog, ui.speed, animation.running());
         queued.merge(keyboard_edits(ui));
         handle_dashboard_mouse(app.ui().view, app.sim(), transforms);
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))

@@ -2,6 +2,7 @@
 // screenshots, benchmarks).
 #pragma once
 
+#include "animation_export.hpp"
 #include "session.hpp"
 
 #include "fv/measurements.hpp"
@@ -26,6 +27,9 @@ struct GuiOptions {
     std::string screenshot;   // write the last frame here (PNG)
     int bench_frames = 0;     // > 0: change the sliders every frame and print frame-time percentiles
     std::optional<MeasurementSet> data; // measured r_x(zeta) to show from the start, read with start's A, f
+    // File > Export animation… and the script's `animate`: what writes the file (the command line passes
+    // app/anim's exporter); empty: the menu item says it is not available.
+    AnimationExporter animation_exporter;
 };
 
 // Returns the process exit code. Throws std::invalid_argument for an unknown platform and

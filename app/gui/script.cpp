@@ -19,7 +19,7 @@ bool numeric(const std::string& a) {
            a == "amplitude" || a == "frequency" || a == "vb" || a == "zss" || a == "rewind";
 }
 bool is_path(const std::string& a) {
-    return a == "load" || a == "save-session" || a == "open-session";
+    return a == "load" || a == "save-session" || a == "open-session" || a == "animate";
 }
 bool needs_value(const std::string& a) {
     return numeric(a) || is_path(a) || a == "model" || a == "preset";
@@ -27,7 +27,7 @@ bool needs_value(const std::string& a) {
 constexpr const char* kActions =
     "zeta theta rdisp i model play pause step reset speed trail preset map curves "
     "amplitude frequency vb zss load clear fit back rewind steady help loop why pin unpin present "
-    "save-session open-session";
+    "save-session open-session animate export";
 // One list of the actions: the message's.
 bool known(const std::string& a) {
     return !a.empty() && (" " + std::string(kActions) + " ").find(" " + a + " ") != std::string::npos;
@@ -160,7 +160,14 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
             params_changed = true;
         } else if (a == "load")
             e.load_data = v;
-        else if (a == "clear")
+        else if (a == "export") // File > Export animation…: the dialog (for screenshots of it)
+            e.open_export_dialog = true;
+        else if (a == "animate") { // a GIF or MP4 of the current parameters, the export dialog's defaults
+            AnimationRequest r;
+            r.path = v;
+            r.speed = ui.speed;
+            e.export_animation = r;
+        } else if (a == "clear")
             e.clear_data = true;
         else if (a == "fit")
             e.fit_data = true;

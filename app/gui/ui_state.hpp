@@ -2,6 +2,7 @@
 // loop applies them all at one point at the start of the next frame (MuJoCo `simulate` style).
 #pragma once
 
+#include "animation_export.hpp"
 #include "dashboard.hpp"
 
 #include "fv/measurements.hpp"
@@ -59,6 +60,9 @@ struct UiEdits {
     // Time: scrub to this far behind the live simulation (pauses), one frame back, onto the steady state.
     std::optional<double> rewind;
     bool step_back = false, jump_steady = false;
+    // File > Export animation…: open its dialog; the dialog's request (AppState::sync adds the parameters).
+    bool open_export_dialog = false;
+    std::optional<AnimationRequest> export_animation;
     bool pin = false, clear_pins = false; // pin the current r_x(zeta) curve; remove all pins
     std::optional<std::string> preset;
 

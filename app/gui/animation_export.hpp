@@ -1,0 +1,79 @@
+// File > Export animation… (issue #14 item 7): a GIF or MP4 loop of the current parameters, made in the
+// background. The app only knows the request and a function that fulfils it (GuiOptions::animation_exporter,
+// given by the command line: the encoders live in app/anim/, outside the app library); the job runs it on a
+// worker thread, which makes its own headless GL context (GL contexts are current on one thread), at low CPU
+// priority so that the window keeps its frame rate; progress and the result go to the status line.
+#pragma once
+
+#include "fv/params.hpp"
+
+#include <atomic>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace fv::app {
+
+enum class AnimationFormat { gif, mp4 };
+// The format a file name asks for by its extension (.gif, .mp4, any case), if any.
+std::optional<AnimationFormat> animation_format(const std::string& path);
+
+struct AnimationRequest {
+    std::string path;   // FILE.gif or FILE.mp4: the format by the extension
+    bool scene = false; // the top view alone, else the dashboard without the panel
+    int periods = 2;
+    double fps = 30, speed = 0.5; // frames per second; vibration periods per second of the animation
+    int width = 960, height = 600;
+    Model model = Model::dahl; // filled in by AppState::sync: the parameters in effect
+    Params params;
+    double vv_m_s = 0;
+};
+
+// Renders and writes the animation on the calling thread; progress(done, total) after each frame; stops when
+// cancel is set. Returns "" or a one-line error.
+using AnimationExporter = std::function<std::string(
+    const AnimationRequest&, const std::function<void(int, int)>& progress, const std::atomic<bool>& cancel)>;
+
+class AnimationExportJob {
+  public:
+    explicit AnimationExportJob(AnimationExporter exporter);
+    ~AnimationExportJob(); // cancels a running export (nothing is written) and waits for it
+    AnimationExportJob(const AnimationExportJob&) = delete;
+    AnimationExportJob& operator=(const AnimationExportJob&) = delete;
+
+    bool available() const { return static_cast<bool>(exporter_); }
+    bool running() const { return running_; }
+    // Starts an export; returns the status line to show ("exporting …", or why not).
+    std::string start(const AnimationRequest& r);
+    // The status line when it changed since the last call (progress, then the result).
+    std::optional<std::string> poll();
+    // Blocks until the export is done (scripted runs want the file before the next frame).
+    void wait();
+
+  private:
+    AnimationExporter exporter_;
+    std::thread thread_;
+    std::atomic<bool> running_{false}, cancel_{false};
+    std::atomic<int> done_{0}, total_{0};
+    std::mutex mutex_;
+    std::string path_, result_;
+    bool finished_ = false;
+    int shown_ = -1;
+};
+
+// The export dialog's state between frames.
+struct ExportDialog {
+    bool open_requested = false;
+    std::string path = "frictionviz-animation.gif";
+    int view = 0; // 0 dashboard, 1 scene
+    int periods = 2;
+    std::string error; // why the path was not accepted
+};
+
+// The modal dialog (file name, GIF or MP4, view, periods); call once per frame at window level. Returns the
+// request when the user exports (the parameters are filled in by AppState::sync).
+std::optional<AnimationRequest> draw_export_dialog(ExportDialog& d, double speed, bool busy);
+
+} // namespace fv::app
