@@ -132,7 +132,8 @@ std::vector<Rgb> build_palette(const std::vector<const gfx::Image*>& samples) {
         return Rgb{static_cast<std::uint8_t>(rgb >> 16), static_cast<std::uint8_t>(rgb >> 8),
                    static_cast<std::uint8_t>(rgb)};
     };
-    if (colors.size() <= 256) {
+    // 255 colours: the last index of the table is the transparent one (pixels that did not change).
+    if (colors.size() <= 255) {
         for (const Weighted& c : colors) palette.push_back(unpack(c.rgb));
         return palette;
     }
@@ -142,7 +143,7 @@ std::vector<Rgb> build_palette(const std::vector<const gfx::Image*>& samples) {
     while (exact < kMaxExact && exact < colors.size() && colors[exact].count * 2000 >= total) ++exact;
     for (std::size_t k = 0; k < exact; ++k) palette.push_back(unpack(colors[k].rgb));
     std::vector<Weighted> rest(colors.begin() + static_cast<std::ptrdiff_t>(exact), colors.end());
-    for (const Rgb& c : median_cut(std::move(rest), 256 - exact)) palette.push_back(c);
+    for (const Rgb& c : median_cut(std::move(rest), 255 - exact)) palette.push_back(c);
     return palette;
 }
 
@@ -161,7 +162,8 @@ GifEncoder::GifEncoder(int width, int height, std::vector<Rgb> palette)
     EGifSetGifVersion(gif, true); // GIF89a: graphics control and application extensions
     // The colour table has a power-of-two size: unused entries repeat the last colour.
     int bits = 1;
-    while ((1 << bits) < static_cast<int>(palette_.size())) ++bits;
+    while ((1 << bits) < static_cast<int>(palette_.size()) + 1) ++bits; // + the transparent index
+    transparent_ = (1 << bits) - 1;
     std::vector<GifColorType> table(std::size_t{1} << bits);
     for (std::size_t k = 0; k < table.size(); ++k) {
         const Rgb& c = palette_[std::min(k, palette_.size() - 1)];
@@ -221,18 +223,24 @@ void GifEncoder::add(const gfx::Image& frame, int delay_cs) {
     GraphicsControlBlock gcb{};
     gcb.DisposalMode = DISPOSE_DO_NOT;
     gcb.DelayTime = delay_cs;
-    gcb.TransparentColor = NO_TRANSPARENT_COLOR;
+    // Inside the rectangle, what did not change is transparent: long runs of one index compress well.
+    gcb.TransparentColor = frames_ > 0 ? transparent_ : NO_TRANSPARENT_COLOR;
     GifByteType ext[4];
     const std::size_t len = EGifGCBToExtension(&gcb, ext);
     check(EGifPutExtension(gif, GRAPHICS_EXT_FUNC_CODE, static_cast<int>(len), ext), gif, "frame delay");
     const int rw = x1 - x0 + 1, rh = y1 - y0 + 1;
     check(EGifPutImageDesc(gif, x0, y0, rw, rh, false, nullptr), gif, "image descriptor");
-    for (int y = y0; y <= y1; ++y)
-        check(EGifPutLine(gif,
-                          &current_[static_cast<std::size_t>(y) * static_cast<std::size_t>(w_) +
-                                    static_cast<std::size_t>(x0)],
-                          rw),
-              gif, "pixels");
+    line_.resize(static_cast<std::size_t>(rw));
+    for (int y = y0; y <= y1; ++y) {
+        const std::size_t row = static_cast<std::size_t>(y) * static_cast<std::size_t>(w_);
+        for (int x = x0; x <= x1; ++x) {
+            const std::size_t k = row + static_cast<std::size_t>(x);
+            line_[static_cast<std::size_t>(x - x0)] = frames_ > 0 && current_[k] == previous_[k]
+                                                          ? static_cast<std::uint8_t>(transparent_)
+                                                          : current_[k];
+        }
+        check(EGifPutLine(gif, line_.data(), rw), gif, "pixels");
+    }
     previous_.swap(current_);
     ++frames_;
 }

@@ -1,6 +1,7 @@
 // Animated GIF in memory through giflib: one global palette for every frame (the picture's flat colours
 // exactly, median cut for the rest: no dithering, so flat areas stay flat and do not flicker), each frame
-// after the first only the rectangle that changed, looping forever (NETSCAPE2.0).
+// after the first only the rectangle that changed, unchanged pixels in it transparent, looping forever
+// (NETSCAPE2.0).
 #pragma once
 
 #include "fv/gfx/image.hpp"
@@ -12,9 +13,10 @@
 
 namespace fv::anim {
 
-// At most 256 RGB colours for the frames `samples` (all of the size of the animation): every colour that
-// covers at least 0.05 % of the sampled pixels exactly (up to 96 of them: backgrounds, fills, lines), the
-// other pixels' colours median-cut into what is left, each box its pixels' mean.
+// At most 255 RGB colours (the 256th index is transparency) for the frames `samples` (all of the size of the
+// animation): every colour that covers at least 0.05 % of the sampled pixels exactly (up to 96 of them:
+// backgrounds, fills, lines), the other pixels' colours median-cut into what is left, each box its pixels'
+// mean.
 std::vector<std::array<std::uint8_t, 3>> build_palette(const std::vector<const gfx::Image*>& samples);
 
 class GifEncoder {
@@ -37,7 +39,8 @@ class GifEncoder {
     int w_, h_;
     std::vector<std::array<std::uint8_t, 3>> palette_;
     std::vector<std::uint16_t> lookup_; // 2^24 entries: palette index of an RGB colour, 0xFFFF unknown
-    std::vector<std::uint8_t> previous_, current_;
+    std::vector<std::uint8_t> previous_, current_, line_;
+    int transparent_ = 255; // the colour table's last index: unchanged pixels
     int frames_ = 0;
     void* gif_ = nullptr; // GifFileType
     std::string out_;
