@@ -77,8 +77,9 @@ struct LagModel {
     }
 };
 
-// Interior law (i > 0) for D = L - L_a, branch s fixed.
+// Interior law (i > 0) for D = L - L_a, branch s fixed. Problem interface of radau_step (radau_iia.hpp).
 struct InteriorProblem {
+    static constexpr int N = 2;
     using Vec = Eigen::Matrix<double, 2, 1>;
     using Mat = Eigen::Matrix<double, 2, 2>;
     const LagModel* m;
@@ -93,9 +94,17 @@ struct InteriorProblem {
           whole_i(model.i >= 2 && model.i <= 16 && model.i == std::floor(model.i) ? static_cast<int>(model.i)
                                                                                   : 0) {}
 
+    // The law at one state: the rate and what its Jacobian needs.
+    struct Point {
+        Vec f = Vec::Zero();
+        Vec2 l{0, 0}, dp{0, 0}, e{0, 0}; // force, P', l / |l|
+        double rho = 0, v = 0, q = 0, dk = 0;
+    };
+
     Vec2 force(const Vec& D) const { return l_a + m->r * D; }
-    // dF/dtau given the state's rate.
-    Vec2 force_rate(const Vec&, const Vec& dD) const { return m->r * dD; }
+    Vec2 force(const Point& pt) const { return pt.l; }
+    // dF/dtau along the law.
+    Vec2 force_rate(const Point& pt) const { return m->r * pt.f; }
 
     // k = 1 - b^i, q = k / rho (bounded as rho -> 0: s i), dk/drho = s i b^(i-1).
     void law(double rho, double& q, double& dk) const {
@@ -125,59 +134,64 @@ struct InteriorProblem {
         dk = s * i * std::exp((i - 1) * lb);
     }
 
-    Vec f(double tau, const Vec& D) const {
-        const Vec2 l = force(D);
-        const Vec2 dp = m->dP(tau);
-        const double rho = l.norm();
-        if (!(rho > 0)) return dp;
-        const Vec2 e = l / rho;
-        const double v = e.dot(dp);
-        double q, dk;
-        law(rho, q, dk);
-        return dp - (v * q * rho) * e; // T moves along e at v (1 - b^i)
+    Point eval(double tau, const Vec& D) const {
+        Point pt;
+        pt.l = force(D);
+        pt.dp = m->dP(tau);
+        pt.rho = pt.l.norm();
+        if (!(pt.rho > 0)) {
+            pt.f = pt.dp;
+            return pt;
+        }
+        pt.e = pt.l / pt.rho;
+        pt.v = pt.e.dot(pt.dp);
+        law(pt.rho, pt.q, pt.dk);
+        pt.f = pt.dp - (pt.v * pt.q * pt.rho) * pt.e; // T moves along e at v (1 - b^i)
+        return pt;
     }
 
-    Mat jac(double tau, const Vec& D) const {
-        const Vec2 l = force(D);
-        const Vec2 dp = m->dP(tau);
-        const double rho = l.norm();
-        if (!(rho > 0)) return Mat::Zero();
-        const Vec2 e = l / rho;
-        const double v = e.dot(dp);
-        double q, dk;
-        law(rho, q, dk);
+    Mat jac(const Point& pt) const {
+        if (!(pt.rho > 0)) return Mat::Zero();
+        const Vec2& e = pt.e;
+        const double v = pt.v, q = pt.q;
         const Mat ee = e * e.transpose();
         // d(v k e)/dl = q e (P' - v e)^T + v k' e e^T + v q (I - e e^T); dl/dD = r.
-        const Mat J = q * e * (dp - v * e).transpose() + v * dk * ee + v * q * (Mat::Identity() - ee);
+        const Mat J = q * e * (pt.dp - v * e).transpose() + v * pt.dk * ee + v * q * (Mat::Identity() - ee);
         return -m->r * J;
     }
 };
 
-// Circle law for the arc a (x_v units) from angle phi_a: phi = phi_a + r a, a' = e_perp . P'.
+// Circle law for the arc a (x_v units) from angle phi_a: phi = phi_a + r a, a' = e_perp . P'. Problem
+// interface of radau_step (radau_iia.hpp).
 struct CircleProblem {
+    static constexpr int N = 1;
     using Vec = Eigen::Matrix<double, 1, 1>;
     using Mat = Eigen::Matrix<double, 1, 1>;
     const LagModel* m;
     double phi_a;
+
+    // The law at one arc: the rate, the force (unit vector at the angle) and P'.
+    struct Point {
+        Vec f = Vec::Zero();
+        Vec2 e{1, 0}, dp{0, 0};
+    };
 
     double phi(double a) const { return phi_a + m->r * a; }
     Vec2 force(const Vec& a) const {
         const double ph = phi(a[0]);
         return {std::cos(ph), std::sin(ph)};
     }
-    Vec2 force_rate(const Vec& a, const Vec& da) const {
-        const double ph = phi(a[0]);
-        return m->r * da[0] * Vec2(-std::sin(ph), std::cos(ph));
+    Vec2 force(const Point& pt) const { return pt.e; }
+    Vec2 force_rate(const Point& pt) const { return m->r * pt.f[0] * Vec2(-pt.e.y(), pt.e.x()); }
+    Point eval(double tau, const Vec& a) const {
+        Point pt;
+        pt.e = force(a);
+        pt.dp = m->dP(tau);
+        pt.f = Vec(-pt.e.y() * pt.dp.x() + pt.e.x() * pt.dp.y());
+        return pt;
     }
-    Vec f(double tau, const Vec& a) const {
-        const double ph = phi(a[0]);
-        const Vec2 dp = m->dP(tau);
-        return Vec(-std::sin(ph) * dp.x() + std::cos(ph) * dp.y());
-    }
-    Mat jac(double tau, const Vec& a) const {
-        const double ph = phi(a[0]);
-        const Vec2 dp = m->dP(tau);
-        return Mat(-m->r * (std::cos(ph) * dp.x() + std::sin(ph) * dp.y())); // -r v
+    Mat jac(const Point& pt) const {
+        return Mat(-m->r * (pt.e.x() * pt.dp.x() + pt.e.y() * pt.dp.y())); // -r v
     }
 };
 

@@ -45,14 +45,15 @@ struct PhaseOutcome {
 // Integrates y' = f from tau to tau1 with Radau IIA steps until tau1 or the first event.
 // g(k, tau, y) evaluates event function k; on_step(step, s_end) is called for every accepted step (s_end = 1)
 // or the step retaken to an event, with the step's integral of F.
-template <int N, class Pb, class G, class OnStep>
-PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename RadauStep<N>::Vec& y, double& h,
+template <class Pb, class G, class OnStep>
+PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb::Vec& y, double& h,
                              const PeriodRequest& rq, const EventFn* evs, int n_ev, const G& g,
                              OnStep on_step, PeriodResult& out) {
-    using Vec = typename RadauStep<N>::Vec;
+    using Vec = typename Pb::Vec;
     constexpr double kMaxStep = 0.5;
     constexpr int kProbes = 4; // dense-output probes per step for sign changes of the event functions
-    RadauStep<N> prev;
+    RadauStep<Pb> prev;
+    typename Pb::Point start = pb.eval(tau, y); // the law at (tau, y)
     bool have_prev = false;
     bool after_reject = true;
     PhaseOutcome res;
@@ -65,15 +66,13 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
         }
         double hh = std::min({h, kMaxStep, tau1 - tau});
         if (tau1 - tau - hh < 1e-9) hh = tau1 - tau;
-        RadauStep<N> st =
-            radau_step<N>(pb, tau, y, hh, rq.atol, have_prev ? &prev : nullptr, rq.sensitivity, after_reject);
+        RadauStep<Pb> st = radau_step(pb, tau, y, start, hh, rq.atol, have_prev ? &prev : nullptr,
+                                      rq.sensitivity, after_reject);
         // The period means are a quadrature of F over the steps, controlled as well (see step_integral).
         Eigen::Vector2d integral(0, 0);
         double qerr = 0; // quadrature error relative to its tolerance; ~h^5
         if (st.solved && st.error <= 1) {
-            integral = step_integral<N>(
-                st, [&](const Vec& v) { return pb.force(v); },
-                [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr);
+            integral = step_integral(pb, st, qerr);
             qerr /= rq.atol_force * hh;
         }
         // Step factor from both estimates (the state's ~h^4, the quadrature's ~h^5).
@@ -104,7 +103,8 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             const double s = static_cast<double>(k) / kProbes;
             const Vec ys = k == kProbes ? st.y1() : st.at(s);
             for (int j = 0; j < n_ev; ++j)
-                if (evs[j].sign * g(j, tau + s * hh, ys) < -evs[j].noise) {
+                if (evs[j].sign * (k == kProbes ? g(j, tau + s * hh, st.pz[2]) : g(j, tau + s * hh, ys)) <
+                    -evs[j].noise) {
                     hit = j;
                     s_lo = static_cast<double>(k - 1) / kProbes;
                     s_hi = s;
@@ -117,7 +117,8 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
             double roots[4] = {s_hi, s_hi, s_hi, s_hi}; // located crossing of each function (n_ev <= 4)
             for (int j = 0; j < n_ev; ++j) {
                 auto gj = [&](double s) {
-                    return evs[j].sign * g(j, tau + s * hh, s == 1 ? st.y1() : st.at(s));
+                    return evs[j].sign *
+                           (s == 1 ? g(j, tau + s * hh, st.pz[2]) : g(j, tau + s * hh, st.at(s)));
                 };
                 if (!(gj(s_hi) < -evs[j].noise)) continue;
                 double a = s_lo, b = s_hi;
@@ -167,20 +168,20 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 const double g0 = evs[hit].sign * g(hit, tau + (best - d) * hh, st.at(best - d));
                 return d > 0 ? (g1 - g0) / (d * hh) : 0.0;
             }();
-            RadauStep<N> se;
+            RadauStep<Pb> se;
             bool have_se = false;
             double short_by = 0;
             for (int it = 0; it < 6 && he > 1e-13 * (1 + std::abs(tau)); ++it) {
-                RadauStep<N> trial = radau_step<N>(pb, tau, y, he, rq.atol, &st, rq.sensitivity, false);
+                RadauStep<Pb> trial = radau_step(pb, tau, y, start, he, rq.atol, &st, rq.sensitivity, false);
                 if (!trial.solved) break;
                 se = trial;
                 have_se = true;
-                const double ge = evs[hit].sign * g(hit, tau + he, se.y1());
+                const double ge = evs[hit].sign * g(hit, tau + he, se.pz[2]);
                 short_by = std::max(0.0, ge);
                 if (ge <= 0 || !(slope < 0) || he >= h_cap) break;
                 bool other = false;
                 for (int j = 0; j < n_ev; ++j)
-                    if (j != hit && evs[j].sign * g(j, tau + he, se.y1()) < -evs[j].noise) other = true;
+                    if (j != hit && evs[j].sign * g(j, tau + he, se.pz[2]) < -evs[j].noise) other = true;
                 if (other) break;
                 he = std::min(h_cap, he + 1.5 * ge / -slope +
                                          4 * std::numeric_limits<double>::epsilon() * (1 + std::abs(tau)));
@@ -193,18 +194,16 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
                 const double cs[3] = {RadauTableau::c1 * best, RadauTableau::c2 * best, best};
                 for (int j = 0; j < 3; ++j) {
                     se.z[j] = st.at(cs[j]) - y;
-                    se.fz[j] = pb.f(tau + cs[j] * hh, Vec(y + se.z[j]));
+                    se.pz[j] = pb.eval(tau + cs[j] * hh, Vec(y + se.z[j]));
                 }
                 se.dy1_dy0_minus_i = st.dy1_dy0_minus_i * best; // first order in the fraction of the step
                 have_se = true;
-                short_by = std::max(0.0, evs[hit].sign * g(hit, tau + he, se.y1()));
+                short_by = std::max(0.0, evs[hit].sign * g(hit, tau + he, se.pz[2]));
             }
             if (he > 1e-13 * (1 + std::abs(tau))) {
                 ++out.steps;
                 double qerr_e = 0;
-                on_step(se, step_integral<N>(
-                                se, [&](const Vec& v) { return pb.force(v); },
-                                [&](const Vec& v, const Vec& dv) { return pb.force_rate(v, dv); }, qerr_e));
+                on_step(se, step_integral(pb, se, qerr_e));
                 tau += se.h;
                 y = se.y1();
             }
@@ -221,6 +220,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Ra
         on_step(st, integral);
         tau += hh;
         y = st.y1();
+        start = st.pz[2];
         prev = st;
         have_prev = true;
         after_reject = false;
@@ -342,21 +342,19 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             Eigen::Matrix<double, 1, 1> a;
             a.setZero();
             const EventFn evs[1] = {{OdeEventKind::leave_zss, 1.0, 1e-14 * (1 + m.zeta)}};
-            auto g = [&](int, double t, const Eigen::Matrix<double, 1, 1>& y) {
-                return pb.force(y).dot(m.dP(t));
-            };
-            auto on_step = [&](const RadauStep<1>& st, const Eigen::Vector2d& integral) {
+            auto g = [&](int, double t, const auto& y) { return pb.force(y).dot(m.dP(t)); };
+            auto on_step = [&](const RadauStep<CircleProblem>& st, const Eigen::Vector2d& integral) {
                 out.force_integral += integral;
                 if (rq.sensitivity) {
                     // dl/dl0 = e_perp R on the circle; its integral by the trapezoidal rule.
-                    const Eigen::Matrix2d m0 = perp(pb.force(st.y0)) * R;
+                    const Eigen::Matrix2d m0 = perp(pb.force(st.p0)) * R;
                     R *= 1 + st.dy1_dy0_minus_i(0, 0);
-                    out.G += 0.5 * st.h * (m0 + perp(pb.force(st.y1())) * R);
+                    out.G += 0.5 * st.h * (m0 + perp(pb.force(st.pz[2])) * R);
                 }
                 record(st.tau0, st.tau0 + st.h,
                        [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
             };
-            const PhaseOutcome oc = integrate_phase<1>(pb, tau, tau1, a, h, rq, evs, 1, g, on_step, out);
+            const PhaseOutcome oc = integrate_phase(pb, tau, tau1, a, h, rq, evs, 1, g, on_step, out);
             // Displacement on the circle, zss (e(phi_a + r a) - e(phi_a)), without cancellation.
             const double half = 0.5 * r * a[0];
             const double mid = pb.phi_a + half;
@@ -378,11 +376,11 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
         const bool can_reach = s > 0;
         const EventFn evs[2] = {{OdeEventKind::velocity_sign, s, 1e-14 * (1 + m.zeta)},
                                 {OdeEventKind::reach_zss, -1.0, 0.0}};
-        auto g = [&](int k, double t, const Eigen::Vector2d& y) {
+        auto g = [&](int k, double t, const auto& y) {
             const Vec2 lf = pb.force(y);
             return k == 0 ? lf.dot(m.dP(t)) : lf.norm() - (1 - kPin);
         };
-        auto on_step = [&](const RadauStep<2>& st, const Eigen::Vector2d& integral) {
+        auto on_step = [&](const RadauStep<InteriorProblem>& st, const Eigen::Vector2d& integral) {
             out.force_integral += integral;
             if (rq.sensitivity) {
                 const Eigen::Matrix2d m0 = Eigen::Matrix2d::Identity() + E;
@@ -392,7 +390,7 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             record(st.tau0, st.tau0 + st.h, [&](double t) { return pb.force(st.at((t - st.tau0) / st.h)); });
         };
         const PhaseOutcome oc =
-            integrate_phase<2>(pb, tau, tau1, D, h, rq, evs, can_reach ? 2 : 1, g, on_step, out);
+            integrate_phase(pb, tau, tau1, D, h, rq, evs, can_reach ? 2 : 1, g, on_step, out);
         out.dL += D;
         l = pb.force(D);
         if (oc.how == StepEnd::failed) break;

@@ -6,11 +6,11 @@
 //   - the derivative of the step map dy1/dy0 (the discrete variational equation), computed at the converged
 //     stages: the sensitivity of the numerical period map, so that Newton on that map converges to its own
 //     fixed point quadratically.
-// The integrator knows nothing about friction: a problem supplies f and its Jacobian and nothing else.
+// The integrator knows nothing about friction: a problem supplies f, its Jacobian and the force to integrate.
 #pragma once
 
 #include <Eigen/Core>
-#include <Eigen/LU>
+#include <Eigen/LU> // the Hermite weights, once
 
 #include <algorithm>
 #include <cmath>
@@ -48,16 +48,63 @@ struct RadauTableau {
         {-0.50287263494578687595, 2.5719269498556054292, -0.59603920482822492497}};
 };
 
-template <int N> struct RadauStep {
+// Gaussian elimination with partial pivoting for the small fixed-size systems here (1 to 6 unknowns; Eigen's
+// PartialPivLU takes its general, blocked path for them, at several times the cost). The pivots' reciprocals
+// are kept, so that a solve multiplies (a complex division is a library call).
+template <class Scalar, int M> class SmallLU {
+  public:
+    using Mat = Eigen::Matrix<Scalar, M, M>;
+    explicit SmallLU(const Mat& a) : lu_(a) {
+        for (int k = 0; k < M; ++k) {
+            int p = k;
+            for (int i = k + 1; i < M; ++i)
+                if (std::abs(lu_(i, k)) > std::abs(lu_(p, k))) p = i;
+            perm_[k] = p;
+            if (p != k) lu_.row(k).swap(lu_.row(p));
+            inv_[k] = Scalar(1) / lu_(k, k);
+            for (int i = k + 1; i < M; ++i) {
+                const Scalar l = lu_(i, k) * inv_[k];
+                lu_(i, k) = l;
+                for (int j = k + 1; j < M; ++j) lu_(i, j) -= l * lu_(k, j);
+            }
+        }
+    }
+    // Solves for every column of b (M x K).
+    template <class B> B solve(B b) const {
+        for (int k = 0; k < M; ++k)
+            if (perm_[k] != k) b.row(k).swap(b.row(perm_[k]));
+        for (int k = 0; k < M; ++k)
+            for (int i = k + 1; i < M; ++i) b.row(i) -= lu_(i, k) * b.row(k);
+        for (int k = M - 1; k >= 0; --k) {
+            for (int j = k + 1; j < M; ++j) b.row(k) -= lu_(k, j) * b.row(j);
+            b.row(k) *= inv_[k];
+        }
+        return b;
+    }
+
+  private:
+    Mat lu_;
+    int perm_[M];
+    Scalar inv_[M];
+};
+
+// A problem supplies, for its dimension N (1 or 2 here):
+//   Point eval(double tau, const Vec& y) const   the law at (tau, y): Point::f is the rate y', and the point
+//                                                keeps what the Jacobian and the force need (so that each
+//                                                stage costs one evaluation of the law);
+//   Mat jac(const Point&) const                  dy'/dy there;
+//   Vec2 force(const Point&), force(const Vec&)  the friction force F/F_c at a state;
+//   Vec2 force_rate(const Point&)                dF/dtau along the law.
+template <class Pb> struct RadauStep {
+    static constexpr int N = Pb::N;
     using Vec = Eigen::Matrix<double, N, 1>;
     using Mat = Eigen::Matrix<double, N, N>;
-    using BigVec = Eigen::Matrix<double, 3 * N, 1>;
-    using BigMat = Eigen::Matrix<double, 3 * N, 3 * N>;
+    using Point = typename Pb::Point;
 
     double tau0 = 0, h = 0;
     Vec y0 = Vec::Zero();
     Vec z[3];            // stage increments Y_j - y0 at tau0 + c_j h (z[2] = y1 - y0: stiffly accurate)
-    Vec f0, fz[3];       // f at the start and at the converged stages
+    Point p0, pz[3];     // the law at the start and at the converged stages (pz[2]: at the step's end)
     Mat dy1_dy0_minus_i; // d y1 / d y0 - I
     double error = 0;    // scaled error norm (accept when <= 1)
     bool solved = false; // stage equations converged
@@ -73,18 +120,20 @@ template <int N> struct RadauStep {
     }
 };
 
-// Takes one step of size h from (tau0, y0). `guess` (may be null) is a previous step whose collocation
-// polynomial, extrapolated, starts the stage iteration. `atol` is the absolute tolerance per component
-// (the problems are scaled so that their variables are O(1) displacements). `want_sensitivity` computes
-// dy1/dy0. Problem: Vec f(double tau, const Vec& y) const; Mat jac(double tau, const Vec& y) const.
-template <int N, class Problem>
-RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep<N>::Vec& y0, double h,
-                        double atol, const RadauStep<N>* guess, bool want_sensitivity, bool estimate_twice) {
+// Takes one step of size h from (tau0, y0), where the law is `start` (pb.eval(tau0, y0): the caller has it
+// from the previous step's end or from a rejected try). `guess` (may be null) is a previous step whose
+// collocation polynomial, extrapolated, starts the stage iteration. `atol` is the absolute tolerance per
+// component (the problems are scaled so that their variables are O(1) displacements). `want_sensitivity`
+// computes dy1/dy0.
+template <class Pb>
+RadauStep<Pb> radau_step(const Pb& pb, double tau0, const typename RadauStep<Pb>::Vec& y0,
+                         const typename Pb::Point& start, double h, double atol, const RadauStep<Pb>* guess,
+                         bool want_sensitivity, bool estimate_twice) {
     using T = RadauTableau;
-    using S = RadauStep<N>;
+    using S = RadauStep<Pb>;
+    constexpr int N = S::N;
     using Vec = typename S::Vec;
     using Mat = typename S::Mat;
-    using BigMat = typename S::BigMat;
     static constexpr double A[3][3] = {
         {T::a11, T::a12, T::a13}, {T::a21, T::a22, T::a23}, {T::a31, T::a32, T::a33}};
     static constexpr double C[3] = {T::c1, T::c2, 1.0};
@@ -93,7 +142,8 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     st.tau0 = tau0;
     st.h = h;
     st.y0 = y0;
-    st.f0 = pb.f(tau0, y0);
+    st.p0 = start;
+    const Vec& f0 = st.p0.f;
     if (guess && guess->h > 0) {
         // Extrapolate the previous collocation polynomial to the new nodes.
         for (int j = 0; j < 3; ++j) {
@@ -101,40 +151,40 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
             st.z[j] = guess->at(s) - y0;
         }
     } else {
-        for (int j = 0; j < 3; ++j) st.z[j] = C[j] * h * st.f0;
+        for (int j = 0; j < 3; ++j) st.z[j] = C[j] * h * f0;
     }
     // Simplified Newton with the Jacobian at the step's start, in RADAU5's transformed variables
     // W = (T^-1 x I) Z: the 3N x 3N system (I - h A x J0) dZ = -(Z - h (A x I) F) becomes
     //   (u1/h - J0) dW1 = (T^-1 F)_1 - u1/h W1                      (real, N x N),
     //   ((alpha + i beta)/h - J0) (dW2 + i dW3) = ... (complex, N x N),
     // the same iterates (Hairer & Wanner, Sec. IV.8). E1 serves the error estimate below as well.
-    using CVec = Eigen::Matrix<std::complex<double>, N, 1>;
-    using CMat = Eigen::Matrix<std::complex<double>, N, N>;
-    const Mat J0 = pb.jac(tau0, y0);
+    using Cplx = std::complex<double>;
+    using CVec = Eigen::Matrix<Cplx, N, 1>;
+    using CMat = Eigen::Matrix<Cplx, N, N>;
+    const Mat J0 = pb.jac(st.p0);
     const double fac1 = T::u1 / h, alphn = T::alpha / h, betan = T::beta / h;
     Mat E1 = -J0;
     E1.diagonal().array() += fac1;
-    CMat E2 = -J0.template cast<std::complex<double>>();
-    E2.diagonal().array() += std::complex<double>(alphn, betan);
-    const Eigen::PartialPivLU<Mat> lu1(E1);
-    const Eigen::PartialPivLU<CMat> lu2(E2);
+    CMat E2 = -J0.template cast<Cplx>();
+    E2.diagonal().array() += Cplx(alphn, betan);
+    const SmallLU<double, N> lu1(E1);
+    const SmallLU<Cplx, N> lu2(E2);
     Vec w[3];
     for (int i = 0; i < 3; ++i) w[i] = T::ti[i][0] * st.z[0] + T::ti[i][1] * st.z[1] + T::ti[i][2] * st.z[2];
     const double stop = 1e-2 * atol;
     st.solved = false;
     double prev_norm = 0;
     for (int it = 0; it < 10; ++it) {
-        for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+        for (int j = 0; j < 3; ++j) st.pz[j] = pb.eval(tau0 + C[j] * h, Vec(y0 + st.z[j]));
         Vec r[3];
         for (int i = 0; i < 3; ++i)
-            r[i] = T::ti[i][0] * st.fz[0] + T::ti[i][1] * st.fz[1] + T::ti[i][2] * st.fz[2];
+            r[i] = T::ti[i][0] * st.pz[0].f + T::ti[i][1] * st.pz[1].f + T::ti[i][2] * st.pz[2].f;
         r[0] -= fac1 * w[0];
         r[1] -= alphn * w[1] - betan * w[2];
         r[2] -= betan * w[1] + alphn * w[2];
         const Vec dw1 = lu1.solve(r[0]);
         const CVec dw23 =
-            lu2.solve(CVec(r[1].template cast<std::complex<double>>() +
-                           std::complex<double>(0, 1) * r[2].template cast<std::complex<double>>()));
+            lu2.solve(CVec(r[1].template cast<Cplx>() + Cplx(0, 1) * r[2].template cast<Cplx>()));
         const Vec dw[3] = {dw1, dw23.real(), dw23.imag()};
         double nrm = 0;
         bool finite = true;
@@ -148,7 +198,7 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
         if (!finite) break;
         if (nrm <= stop) {
             st.solved = true;
-            for (int j = 0; j < 3; ++j) st.fz[j] = pb.f(tau0 + C[j] * h, Vec(y0 + st.z[j]));
+            for (int j = 0; j < 3; ++j) st.pz[j] = pb.eval(tau0 + C[j] * h, Vec(y0 + st.z[j]));
             break;
         }
         // A contraction rate near 1 (or worse) will not get there: the caller shortens the step.
@@ -161,13 +211,12 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
     }
     // Error estimate (RADAU5's ESTRAD), filtered through (u1/h - J)^-1 so that it stays meaningful for
     // stiff components.
-    const Eigen::PartialPivLU<Mat>& lue = lu1;
     const Vec f2 = (T::dd1 * st.z[0] + T::dd2 * st.z[1] + T::dd3 * st.z[2]) / h;
-    Vec err = lue.solve(Vec(f2 + st.f0));
+    Vec err = lu1.solve(Vec(f2 + f0));
     auto norm = [&](const Vec& e) { return e.cwiseAbs().maxCoeff() / atol; };
     st.error = norm(err);
     if (st.error >= 1 && estimate_twice) {
-        err = lue.solve(Vec(pb.f(tau0, Vec(y0 + err)) + f2));
+        err = lu1.solve(Vec(pb.eval(tau0, Vec(y0 + err)).f + f2));
         st.error = norm(err);
     }
     if (!std::isfinite(st.error)) st.error = std::numeric_limits<double>::infinity();
@@ -175,8 +224,8 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
         // Differentiate Z = h (A x I) F(y0 + Z) with respect to y0 at the converged stages:
         // (I - h (A x I) diag(J_j)) dZ = h (A x I) [J_1; J_2; J_3].
         Mat js[3];
-        for (int j = 0; j < 3; ++j) js[j] = pb.jac(tau0 + C[j] * h, Vec(y0 + st.z[j]));
-        BigMat G;
+        for (int j = 0; j < 3; ++j) js[j] = pb.jac(st.pz[j]);
+        Eigen::Matrix<double, 3 * N, 3 * N> G;
         Eigen::Matrix<double, 3 * N, N> rhs;
         for (int i = 0; i < 3; ++i) {
             Mat b = Mat::Zero();
@@ -187,7 +236,7 @@ RadauStep<N> radau_step(const Problem& pb, double tau0, const typename RadauStep
             }
             rhs.template block<N, N>(N * i, 0) = b;
         }
-        const Eigen::Matrix<double, 3 * N, N> dZ = Eigen::PartialPivLU<BigMat>(G).solve(rhs);
+        const Eigen::Matrix<double, 3 * N, N> dZ = SmallLU<double, 3 * N>(G).solve(rhs);
         st.dy1_dy0_minus_i = dZ.template block<N, N>(2 * N, 0);
     } else {
         st.dy1_dy0_minus_i.setZero();
@@ -220,23 +269,21 @@ inline const HermiteWeights& hermite_weights() {
     return hw;
 }
 
-// Integral over the step of a function g of the state whose rate is dg(y, f(y)) (the stage rates are
-// re-evaluated at the converged stages). Returns the Hermite rule (degree 7) and stores in `err` its
-// difference from the Radau rule on the same values (degree 4): the latter's error estimate, and a bound
-// for the former's. Needed because where the state is quasi-static (a stiff tip tracking the body), the
-// state's local error is damped away while the integrand still varies: the state's error estimate alone
-// lets the steps grow past what the quadrature of F can follow.
-template <int N, class G, class DG>
-Eigen::Vector2d step_integral(const RadauStep<N>& st, const G& g, const DG& dg, double& err) {
+// Integral of the force F over the step, from F and dF/dtau at the start and at the converged stages.
+// Returns the Hermite rule (degree 7) and stores in `err` its difference from the Radau rule on the same
+// values (degree 4): the latter's error estimate, and a bound for the former's. Needed because where the
+// state is quasi-static (a stiff tip tracking the body), the state's local error is damped away while the
+// integrand still varies: the state's error estimate alone lets the steps grow past what the quadrature of
+// F can follow.
+template <class Pb> Eigen::Vector2d step_integral(const Pb& pb, const RadauStep<Pb>& st, double& err) {
     using T = RadauTableau;
-    using Vec = typename RadauStep<N>::Vec;
     const HermiteWeights& hw = hermite_weights();
     Eigen::Vector2d q(0, 0), qd(0, 0), q5(0, 0);
     const double b[4] = {0, T::a31, T::a32, T::a33};
     for (int k = 0; k < 4; ++k) {
-        const Vec y = k == 0 ? st.y0 : Vec(st.y0 + st.z[k - 1]);
-        const Eigen::Vector2d gk = g(y);
-        const Eigen::Vector2d dgk = dg(y, k == 0 ? st.f0 : st.fz[k - 1]);
+        const typename Pb::Point& pt = k == 0 ? st.p0 : st.pz[k - 1];
+        const Eigen::Vector2d gk = pb.force(pt);
+        const Eigen::Vector2d dgk = pb.force_rate(pt);
         q += hw.w[k] * gk;
         qd += hw.v[k] * dgk;
         q5 += b[k] * gk;

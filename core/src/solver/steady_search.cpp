@@ -40,7 +40,7 @@ Vec2 ode_lag_rate(const Params& p, double tau, Vec2 lag, bool on_circle) {
     const Vec2 l = p.rdisp * lag;
     const double v = l.dot(dp);
     const solver::InteriorProblem pb(m, l, v < 0 ? -1.0 : 1.0);
-    return pb.f(tau, Eigen::Vector2d::Zero());
+    return pb.eval(tau, Eigen::Vector2d::Zero()).f;
 }
 
 namespace {
