@@ -3,6 +3,7 @@
 // paper's scheme extrapolated to dtau -> 0, closed-form switching instants and physical invariants.
 #include "reference/theta0_exact.hpp"
 
+#include "../core/src/solver/lag_phases.hpp" // the solver's own sin/cos
 #include "fv/ode_solver.hpp"
 #include "fv/paper_scheme.hpp"
 #include "fv/rigid.hpp"
@@ -10,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -40,6 +42,30 @@ double exact_rx(double zeta, double rdisp, double i) {
 }
 
 } // namespace
+
+TEST_CASE("ODE: the solver's sin/cos is within 2 ulp of the library's (1e-30 next to the zeros)",
+          "[ode][math]") {
+    std::mt19937_64 gen(7);
+    auto ulps = [](double got, double ref) {
+        if (std::abs(got - ref) <= 1e-30)
+            return 0.0; // a tiny reduced argument: relative digits lost, not absolute
+        const double ulp = std::nextafter(std::abs(ref), INFINITY) - std::abs(ref);
+        return std::abs(got - ref) / ulp;
+    };
+    std::vector<double> xs = {0.0,       -0.0,    1e-300,   1e-8, kPi / 4, kPi / 2, kPi,
+                              1.5 * kPi, 2 * kPi, -kPi / 2, 1e6,  -1e6,    1e7,     1e300};
+    for (double range : {1.0, 10.0, 1e3, 1e6}) {
+        std::uniform_real_distribution<double> u(-range, range);
+        for (int k = 0; k < 200000; ++k) xs.push_back(u(gen));
+    }
+    double worst = 0;
+    for (double x : xs) {
+        const Vec2 cs = fv::solver::cos_sin(x);
+        worst = std::max({worst, ulps(cs.x(), std::cos(x)), ulps(cs.y(), std::sin(x))});
+    }
+    CHECK(worst <= 2);
+    CHECK(std::isnan(fv::solver::cos_sin(std::nan("")).x()));
+}
 
 TEST_CASE("ODE: The lag ODE is the dtau -> 0 limit of one step of the paper's scheme", "[ode][derivation]") {
     // One step of Eqs. (17)-(27) from lag L at tau = 0 changes the lag by dL = rate * dtau + O(dtau^2):

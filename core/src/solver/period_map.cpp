@@ -77,7 +77,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
         }
         // Step factor from both estimates (the state's ~h^4, the quadrature's ~h^5).
         auto factor = [&] {
-            const double fs = st.error > 0 ? 0.9 * std::pow(st.error, -0.25) : 4.0;
+            const double fs = st.error > 0 ? 0.9 / std::sqrt(std::sqrt(st.error)) : 4.0;
             const double fq = qerr > 0 ? 0.9 * std::pow(qerr, -0.2) : 4.0;
             return std::min({4.0, fs, fq});
         };

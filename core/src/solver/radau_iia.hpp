@@ -61,7 +61,7 @@ template <class Scalar, int M> class SmallLU {
                 if (std::abs(lu_(i, k)) > std::abs(lu_(p, k))) p = i;
             perm_[k] = p;
             if (p != k) lu_.row(k).swap(lu_.row(p));
-            inv_[k] = Scalar(1) / lu_(k, k);
+            inv_[k] = reciprocal(lu_(k, k));
             for (int i = k + 1; i < M; ++i) {
                 const Scalar l = lu_(i, k) * inv_[k];
                 lu_(i, k) = l;
@@ -83,6 +83,11 @@ template <class Scalar, int M> class SmallLU {
     }
 
   private:
+    static double reciprocal(double x) { return 1 / x; }
+    // Without the library's scaling for extreme magnitudes (|x|^2 stays far inside the range here).
+    static std::complex<double> reciprocal(const std::complex<double>& x) {
+        return std::conj(x) / std::norm(x);
+    }
     Mat lu_;
     int perm_[M];
     Scalar inv_[M];
