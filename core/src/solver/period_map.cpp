@@ -96,10 +96,23 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
             }
             continue;
         }
-        // Events: the first probe where some event function is off its side.
+        // Events: the first probe where some event function is off its side. The probes inside the step are
+        // needed only where some function comes near its zero: at the step's start and at the three stages
+        // (where the law is known already) each must stay on its side by a quarter of its largest size there.
+        const double tn[4] = {tau, tau + RadauTableau::c1 * hh, tau + RadauTableau::c2 * hh, tau + hh};
+        bool clear = true;
+        for (int j = 0; j < n_ev && clear; ++j) {
+            double lo = std::numeric_limits<double>::infinity(), big = 0;
+            for (int k = 0; k < 4; ++k) {
+                const double gk = evs[j].sign * g(j, tn[k], k == 0 ? st.p0 : st.pz[k - 1]);
+                lo = std::min(lo, gk);
+                big = std::max(big, std::abs(gk));
+            }
+            clear = lo >= 0.25 * big + evs[j].noise;
+        }
         int hit = -1;
         double s_lo = 0, s_hi = 0;
-        for (int k = 1; k <= kProbes && hit < 0; ++k) {
+        for (int k = clear ? kProbes : 1; k <= kProbes && hit < 0; ++k) {
             const double s = static_cast<double>(k) / kProbes;
             const Vec ys = k == kProbes ? st.y1() : st.at(s);
             for (int j = 0; j < n_ev; ++j)
