@@ -574,12 +574,10 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     PeriodRequest rq;
     rq.atol = 0.1 * std::pow(aim, 2.0 / 3.0) / std::max(1.0, r);
     // The quadrature's local tolerance per unit time (it sets the step size): the period mean's error is
-    // measured at 0.1-0.4 of it, the verification's 4x tighter run a quarter of that, and their difference
-    // (the integration part of the error estimate) about 3/4 of the former: 0.05-0.2 tol. At aim the
-    // estimates had a median 40x below the tolerance, at 1/7 more steps per period; at 3 aim the larger steps
-    // take grazing reaches of the circle further short of it, and the pinning allowance (up to 1.6e-8 at
-    // tolerance 1e-8) failed points of the map.
-    rq.atol_force = 2 * aim;
+    // measured at 0.1-0.4 of it. Not looser: at 2 aim (1/7 fewer steps) the integration error of a period
+    // whose fixed point lies next to a grazing of the circle (zeta 0.4243, theta 132 deg, rdisp 2, i = 1)
+    // reached 1.1e-8, and the refinement at 4x tighter tolerance cycled between the laws at the section.
+    rq.atol_force = aim;
     rq.sensitivity = true;
 
     // Starts, in order: the warm start (if any), the nearby limit (start_force), then the others, each
