@@ -1,4 +1,5 @@
 // The figure definitions (data) and the numbers computed for them.
+#include "fv/adaptive_sampling.hpp"
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <set>
 
 TEST_CASE("Every paper figure is defined once, with a unique id", "[figures]") {
@@ -88,11 +90,15 @@ TEST_CASE("Figs. 10 and 12: the rigid reference curves are the closed forms (11)
         }
         // Larger r_disp lies closer to the rigid curve (the paper's reading of Figs. 10-13), at zeta = 0.5.
         const auto& series = d.panels[0].series;
-        const std::size_t k = 24; // zeta = 0.5 on ratio_zeta_grid()
-        REQUIRE(rigid.x[k] == Approx(0.5));
+        // Each curve is sampled adaptively, 0.5 on every curve's start grid.
+        auto at_half = [](const fv::SeriesData& s) {
+            const auto it = std::find(s.x.begin(), s.x.end(), 0.5);
+            REQUIRE(it != s.x.end());
+            return s.y[static_cast<std::size_t>(it - s.x.begin())];
+        };
         double prev = 1e9;
         for (std::size_t s = 0; s + 1 < series.size(); ++s) {
-            const double gap = std::abs(series[s].y[k] - rigid.y[k]);
+            const double gap = std::abs(at_half(series[s]) - at_half(rigid));
             CAPTURE(id, s, gap);
             CHECK(gap < prev);
             prev = gap;
@@ -151,10 +157,18 @@ TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zet
     REQUIRE(panel.heatmap);
     CHECK(panel.heatmap->values.size() == 5 * 19);
     const auto& rigid_best = panel.series.at(1);
-    CHECK(rigid_best.y[0] == Approx(0).margin(1e-9));
-    CHECK(rigid_best.y[1] == Approx(0).margin(1e-9));
-    CHECK(rigid_best.y[3] == Approx(90).margin(1e-9));
-    CHECK(rigid_best.y[4] == Approx(90).margin(1e-9));
+    auto at = [&](double zeta) {
+        const auto it = std::find(rigid_best.x.begin(), rigid_best.x.end(), zeta);
+        REQUIRE(it != rigid_best.x.end());
+        return rigid_best.y[static_cast<std::size_t>(it - rigid_best.x.begin())];
+    };
+    CHECK(at(0.3) == Approx(0).margin(1e-9));
+    CHECK(at(0.6) == Approx(0).margin(1e-9));
+    CHECK(at(1.2) == Approx(90).margin(1e-9));
+    CHECK(at(2.0) == Approx(90).margin(1e-9));
+    // The jump from 0 to 90 degrees is not drawn as a line: the curve breaks (a NaN sample) between them.
+    CHECK(std::count_if(rigid_best.y.begin(), rigid_best.y.end(), [](double v) { return std::isnan(v); }) ==
+          1);
     // Grid cells hold the Dahl r_x at (zeta, theta): spot-check one against a direct call.
     const double direct = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}).rx;
     CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(direct).margin(1e-6));
@@ -186,4 +200,61 @@ TEST_CASE("Where the model disagrees with the paper's text (README, captions of 
     CHECK(rx(0.1, 90 * deg, 2, 0) == Approx(0.3235).margin(1e-4));
     for (const char* id : {"fig10", "fig11", "fig12", "fig13"})
         CHECK(fv::find_figure(id)->caption.find("Unlike the paper's reading") != std::string::npos);
+}
+
+TEST_CASE(
+    "Adaptive sampling: samples gather at a kink, a straight line keeps its start grid, the budget holds",
+    "[figures][adaptive]") {
+    auto sample = [](std::function<double(double)> f, std::size_t budget) {
+        fv::AdaptiveSampling o;
+        o.budget = budget;
+        const auto curves = fv::adaptive_sample(1, fv::linspace(0, 1, 11), o, [&](const auto& req) {
+            std::vector<double> y;
+            for (const fv::SampleRequest& r : req) y.push_back(f(r.x));
+            return y;
+        });
+        return curves.at(0);
+    };
+    // A kink between grid points: found to within a thousandth, where the start grid was 0.1 apart.
+    const auto kink = sample([](double x) { return std::fabs(x - 1.0 / 3); }, 200);
+    double nearest = 1;
+    for (double x : kink.x) nearest = std::min(nearest, std::fabs(x - 1.0 / 3));
+    CHECK(nearest < 1e-3);
+    CHECK(std::is_sorted(kink.x.begin(), kink.x.end()));
+    // Far from the kink nothing is added: between 0.6 and 1 only the start grid.
+    CHECK(std::count_if(kink.x.begin(), kink.x.end(), [](double x) { return x > 0.55; }) == 5);
+    // A straight line is not refined.
+    CHECK(sample([](double x) { return 2 * x + 1; }, 200).x.size() == 11);
+    // A wiggle finer than any budget stops at the budget.
+    CHECK(sample([](double x) { return std::sin(200 * x); }, 60).x.size() == 60);
+}
+
+TEST_CASE("Fig. 5: the rigid theta = 0 curve is sampled up to its corner at zeta = 1",
+          "[figures][adaptive]") {
+    // r_x rises with a vertical tangent into zeta = 1 (Eq. 10). Drawn on a 1000 x 600 plot of zeta in [0, 2],
+    // r_x in [0, 1.05], the exact curve between two samples stays within 0.4 pixels of the chord joining them
+    // (the 0.01 grid left a chord a pixel off near zeta = 1, where the corner shows).
+    auto worst_pixels = [](const std::vector<double>& x, const std::vector<double>& y) {
+        double worst = 0;
+        for (std::size_t k = 1; k < x.size(); ++k) {
+            const double zm = 0.5 * (x[k - 1] + x[k]);
+            const double ax = x[k - 1] / 2 * 1000, ay = y[k - 1] / 1.05 * 600, bx = x[k] / 2 * 1000,
+                         by = y[k] / 1.05 * 600;
+            const double px = zm / 2 * 1000, py = fv::rigid_rx_parallel(zm) / 1.05 * 600;
+            const double len = std::hypot(bx - ax, by - ay);
+            worst = std::max(worst, std::fabs((bx - ax) * (py - ay) - (by - ay) * (px - ax)) / len);
+        }
+        return worst;
+    };
+    const auto d = fv::compute_figure(*fv::find_figure("fig5"));
+    const auto& s = d.panels.at(0).series.at(0);
+    REQUIRE(s.label == "θ = 0°");
+    CHECK(worst_pixels(s.x, s.y) < 0.4);
+    CHECK(s.x.size() <= 400);
+    // The old even grid does not pass the same check: it can fail.
+    std::vector<double> grid = fv::linspace(0, 2, 201), exact;
+    for (double z : grid) exact.push_back(fv::rigid_rx_parallel(z));
+    CHECK(worst_pixels(grid, exact) > 1);
+    // The table holds the samples drawn.
+    CHECK(d.tables.at(0).ratios.size() >= s.x.size());
 }

@@ -39,18 +39,82 @@ gfx::Vec2 to_px(const gfx::PlotTransform& tf, const fv::Vec2& p) {
     return tf.to_pixel(p.x(), p.y());
 }
 
-// Labels go on the side of a point that faces away from the middle of all marked points, so that labels
-// of nearby points (P(t), P(t+dt), ...) do not overlap each other or the lines between them.
-void label_point(gfx::Canvas& c, gfx::Vec2 at, gfx::Vec2 centre, const PointData& p, float size) {
-    const std::string& text = p.label;
-    if (text.empty()) return;
+// Text colour of a label in an ink: light inks (the spring's grey) are darkened so that labels stay legible.
+gfx::Color label_color(Ink ink) {
+    return ink == Ink::spring ? gfx::Color::hex(0x505050) : ink_color(ink, 0);
+}
+
+gfx::TextStyle label_style(float size, gfx::Color color, float dx, float dy) {
     gfx::TextStyle ts;
     ts.size = size;
-    const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
-    const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
-    ts.halign = dx >= 0 ? gfx::HAlign::Left : gfx::HAlign::Right;
-    ts.valign = dy >= 0 ? gfx::VAlign::Top : gfx::VAlign::Bottom;
-    c.text({at.x + (dx >= 0 ? 9.f : -9.f), at.y + (dy >= 0 ? 7.f : -7.f)}, text, ts);
+    ts.color = color;
+    ts.halign = dx > 0.3f ? gfx::HAlign::Left : (dx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
+    ts.valign = dy > 0.3f ? gfx::VAlign::Top : (dy < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
+    return ts;
+}
+
+// A label and the places it may go, in order of preference.
+struct LabelCandidate {
+    gfx::Vec2 anchor;
+    gfx::TextStyle style;
+};
+
+// Places labels one after the other where they cover the least of what is drawn in the data area (series,
+// shapes, markers) and of the labels placed before them, inside the data area when possible.
+class LabelPlacer {
+  public:
+    LabelPlacer(gfx::Canvas& c, const gfx::PlotTransform& tf) : canvas_(c), tf_(tf) {}
+
+    void place(const std::string& text, const std::vector<LabelCandidate>& candidates) {
+        if (text.empty() || candidates.empty()) return;
+        const auto& cmds = canvas_.display_list().commands;
+        double best_score = 1e300;
+        gfx::dl::Text best;
+        for (const LabelCandidate& cand : candidates) {
+            gfx::dl::Text t{cand.anchor, text, cand.style, {}};
+            const gfx::Rect b = gfx::text_bounds(t, canvas_.fonts());
+            double score = 0;
+            const gfx::Rect& A = tf_.area;
+            if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
+            for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
+                const auto& cmd = cmds[k];
+                if (!gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
+                // Text on text or on a marker is unreadable; crossing a line is only untidy.
+                const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
+                                   std::holds_alternative<gfx::dl::Marker>(cmd) ||
+                                   std::holds_alternative<gfx::dl::Arrow>(cmd);
+                score += solid ? 100 : 1;
+            }
+            for (const gfx::Rect& r : placed_)
+                if (r.overlaps(b)) score += 100;
+            if (score < best_score) best_score = score, best = t;
+            if (score == 0) break;
+        }
+        placed_.push_back(gfx::text_bounds(best, canvas_.fonts()));
+        pending_.push_back(best);
+    }
+    // Draws the placed labels (after every placement, so that each was placed against the shapes only).
+    void draw() {
+        for (const auto& t : pending_) canvas_.text(t.anchor, t.text, t.style);
+    }
+
+  private:
+    gfx::Canvas& canvas_;
+    const gfx::PlotTransform& tf_;
+    std::vector<gfx::Rect> placed_;
+    std::vector<gfx::dl::Text> pending_;
+};
+
+// The eight places around a point, at `r` from it, starting with direction (dx, dy) and turning away from it.
+std::vector<LabelCandidate> around(gfx::Vec2 at, float dx, float dy, float size, gfx::Color color) {
+    const float a0 = std::atan2(dy, dx);
+    std::vector<LabelCandidate> out;
+    for (int k : {0, 1, -1, 2, -2, 3, -3, 4}) {
+        const float a = a0 + static_cast<float>(k) * 0.25f * static_cast<float>(kPi);
+        const float ux = std::cos(a), uy = std::sin(a);
+        out.push_back({{at.x + 9 * ux, at.y + 8 * uy}, label_style(size, color, ux, uy)});
+    }
+    return out;
 }
 
 } // namespace
@@ -102,6 +166,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         plot.legend = gfx::LegendPosition::BottomLeft;
     else if (panel.legend == "bottom-right")
         plot.legend = gfx::LegendPosition::BottomRight;
+    else if (panel.legend == "outside")
+        plot.legend = gfx::LegendPosition::Outside;
     if (panel.heatmap) {
         const HeatmapData& h = *panel.heatmap;
         gfx::HeatMap m;
@@ -131,15 +197,12 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                     c.fill_rect({x0, tf.area.y0, x1, tf.area.y1}, ink_color(b.ink, 0).with_alpha(b.opacity));
             }
         });
+    // Shapes, clipped to the data area. Shapes first, then every label: text and shapes are separate draw
+    // batches, and the software renderer pays per batch. Labels belong on top anyway.
     plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
-        // Shapes first, then every label: text and shapes are separate draw batches, and the software
-        // renderer pays per batch. Labels belong on top anyway.
         for (const CircleData& ci : pd->circles)
             c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
                      {ink_color(ci.ink, 0), ci.width, line_style(ci.dash)});
-        gfx::Vec2 centre{0, 0};
-        for (const PointData& p : pd->points)
-            centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(pd->points.size()));
         for (const SegmentData& s : pd->segments)
             c.line(to_px(tf, s.a), to_px(tf, s.b), {ink_color(s.ink, 0), s.width, line_style(s.dash)});
         for (const ArrowData& a : pd->arrows) {
@@ -151,54 +214,77 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                      std::min(14.f, 0.5f * len),
                      std::min(10.f, 0.4f * len)});
         }
-        for (const PointData& p : pd->points)
-            c.marker(to_px(tf, p.at),
-                     {marker_shape(p.mark), p.size, ink_color(p.ink, 0), gfx::colors::white, 1.5f});
-
-        for (const SegmentData& s : pd->segments) {
-            if (s.label.empty()) continue;
-            const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
-            const gfx::Vec2 m = a + (b - a) * s.label_at;
-            // Unit normal pointing left of a->b on screen (y down).
-            float nx = b.y - a.y, ny = -(b.x - a.x);
-            const float len = std::max(1e-3f, std::hypot(nx, ny));
-            nx /= len, ny /= len;
-            const bool flip =
-                s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
-            if (flip) nx = -nx, ny = -ny;
-            gfx::TextStyle ts;
-            ts.size = 15 * pd->text_scale;
-            ts.color = ink_color(s.ink, 0);
-            ts.halign =
-                nx > 0.3f ? gfx::HAlign::Left : (nx < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
-            ts.valign =
-                ny > 0.3f ? gfx::VAlign::Top : (ny < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
-            c.text({m.x + nx * 8, m.y + ny * 8}, s.label, ts);
-        }
-        for (const ArrowData& a : pd->arrows) {
-            const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
-            const float len = std::hypot(to.x - from.x, to.y - from.y);
-            if (len < 2 || a.label.empty()) continue;
-            gfx::TextStyle ts;
-            ts.size = 14 * pd->text_scale;
-            ts.color = ink_color(a.ink, 0);
-            if (a.label_dy != 0) {
-                ts.halign = gfx::HAlign::Center;
-                ts.valign = a.label_dy < 0 ? gfx::VAlign::Bottom : gfx::VAlign::Top;
-                c.text({to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)}, a.label, ts);
-                continue;
-            }
-            const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
-            ts.halign =
-                ux > 0.3f ? gfx::HAlign::Left : (ux < -0.3f ? gfx::HAlign::Right : gfx::HAlign::Center);
-            ts.valign =
-                uy > 0.3f ? gfx::VAlign::Top : (uy < -0.3f ? gfx::VAlign::Bottom : gfx::VAlign::Middle);
-            c.text({to.x + ux * 6, to.y + uy * 6}, a.label, ts);
-        }
-        for (const PointData& p : pd->points) label_point(c, to_px(tf, p.at), centre, p, 15 * pd->text_scale);
     });
-    plot.draw(canvas);
-    return plot.layout(canvas);
+    // Markers and labels, not clipped: a marker on the frame (theta = 90 deg on the map) is drawn whole.
+    plot.add_overlay(
+        [pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
+            const gfx::Rect inside = tf.area.inset(-1);
+            for (const PointData& p : pd->points)
+                if (inside.contains(to_px(tf, p.at)))
+                    c.marker(to_px(tf, p.at),
+                             {marker_shape(p.mark), p.size, ink_color(p.ink, 0), gfx::colors::white, 1.5f});
+            gfx::Vec2 centre{0, 0};
+            for (const PointData& p : pd->points)
+                centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(pd->points.size()));
+            // Points first (their labels name them), then arrows, then segments; each label where it covers
+            // the least of what is drawn and of the labels before it.
+            LabelPlacer placer(c, tf);
+            for (const PointData& p : pd->points) {
+                const gfx::Vec2 at = to_px(tf, p.at);
+                if (p.label.empty() || !inside.contains(at)) continue;
+                // Preferred side: as asked, else away from the middle of all marked points.
+                const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
+                const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
+                placer.place(p.label,
+                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15, gfx::colors::text));
+            }
+            for (const ArrowData& a : pd->arrows) {
+                const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+                const float len = std::hypot(to.x - from.x, to.y - from.y);
+                if (len < 2 || a.label.empty()) continue;
+                const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
+                // Beyond the head, then beside the head or the shaft on either side.
+                std::vector<LabelCandidate> cands = {
+                    {{to.x + ux * 6, to.y + uy * 6}, label_style(14, ink_color(a.ink, 0), ux, uy)}};
+                for (float along : {0.85f, 0.5f})
+                    for (float side : {1.f, -1.f}) {
+                        const float nx = -uy * side, ny = ux * side;
+                        const gfx::Vec2 m = from + (to - from) * along;
+                        cands.push_back(
+                            {{m.x + nx * 9, m.y + ny * 9}, label_style(14, ink_color(a.ink, 0), nx, ny)});
+                    }
+                placer.place(a.label, cands);
+            }
+            for (const SegmentData& s : pd->segments) {
+                if (s.label.empty()) continue;
+                const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
+                // Unit normal pointing left of a->b on screen (y down). A segment shorter than its label's
+                // offset is not labelled: the label would name a point, on top of the points' own labels.
+                float nx = b.y - a.y, ny = -(b.x - a.x);
+                if (std::hypot(nx, ny) < 8) continue;
+                const float len = std::hypot(nx, ny);
+                nx /= len, ny /= len;
+                const gfx::Vec2 m = a + (b - a) * s.label_at;
+                const bool flip =
+                    s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
+                if (flip) nx = -nx, ny = -ny;
+                // The asked side first, at the asked place and then further along; the other side only when
+                // no side was asked.
+                std::vector<LabelCandidate> cands;
+                for (float side : {1.f, -1.f}) {
+                    if (side < 0 && s.label_side != 0) break;
+                    for (float at : {s.label_at, 0.3f, 0.7f}) {
+                        const gfx::Vec2 q = a + (b - a) * at;
+                        cands.push_back({{q.x + side * nx * 8, q.y + side * ny * 8},
+                                         label_style(15, label_color(s.ink), side * nx, side * ny)});
+                    }
+                }
+                placer.place(s.label, cands);
+            }
+            placer.draw();
+        },
+        false);
+    return plot.draw(canvas);
 }
 
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {

@@ -219,6 +219,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     }
     ImGui::Separator();
     if (curves) {
+        // format_number: a value that rounds to zero reads "0.00000", never "-0.00000".
         ImGui::Text("Steady state%s  r_x %s   r_y %s", busy ? "…" : "",
                     format_number("%.5f", curves->current.rx).c_str(),
                     format_number("%.5f", curves->current.ry).c_str());

@@ -114,7 +114,7 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     const bool slip = m.slip;
     PanelData panel;
     panel.equal_aspect = true;
-    panel.legend = "top-right";
+    panel.legend = "outside"; // the trail moves: a legend inside would cover it sooner or later
     panel.x_title = "x / x_{v}";
     panel.y_title = "y / x_{v}";
     panel.title = std::string("top view: ") +
@@ -154,6 +154,14 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
         }
     }
     const Vec2 P = m.P, T = m.T;
+    // The frame (below): the trails' extent so far, P included.
+    double x0 = P.x(), x1 = P.x(), y0 = P.y(), y1 = P.y();
+    auto take = [&](double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    };
+    for (const SeriesData& s : panel.series)
+        for (std::size_t k = 0; k < s.x.size(); ++k) take(s.x[k], s.y[k]);
     const double half_h = (1 + (rigid ? 0.5 : p.zss())) * 1.2 * view.zoom;
     // What moves, drawn behind the trails' heads (issue #14 item 1): the body around P (it carries P and
     // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
@@ -183,12 +191,28 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     panel.points.push_back({P, Ink::body, Mark::circle, "P", 11});
     if (!rigid) panel.points.push_back({T, slip ? Ink::tip : Ink::pull, Mark::square, "T", 11});
 
-    // Camera: centred on P's drift (or where the user panned to), tall enough for the vibration and z_ss.
-    const double cx = (view.follow ? P.x() : 0) + view.pan.x(), cy = view.pan.y();
-    panel.y_min = cy - half_h;
-    panel.y_max = cy + half_h;
-    panel.x_min = cx - 1.6 * half_h;
-    panel.x_max = cx + 1.6 * half_h;
+    // Camera: framed on the trails (above), the arrows at P, and the z_ss circle and the body around P
+    // unless they are far larger than the trails (tiny r_disp: the paths would shrink to a dot), with a
+    // margin. The half sizes go up in steps of 5% so that the frame does not breathe with every sample;
+    // zoom and pan act on that frame.
+    for (const ArrowData& a : panel.arrows)
+        if (a.from == P) take(a.to.x(), a.to.y());
+    const double around_p = rigid ? std::max(bw, bh) : 1.15 * p.zss() + 0.25;
+    if (around_p <= 2 * std::max({x1 - x0, y1 - y0, 1.0})) {
+        take(P.x() - around_p, P.y() - around_p);
+        take(P.x() + around_p, P.y() + around_p);
+    }
+    auto stepped = [](double half) {
+        return std::pow(1.05, std::ceil(std::log(std::max(half, 1e-3)) / std::log(1.05)));
+    };
+    const double frame_w = stepped(0.5 * (x1 - x0) * 1.08) * view.zoom,
+                 frame_h = stepped(0.5 * (y1 - y0) * 1.08) * view.zoom;
+    const double cx = (view.follow ? 0.5 * (x0 + x1) : 0) + view.pan.x(),
+                 cy = (view.follow ? 0.5 * (y0 + y1) : 0) + view.pan.y();
+    panel.x_min = cx - frame_w;
+    panel.x_max = cx + frame_w;
+    panel.y_min = cy - frame_h;
+    panel.y_max = cy + frame_h;
     return panel;
 }
 
@@ -264,7 +288,7 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
     if (overlay.vv_m_s > 0) panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
     panel.y_title = "friction ratio r_{x}";
-    panel.legend = "bottom-right";
+    panel.legend = "best";
     panel.x_min = 0;
     panel.x_max = ratio_zeta_max(overlay.data);
     panel.y_min = 0;

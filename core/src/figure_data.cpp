@@ -2,6 +2,7 @@
 
 #include "figure_panels.hpp"
 
+#include "fv/adaptive_sampling.hpp"
 #include "fv/format.hpp"
 #include "fv/rigid.hpp"
 
@@ -35,27 +36,45 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
     }
     bool all_rigid = true;
     for (const auto& c : spec.curves) all_rigid = all_rigid && c.model == Model::rigid;
-    // One flat list of points over all curves keeps both cores busy even when one curve is slow.
-    std::vector<SweepPoint> pts;
-    for (const auto& c : spec.curves)
-        for (double z : zetas) {
-            SweepPoint sp;
-            sp.model = c.model;
+    // Each round of points over all curves in one flat list keeps both cores busy even when one curve is
+    // slow. Without a budget the grid is the samples.
+    std::vector<std::vector<SweepPoint>> computed(spec.curves.size());
+    auto eval = [&](const std::vector<SampleRequest>& req) {
+        std::vector<SweepPoint> pts(req.size());
+        for (std::size_t k = 0; k < req.size(); ++k) {
+            const Curve& c = spec.curves[req[k].curve];
             const double nan = std::nan("");
-            sp.params = {z, c.theta, c.model == Model::rigid ? nan : c.rdisp,
-                         c.model == Model::rigid ? nan : c.i};
-            pts.push_back(sp);
+            pts[k].model = c.model;
+            pts[k].params = {req[k].x, c.theta, c.model == Model::rigid ? nan : c.rdisp,
+                             c.model == Model::rigid ? nan : c.i};
         }
-    parallel_for(
-        static_cast<int>(pts.size()),
-        [&](int k) {
-            auto& sp = pts[static_cast<std::size_t>(k)];
-            sp.result = steady_ratio(sp.model, sp.params);
-        },
-        threads);
-    std::size_t k = 0;
+        parallel_for(
+            static_cast<int>(pts.size()),
+            [&](int k) {
+                auto& sp = pts[static_cast<std::size_t>(k)];
+                sp.result = steady_ratio(sp.model, sp.params);
+            },
+            threads);
+        std::vector<double> y(req.size());
+        for (std::size_t k = 0; k < req.size(); ++k) {
+            y[k] = spec.side_force ? pts[k].result.ry : pts[k].result.rx;
+            computed[req[k].curve].push_back(pts[k]);
+        }
+        return y;
+    };
+    AdaptiveSampling o;
+    o.x_span = *panel.x_max - *panel.x_min;
+    o.y_span = panel.y_min && panel.y_max ? *panel.y_max - *panel.y_min : 0; // 0: the values' own range
+    o.budget = spec.zeta_budget > 0 ? spec.zeta_budget : zetas.size();
+    if (spec.zeta_budget == 0) o.max_rounds = 1;
+    adaptive_sample(spec.curves.size(), zetas, o, eval);
+    rows.clear();
     for (std::size_t ci = 0; ci < spec.curves.size(); ++ci) {
         const Curve& c = spec.curves[ci];
+        std::vector<SweepPoint>& pts = computed[ci];
+        std::stable_sort(pts.begin(), pts.end(), [](const SweepPoint& a, const SweepPoint& b) {
+            return a.params.zeta < b.params.zeta;
+        });
         SeriesData s;
         s.label = curve_label(c, all_rigid);
         if (spec.side_force) {
@@ -70,13 +89,13 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
             s.ink = Ink::rigid;
             s.dash = Dash::dashed;
         }
-        for (std::size_t j = 0; j < zetas.size(); ++j, ++k) {
-            s.x.push_back(pts[k].params.zeta);
-            s.y.push_back(spec.side_force ? pts[k].result.ry : pts[k].result.rx);
+        for (const SweepPoint& sp : pts) {
+            s.x.push_back(sp.params.zeta);
+            s.y.push_back(spec.side_force ? sp.result.ry : sp.result.rx);
+            rows.push_back(sp);
         }
         panel.series.push_back(std::move(s));
     }
-    rows = std::move(pts);
     return panel;
 }
 
@@ -245,6 +264,26 @@ double refined_argmin(const std::vector<double>& row, double x0, double dx) {
     return x;
 }
 
+// Breaks a curve (a NaN sample, which the plot does not join) where it jumps instead of changing: at a step
+// larger than `min_jump` and than 4 times each neighbouring step. The argmin theta*(zeta) jumps where another
+// angle's minimum becomes the lower one; a line joining the two sides would draw angles that are never best.
+void break_at_jumps(SeriesData& s, double min_jump) {
+    SeriesData out = s;
+    out.x.clear(), out.y.clear();
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    auto step = [&](std::size_t k) { return k >= 1 && k < n ? std::fabs(s.y[k] - s.y[k - 1]) : 0.0; };
+    for (std::size_t k = 0; k < n; ++k) {
+        const double d = step(k);
+        if (k > 0 && d > min_jump && d > 4 * step(k - 1) && d > 4 * step(k + 1)) {
+            out.x.push_back(std::nan(""));
+            out.y.push_back(std::nan(""));
+        }
+        out.x.push_back(s.x[k]);
+        out.y.push_back(s.y[k]);
+    }
+    s = std::move(out);
+}
+
 PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
                     std::vector<SweepPoint>& rows_out) {
     const std::vector<double>& zetas = spec.zetas;
@@ -298,13 +337,14 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
                  format_number("%.8f", rmin) + "," + format_number("%.4f", tr) + "," +
                  format_number("%.8f", rrmin) + "\n";
     }
+    break_at_jumps(best, 5);
+    break_at_jumps(best_rigid, 5);
     PanelData panel;
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
     panel.y_title = "vibration angle θ [°]";
     panel.x_min = h.x0, panel.x_max = h.x1, panel.y_min = h.y0, panel.y_max = h.y1;
     panel.heatmap = std::move(h);
     panel.series = {std::move(best), std::move(best_rigid)};
-    panel.legend = "bottom-right";
     rows_out = rows;
     return panel;
 }

@@ -1,5 +1,6 @@
 #include "fv/figure_registry.hpp"
 
+#include "fv/adaptive_sampling.hpp"
 #include "fv/format.hpp"
 #include "fv/steady_state.hpp"
 
@@ -81,8 +82,15 @@ std::string period_source(int steps) {
                      : "one steady-state period from " + ode_solver() + ", sampled at 1024 instants";
 }
 
-std::string zeta_sampling(const std::vector<double>& z) {
+std::string zeta_sampling(const std::vector<double>& z, std::size_t budget = 0) {
     if (z.empty()) return "no ζ values";
+    if (budget > 0)
+        return "ζ from " + number(z.front()) + " to " + number(z.back()) +
+               " sampled adaptively: a start grid of " + std::to_string(z.size()) +
+               " points, then halving the intervals next to every sample further than " +
+               number(AdaptiveSampling{}.tolerance * 100) +
+               "% of the plot from the chord of its neighbours (kinks, ζ = 1 of the rigid model), at most " +
+               std::to_string(budget) + " samples a curve";
     const std::string n = std::to_string(z.size()), range = number(z.front()) + " to " + number(z.back());
     if (z == ratio_zeta_grid())
         return "ζ at " + n + " points from " + range + " (0.02 apart up to 0.5, 0.025 up to 1, 0.1 up to 3)";
@@ -201,7 +209,8 @@ std::string figure_parameters(const FigureSpec& spec) {
     std::string s;
     switch (spec.kind) {
     case FigureKind::ratio_curves:
-        s = ratio_models(spec) + "; " + zeta_sampling(spec.zetas) + "; " + ratio_solvers(spec);
+        s = ratio_models(spec) + "; " + zeta_sampling(spec.zetas, spec.zeta_budget) + "; " +
+            ratio_solvers(spec);
         break;
     case FigureKind::step_view:
         s = "Dahl model, " + params_text(p) + "; " + paper_scheme(spec.steps_per_period) +
@@ -228,7 +237,7 @@ std::string figure_parameters(const FigureSpec& spec) {
     case FigureKind::scene:
         s = "Dahl model, " + params_text(p) + "; top view and force over " +
             period_source(spec.steps_per_period) + "; r_x(ζ) of the Dahl model and the rigid model, " +
-            zeta_sampling(spec.zetas) + ", rigid r_x by " + kQuadrature;
+            zeta_sampling(spec.zetas, spec.zeta_budget) + ", rigid r_x by " + kQuadrature;
         break;
     case FigureKind::map:
         s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + "; r_x from " +

@@ -28,6 +28,13 @@ std::vector<double> ratio_zeta_grid(double zeta_max) {
     return z;
 }
 
+std::vector<double> ratio_zeta_start(double zeta_max) {
+    std::vector<double> z = {0.02};
+    for (int k = 1; k <= 20; ++k) z.push_back(0.05 * k);
+    for (int k = 1; 1 + 0.25 * k <= zeta_max + 1e-9; ++k) z.push_back(1 + 0.25 * k);
+    return z;
+}
+
 FigureSpec map_figure(double rdisp, double i) {
     FigureSpec f;
     f.id = "map";
@@ -56,7 +63,8 @@ FigureSpec scene_figure(const Params& p) {
     f.caption = "One parameter set, " + plain_text(params_title(p)) +
                 ": top view of P and T, the friction force over one steady-state period, and r_x(ζ) with the "
                 "rigid curve and the current point.";
-    f.zetas = ratio_zeta_grid();
+    f.zetas = ratio_zeta_start();
+    f.zeta_budget = kRatioZetaBudget;
     f.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};
     return f;
 }

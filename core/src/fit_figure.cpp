@@ -77,7 +77,6 @@ FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt,
         panel.x_max = zetas.back();
         panel.y_min = 0;
         panel.y_max = 1.05;
-        panel.legend = "bottom-right";
         SeriesData rigid{"rigid (Eq. " + std::string(theta_deg == 0 ? "10" : (theta_deg == 90 ? "11" : "9")) +
                              ")",
                          zetas,

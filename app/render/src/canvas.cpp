@@ -502,6 +502,7 @@ void Canvas::begin(Vec2 logical_size, float pixel_ratio, Color background) {
     m.list.size = logical_size;
     m.list.background = background;
     m.list.commands.clear();
+    m.list.regions.clear();
     m.rec_clips.assign(1, Rect{0, 0, logical_size.x, logical_size.y});
     m.recording = true;
 }
@@ -526,6 +527,22 @@ void Canvas::draw(const DisplayList& list, float pixel_ratio) {
 void Canvas::record(dl::Command c) {
     if (!impl_->recording) throw std::logic_error("Canvas: draw call outside begin()/end()");
     impl_->list.commands.push_back(std::move(c));
+}
+
+Canvas::Mark Canvas::mark() const {
+    return {impl_->list.commands.size(), impl_->list.regions.size()};
+}
+
+void Canvas::rewind(const Mark& m) {
+    if (m.commands > impl_->list.commands.size() || m.regions > impl_->list.regions.size())
+        throw std::logic_error("Canvas::rewind past the end of the recording");
+    impl_->list.commands.erase(impl_->list.commands.begin() + static_cast<std::ptrdiff_t>(m.commands),
+                               impl_->list.commands.end());
+    impl_->list.regions.resize(m.regions);
+}
+
+void Canvas::add_region(std::string role, const Rect& rect, const Mark& since) {
+    impl_->list.regions.push_back({std::move(role), rect, since.commands, impl_->list.commands.size()});
 }
 
 void Canvas::push_clip(const Rect& r, bool intersect) {

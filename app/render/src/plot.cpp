@@ -1,6 +1,7 @@
 #include "fv/gfx/plot.hpp"
 
 #include "fv/gfx/colormap.hpp"
+#include "fv/gfx/display_list.hpp"
 #include "fv/gfx/ticks.hpp"
 
 #include <algorithm>
@@ -86,30 +87,6 @@ float max_label_width(const Canvas& c, const std::vector<Tick>& ticks, float siz
     float w = 0;
     for (const Tick& t : ticks) w = std::max(w, c.measure_text(t.label, size).x);
     return w;
-}
-
-// Cohen–Sutherland-free clipping of one segment (Liang–Barsky) against a rectangle, in doubles.
-bool clip_segment(double& ax, double& ay, double& bx, double& by, double x0, double y0, double x1,
-                  double y1) {
-    double t0 = 0, t1 = 1;
-    const double dx = bx - ax, dy = by - ay;
-    const double p[4] = {-dx, dx, -dy, dy}, q[4] = {ax - x0, x1 - ax, ay - y0, y1 - ay};
-    for (int i = 0; i < 4; ++i) {
-        if (p[i] == 0) {
-            if (q[i] < 0) return false;
-            continue;
-        }
-        const double t = q[i] / p[i];
-        if (p[i] < 0)
-            t0 = std::max(t0, t);
-        else
-            t1 = std::min(t1, t);
-        if (t0 > t1) return false;
-    }
-    const double nax = ax + t0 * dx, nay = ay + t0 * dy;
-    bx = ax + t1 * dx, by = ay + t1 * dy;
-    ax = nax, ay = nay;
-    return true;
 }
 
 // Pixel-space polyline runs of a series, clipped to a margin around the area so far-away
@@ -217,8 +194,10 @@ static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform&
     }
 }
 
+// `reserve`: room kept free right of the data area (and of the colour bar) for a legend outside the axes.
 static Layout compute_layout(const Plot& plot, const std::vector<Series>& series,
-                             const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas) {
+                             const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas,
+                             float reserve = 0) {
     Layout L;
     Range xr = fit_range(series, true, plot.x_axis), yr = fit_range(series, false, plot.y_axis);
     if (hm) {
@@ -233,7 +212,8 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
     const float bottom = bounds.y1 - std::round(kTickLength + 4 + fs * 1.2f +
                                                 (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
     // Room for the last x tick label's overhang, or for the colour bar.
-    const float right = bounds.x1 - std::round(fs * 1.5f) - (hm ? kColorBarSpace : 0.0f);
+    const float right =
+        bounds.x1 - (reserve > 0 ? reserve : std::round(fs * 1.5f)) - (hm ? kColorBarSpace : 0.0f);
     float left_margin = 50;
     // Two passes: the y tick labels' width sets the left margin, which changes the area and,
     // with equal aspect, the ranges and ticks.
@@ -296,8 +276,48 @@ PlotTransform Plot::layout(const Canvas& canvas) const {
     return compute_layout(*this, series_, heatmap_, bounds_, canvas).tf;
 }
 
-void Plot::draw(Canvas& canvas) const {
-    const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas);
+namespace {
+
+constexpr float kLegendPad = 8, kLegendSample = 30, kLegendMargin = 10, kLegendGap = 12;
+
+std::vector<std::size_t> legend_entries(const std::vector<Series>& series) {
+    std::vector<std::size_t> entries;
+    for (std::size_t i = 0; i < series.size(); ++i)
+        if (!series[i].label.empty()) entries.push_back(i);
+    return entries;
+}
+
+// Width and height of the legend box.
+Vec2 legend_size(const Canvas& canvas, const std::vector<Series>& series,
+                 const std::vector<std::size_t>& entries, float fs) {
+    const float row = std::round(fs * 1.6f);
+    float label_w = 0;
+    for (std::size_t i : entries) label_w = std::max(label_w, canvas.measure_text(series[i].label, fs).x);
+    return {std::round(kLegendPad + kLegendSample + 8 + label_w + kLegendPad),
+            std::round(kLegendPad * 0.75f * 2 + row * static_cast<float>(entries.size()))};
+}
+
+} // namespace
+
+PlotTransform Plot::draw(Canvas& canvas) const {
+    const auto entries = legend_entries(series_);
+    const bool has_legend = legend != LegendPosition::None && !entries.empty();
+    bool go_outside = has_legend && legend == LegendPosition::Outside;
+    if (go_outside) return draw_with_legend(canvas, true, go_outside);
+    const Canvas::Mark start = canvas.mark();
+    const PlotTransform tf = draw_with_legend(canvas, false, go_outside);
+    if (!go_outside) return tf;
+    // Every place inside the axes covers data: draw the plot again, narrower, with the legend right of it.
+    canvas.rewind(start);
+    return draw_with_legend(canvas, true, go_outside);
+}
+
+PlotTransform Plot::draw_with_legend(Canvas& canvas, bool outside, bool& redraw_outside) const {
+    redraw_outside = false;
+    const std::vector<std::size_t> entries = legend_entries(series_);
+    const Vec2 lsize = legend_size(canvas, series_, entries, font_size);
+    const Layout L =
+        compute_layout(*this, series_, heatmap_, bounds_, canvas, outside ? lsize.x + 2 * kLegendGap : 0.0f);
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
     const float fs = font_size, title_fs = font_size + 1, head_fs = font_size + 3;
@@ -331,6 +351,7 @@ void Plot::draw(Canvas& canvas) const {
 
     for (const auto& fn : underlays_) fn(canvas, tf);
     // Series, clipped to the data area.
+    const Canvas::Mark data_start = canvas.mark();
     const Rect clip_box = {A.x0 - 100, A.y0 - 100, A.x1 + 100, A.y1 + 100};
     for (std::size_t i = 0; i < series_.size(); ++i) {
         const Series& s = series_[i];
@@ -360,8 +381,13 @@ void Plot::draw(Canvas& canvas) const {
             }
         }
     }
-    for (const auto& fn : overlays_) fn(canvas, tf);
+    PlotTransform otf = tf;
+    otf.first_data_command = data_start.commands;
+    for (const auto& fn : overlays_) fn(canvas, otf);
     canvas.pop_clip();
+    for (const auto& fn : unclipped_overlays_) fn(canvas, otf);
+    canvas.add_region("data", A, data_start);
+    const Canvas::Mark data_end = canvas.mark();
 
     // Frame and outward ticks.
     const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
@@ -412,40 +438,70 @@ void Plot::draw(Canvas& canvas) const {
     if (heatmap_) draw_colorbar(canvas, A, *heatmap_, fs, title_fs);
 
     // Legend.
-    std::vector<std::size_t> entries;
-    for (std::size_t i = 0; i < series_.size(); ++i)
-        if (!series_[i].label.empty()) entries.push_back(i);
-    if (legend == LegendPosition::None || entries.empty()) return;
-    const float row = std::round(fs * 1.6f), sample = 30, pad = 8;
-    float label_w = 0;
-    for (std::size_t i : entries) label_w = std::max(label_w, canvas.measure_text(series_[i].label, fs).x);
-    const float w = std::round(pad + sample + 8 + label_w + pad);
-    const float h = std::round(pad * 0.75f * 2 + row * static_cast<float>(entries.size()));
-    const float m = 10;
-    auto box_at = [&](LegendPosition p) {
-        const bool right = p == LegendPosition::TopRight || p == LegendPosition::BottomRight;
-        const bool top_side = p == LegendPosition::TopRight || p == LegendPosition::TopLeft;
-        const float x0 = right ? A.x1 - m - w : A.x0 + m, y0 = top_side ? A.y0 + m : A.y1 - m - h;
+    if (legend == LegendPosition::None || entries.empty()) return tf;
+    const float row = std::round(fs * 1.6f), sample = kLegendSample, pad = kLegendPad;
+    const float w = lsize.x, h = lsize.y;
+    const float m = kLegendMargin;
+    // Inside the axes: corners, then the middles of the edges.
+    auto box_at = [&](int k) {
+        const float left = A.x0 + m, right = A.x1 - m - w, cx = std::round(0.5f * (A.x0 + A.x1 - w));
+        const float top = A.y0 + m, bottom = A.y1 - m - h, cy = std::round(0.5f * (A.y0 + A.y1 - h));
+        static constexpr int kX[] = {2, 0, 2, 0, 1, 1, 2, 0}, kY[] = {0, 0, 2, 2, 0, 2, 1, 1};
+        const float x0 = kX[k] == 0 ? left : (kX[k] == 1 ? cx : right);
+        const float y0 = kY[k] == 0 ? top : (kY[k] == 1 ? cy : bottom);
         return Rect{x0, y0, x0 + w, y0 + h};
     };
-    LegendPosition pos = legend;
-    if (pos == LegendPosition::Best) {
-        // The corner covering the fewest data points (and segment midpoints) wins; ties keep the order.
-        std::size_t best = std::numeric_limits<std::size_t>::max();
-        for (LegendPosition p : {LegendPosition::TopRight, LegendPosition::TopLeft,
-                                 LegendPosition::BottomRight, LegendPosition::BottomLeft}) {
-            const Rect r = box_at(p);
-            std::size_t hits = 0;
-            for (const Series& s : series_)
-                for (const auto& run : series_runs(s, tf, clip_box))
-                    for (std::size_t k = 0; k < run.size(); ++k) {
-                        hits += r.contains(run[k]);
-                        if (k > 0) hits += r.contains((run[k] + run[k - 1]) * 0.5f);
-                    }
-            if (hits < best) best = hits, pos = p;
+    int pos = 0;
+    switch (legend) {
+    case LegendPosition::TopLeft:
+        pos = 1;
+        break;
+    case LegendPosition::BottomRight:
+        pos = 2;
+        break;
+    case LegendPosition::BottomLeft:
+        pos = 3;
+        break;
+    default:
+        break;
+    }
+    Rect box = box_at(pos);
+    if (outside) {
+        const float x0 = A.x1 + (heatmap_ ? kColorBarSpace : 0.0f) + kLegendGap;
+        box = {x0, A.y0, x0 + w, A.y0 + h};
+    } else if (legend == LegendPosition::Best) {
+        // Everything drawn in the data area is what the legend must not cover; how much it covers counts
+        // lines by their segments.
+        const auto& cmds = canvas.display_list().commands;
+        auto covered = [&](const Rect& r) {
+            std::size_t n = 0;
+            for (std::size_t k = data_start.commands; k < data_end.commands; ++k) {
+                if (!command_touches(cmds[k], r, canvas.fonts(), 2.0f)) continue;
+                const auto* pl = std::get_if<dl::Polyline>(&cmds[k]);
+                if (!pl) {
+                    ++n;
+                    continue;
+                }
+                const float g = 2.0f + 0.5f * pl->stroke.width;
+                for (std::size_t i = 1; i < pl->points.size(); ++i) {
+                    double ax = pl->points[i - 1].x, ay = pl->points[i - 1].y, bx = pl->points[i].x,
+                           by = pl->points[i].y;
+                    n += clip_segment(ax, ay, bx, by, r.x0 - g, r.y0 - g, r.x1 + g, r.y1 + g);
+                }
+            }
+            return n;
+        };
+        std::size_t least = std::numeric_limits<std::size_t>::max();
+        for (int k = 0; k < 8 && least > 0; ++k)
+            if (const std::size_t n = covered(box_at(k)); n < least) least = n, box = box_at(k);
+        // None is free: the plot is drawn again with the legend outside, unless that would take more than a
+        // third of the plot's width (a small panel): then the place covering least.
+        if (least > 0 && w + 2 * kLegendGap <= bounds_.width() / 3) {
+            redraw_outside = true;
+            return tf;
         }
     }
-    const Rect box = box_at(pos);
+    const Canvas::Mark legend_start = canvas.mark();
     canvas.fill_rect(box, colors::white.with_alpha(0.92f));
     canvas.stroke_rect({box.x0 + 0.5f, box.y0 + 0.5f, box.x1 - 0.5f, box.y1 - 0.5f},
                        {Color::hex(0xB0B0B0), 1.0f, LineStyle::Solid});
@@ -471,6 +527,8 @@ void Plot::draw(Canvas& canvas) const {
         canvas.text({box.x0 + pad + sample + 8, y}, series_[i].label, lt);
         y += row;
     }
+    canvas.add_region("legend", box, legend_start);
+    return tf;
 }
 
 } // namespace fv::gfx

@@ -162,6 +162,21 @@ std::vector<dl::TextRun> text_runs(const FontSet& fonts, Vec2 anchor, std::strin
     return runs;
 }
 
+Rect text_bounds(const dl::Text& t, const FontSet& fonts) {
+    const Layout lay = layout(fonts, t.text, t.style.size, t.style.markup);
+    const Placement p = place(fonts, lay, t.anchor, t.style);
+    // The line box (ascent + descent of the main size) in the text's frame, rotated with it.
+    Rect b{1e30f, 1e30f, -1e30f, -1e30f};
+    for (const auto& [u, v] : {std::pair{p.ox, p.oy},
+                               {p.ox + lay.width, p.oy},
+                               {p.ox, p.oy + t.style.size},
+                               {p.ox + lay.width, p.oy + t.style.size}}) {
+        const Vec2 q = p.at(u, v);
+        b = {std::min(b.x0, q.x), std::min(b.y0, q.y), std::max(b.x1, q.x), std::max(b.y1, q.y)};
+    }
+    return b;
+}
+
 void emit_text(ImDrawList& list, const FontSet& fonts, Vec2 anchor, std::string_view text,
                const TextStyle& style) {
     const Layout lay = layout(fonts, text, style.size, style.markup);

@@ -40,12 +40,14 @@ struct FigureSpec {
     std::string title; // drawn above the figure (markup: r_{disp}); names the parameters that distinguish it
     std::string caption; // what it shows, in sentences (ID.json, the README table)
     FigureKind kind = FigureKind::ratio_curves;
-    // ratio_curves (and scene): the curves and the zeta values they are computed at
+    // ratio_curves (and scene): the curves and the zeta values they are computed at; with a zeta_budget, the
+    // start grid of each curve's adaptive sampling (adaptive_sampling.hpp), up to zeta_budget samples a curve
     std::vector<Curve> curves;
     std::vector<double> zetas;
     bool side_force = false; // plot r_y, the mean force across v_b, instead of r_x
     // dahl_curves: the exponents i, one curve each
     std::vector<double> exponents;
+    std::size_t zeta_budget = 0;
     // step_view, period_view, period_force, scene
     Params params;
     int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
@@ -75,6 +77,11 @@ const FigureSpec* find_figure(const std::string& id);
 // to 1 (which is on the grid: the rigid curve has its corner there at theta = 0), then 0.1 up to 3; past 3
 // up to zeta_max (when larger) in at most 40 steps.
 std::vector<double> ratio_zeta_grid(double zeta_max = 3);
+
+// Start grid of the adaptively sampled r_x(zeta) figures: 0.02, then 0.05 apart up to 1 (on the grid: the
+// rigid curve's corner at theta = 0), then 0.25 apart up to zeta_max; and their sample budget per curve.
+std::vector<double> ratio_zeta_start(double zeta_max = 3);
+inline constexpr std::size_t kRatioZetaBudget = 160;
 
 // The (zeta, theta) map of r_x for one r_disp and i: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg].
 FigureSpec map_figure(double rdisp, double i);

@@ -17,7 +17,8 @@ FigureSpec fig5() {
     f.caption =
         "Rigid model, Eq. (9): r_x(ζ) for θ = 0°, 30°, 45°, 60°, 90°. Below ζ ≈ 0.95 parallel vibration "
         "(θ = 0°) reduces friction most; above ζ = 1 perpendicular vibration does.";
-    f.zetas = linspace(0, 2, 201);
+    f.zetas = linspace(0, 2, 41); // 1 is on it: the corner of theta = 0
+    f.zeta_budget = 400;
     for (double th : {0.0, 30.0, 45.0, 60.0, 90.0}) f.curves.push_back({Model::rigid, th * kDeg, 0, 0});
     return f;
 }
@@ -74,7 +75,10 @@ FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
                 " at θ = " + theta_text + "° for r_disp = 0.5, 1, 2, 5, 20, and the rigid model (Eq. " +
                 (theta_deg == 0 ? "10" : "11") + "). Larger r_disp approaches the rigid curve." +
                 disagreement(id);
-    f.zetas = ratio_zeta_grid();
+    // At theta = 0 every r_x is 1 from zeta = 1 on (the body never moves backwards): up to 1.5 shows that
+    // without giving most of the width to it.
+    f.zetas = ratio_zeta_start(theta_deg == 0 ? 1.5 : 3);
+    f.zeta_budget = kRatioZetaBudget;
     for (double r : kRdispFamily) f.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
     f.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});
     return f;

@@ -22,7 +22,8 @@ FigureSpec ry_figure(double rdisp, double i) {
         "mean friction pushes the body towards +y, up to about a quarter of F_c; it vanishes at θ = 0° and "
         "90° and changes sign under θ → 180° − θ (docs/model.md); for large ζ the rigid r_y tends to "
         "−sin 2θ/(4ζ²).";
-    f.zetas = ratio_zeta_grid();
+    f.zetas = ratio_zeta_start();
+    f.zeta_budget = kRatioZetaBudget;
     for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::dahl, th * kPi / 180, rdisp, i});
     for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::rigid, th * kPi / 180, 0, 0});
     return f;

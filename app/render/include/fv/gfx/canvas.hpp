@@ -11,6 +11,7 @@
 #include "fv/gfx/types.hpp"
 
 #include <memory>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,6 +39,17 @@ class Canvas {
     /// Replays any display list through GL into the current framebuffer, `pixel_ratio` framebuffer pixels
     /// per logical unit (what end() does with the recorded one).
     void draw(const DisplayList& list, float pixel_ratio);
+
+    /// A point in the recording: rewind() drops everything recorded after it (commands and regions), so
+    /// that a layout can be redrawn after looking at what it drew. Draw calls between mark() and rewind()
+    /// must leave the clip stack as they found it.
+    struct Mark {
+        std::size_t commands = 0, regions = 0;
+    };
+    Mark mark() const;
+    void rewind(const Mark& m);
+    /// Names the commands recorded since `since` (up to now) as a region (see dl Region).
+    void add_region(std::string role, const Rect& rect, const Mark& since);
 
     /// Clip rectangle stack (scissor per draw). The initial clip is the whole canvas.
     void push_clip(const Rect& r, bool intersect = true);

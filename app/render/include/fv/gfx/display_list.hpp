@@ -132,10 +132,29 @@ using Command = std::variant<FillRect, StrokeRect, Polyline, Circle, FillCircle,
 std::vector<dl::TextRun> text_runs(const FontSet& fonts, Vec2 anchor, std::string_view text,
                                    const TextStyle& style);
 
+/// A named range of commands [first, last) and the rectangle it stands for, recorded by plots for tests and
+/// layout: "data" (a plot's series, markers and annotations, drawn inside `rect`, its data area) and
+/// "legend" (a legend box `rect` and what is drawn in it). Backends ignore regions.
+struct Region {
+    std::string role;
+    Rect rect;
+    std::size_t first = 0, last = 0;
+};
+
 struct DisplayList {
     Vec2 size; ///< Logical size of the page.
     Color background = colors::white;
     std::vector<dl::Command> commands;
+    std::vector<Region> regions;
 };
+
+/// Whether what a command draws (stroke widths, marker and arrow-head extents, text boxes included) comes
+/// within `pad` of the rectangle `r`; clips, images and page-sized fills never do. Text boxes use the
+/// FontSet's metrics.
+bool command_touches(const dl::Command& c, const Rect& r, const FontSet& fonts, float pad = 0);
+/// Clips segment a-b to the rectangle [x0, x1] x [y0, y1] (Liang–Barsky); false when it misses it.
+bool clip_segment(double& ax, double& ay, double& bx, double& by, double x0, double y0, double x1, double y1);
+/// The box a text occupies (its runs, rotated with it), in logical units.
+Rect text_bounds(const dl::Text& t, const FontSet& fonts);
 
 } // namespace fv::gfx

@@ -49,7 +49,12 @@ struct HeatMap {
     std::string label;                     ///< Colour bar title (markup allowed).
 };
 
-enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft };
+/// Best: the first of the corners and edge middles inside the axes (top right, top left, bottom right,
+/// bottom left, top, bottom, right, left) whose box touches nothing drawn in the data area (series samples
+/// and segments, markers, error bars, overlays and their text); outside the axes, right of them, when none is
+/// free (in a plot too small for that, the place covering least). Outside: always there (e.g. for an animated
+/// plot, whose free corner moves).
+enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft, Outside };
 
 /// Data <-> pixel mapping of a laid-out plot.
 struct PlotTransform {
@@ -59,6 +64,9 @@ struct PlotTransform {
     Vec2 to_pixel(double x, double y) const;
     /// Pixels per data unit along x (linear axes; used e.g. for radii in equal-aspect plots).
     float pixels_per_unit_x() const { return static_cast<float>(area.width() / (x1 - x0)); }
+    /// While overlays draw: the index of the first display-list command of the data area (series onwards),
+    /// so that an overlay can place its labels against what is already drawn.
+    std::size_t first_data_command = 0;
 };
 
 class Plot {
@@ -79,24 +87,28 @@ class Plot {
                        SeriesStyle style = {});
     /// Shows a heat map (at most one per plot; linear axes). Unset axis ends fit its extent exactly.
     void set_heatmap(HeatMap h) { heatmap_ = std::move(h); }
-    /// Extra drawing in data space (after the series, clipped to the data area).
-    void add_overlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
-        overlays_.push_back(std::move(fn));
+    /// Extra drawing in data space after the series, clipped to the data area; `clipped` false: not clipped
+    /// (markers on the frame, labels), drawn after the clipped ones. Both count as data for the legend.
+    void add_overlay(std::function<void(Canvas&, const PlotTransform&)> fn, bool clipped = true) {
+        (clipped ? overlays_ : unclipped_overlays_).push_back(std::move(fn));
     }
     /// Drawing behind the series (after the grid and heat map, clipped to the data area): shading.
     void add_underlay(std::function<void(Canvas&, const PlotTransform&)> fn) {
         underlays_.push_back(std::move(fn));
     }
 
-    /// Computes ranges, ticks and margins (needs the canvas for text metrics).
+    /// Computes ranges, ticks and margins (needs the canvas for text metrics), with the legend inside.
     PlotTransform layout(const Canvas& canvas) const;
-    void draw(Canvas& canvas) const;
+    /// Draws the plot; returns the data <-> pixel mapping it used (narrower than layout() when the legend
+    /// went outside). Records the regions "data" and "legend" (display_list.hpp).
+    PlotTransform draw(Canvas& canvas) const;
 
   private:
     Rect bounds_;
     std::vector<Series> series_;
     std::optional<HeatMap> heatmap_;
-    std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_;
+    std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_, unclipped_overlays_;
+    PlotTransform draw_with_legend(Canvas& canvas, bool outside, bool& redraw_outside) const;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> underlays_;
 };
 

@@ -1,0 +1,156 @@
+// Layout of every registered figure, read from its display list (issue #13 items 5, 7):
+// - no legend box touches a plotted sample: a series' samples and the segments between them, markers;
+// - no text reads as a negative zero ("-0", "−0.0000");
+// - format_number never prints a negative zero.
+#include "figures/render_session.hpp"
+
+#include "fv/figure_data.hpp"
+#include "fv/figure_registry.hpp"
+#include "fv/figures.hpp"
+#include "fv/format.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <regex>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace {
+
+using fv::gfx::DisplayList;
+using fv::gfx::Rect;
+using fv::gfx::Vec2;
+
+// Every registered figure with its example inputs (data files relative to the source tree), and the scene at
+// θ = 90° where r_y is zero up to round-off (it printed "r_y = -0.0000" in the title); computed once.
+const std::vector<fv::FigureData>& figures() {
+    static const std::vector<fv::FigureData> out = [] {
+        std::vector<fv::FigureData> v;
+        for (const fv::FigureEntry& e : fv::figure_registry()) {
+            fv::FigureInputs in = e.example;
+            if (!in.data.empty() && in.data.front() != '/')
+                in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
+            v.push_back(fv::compute_figure(e.make(in)));
+        }
+        v.push_back(fv::compute_figure(fv::scene_figure({0.5, fv::kPi / 2, 3.02, 0})));
+        return v;
+    }();
+    return out;
+}
+
+fv::app::RenderSession& session() {
+    static fv::app::RenderSession s = [] {
+        fv::gfx::ContextOptions o;
+        o.backend = fv::gfx::Backend::Headless;
+        o.width = 1280;
+        o.height = 800;
+        return fv::app::RenderSession(o);
+    }();
+    return s;
+}
+
+// Whether a point lies in the rectangle grown by `pad`.
+bool inside(Vec2 p, const Rect& r, float pad) {
+    return p.x >= r.x0 - pad && p.x <= r.x1 + pad && p.y >= r.y0 - pad && p.y <= r.y1 + pad;
+}
+
+// Whether the straight segment a-b passes through the rectangle: walked in steps of a quarter pixel.
+bool segment_enters(Vec2 a, Vec2 b, const Rect& r, float pad) {
+    if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y))
+        return false;
+    const float len = std::hypot(b.x - a.x, b.y - a.y);
+    const int n = 1 + static_cast<int>(len * 4);
+    for (int k = 0; k <= n; ++k) {
+        const float t = static_cast<float>(k) / static_cast<float>(n);
+        if (inside({a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}, r, pad)) return true;
+    }
+    return false;
+}
+
+// What in the data regions of a display list touches `box`: a description, empty when nothing does.
+std::string sample_in(const DisplayList& list, const Rect& box) {
+    for (const fv::gfx::Region& data : list.regions) {
+        if (data.role != "data") continue;
+        for (std::size_t k = data.first; k < data.last; ++k) {
+            const auto& c = list.commands[k];
+            if (const auto* pl = std::get_if<fv::gfx::dl::Polyline>(&c)) {
+                const float w = 0.5f * pl->stroke.width;
+                for (std::size_t i = 0; i < pl->points.size(); ++i) {
+                    const Vec2 a = pl->points[i], b = pl->points[i + 1 < pl->points.size() ? i + 1 : i];
+                    if (segment_enters(a, b, box, w))
+                        return "a line through (" + std::to_string(a.x) + ", " + std::to_string(a.y) + ")";
+                }
+            } else if (const auto* m = std::get_if<fv::gfx::dl::Marker>(&c)) {
+                if (inside(m->center, box, 0.5f * m->style.size))
+                    return "a marker at (" + std::to_string(m->center.x) + ", " +
+                           std::to_string(m->center.y) + ")";
+            }
+        }
+    }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("Legends: no legend box covers a plotted sample, in any registered figure", "[layout][legend]") {
+    int legends = 0;
+    for (const fv::FigureData& fig : figures()) {
+        const DisplayList list = session().record_figure(fig);
+        for (const fv::gfx::Region& r : list.regions) {
+            if (r.role != "legend") continue;
+            ++legends;
+            INFO(fig.id << ": legend at (" << r.rect.x0 << ", " << r.rect.y0 << ")-(" << r.rect.x1 << ", "
+                         << r.rect.y1 << ")");
+            CHECK(sample_in(list, r.rect) == "");
+        }
+    }
+    // Most figures have a legend: the check above ran on them (their number only grows).
+    CHECK(legends >= 12);
+}
+
+TEST_CASE("Legends: the check sees a legend over a curve", "[layout][legend]") {
+    // The same check on a box put over the first plotted sample of Fig. 5 reports it.
+    const DisplayList list = session().record_figure(figures().front());
+    REQUIRE(figures().front().id == "fig5");
+    bool checked = false;
+    for (const fv::gfx::Region& data : list.regions)
+        for (std::size_t k = data.first; k < data.last && !checked && data.role == "data"; ++k)
+            if (const auto* pl = std::get_if<fv::gfx::dl::Polyline>(&list.commands[k]);
+                pl && pl->points.size() > 10) {
+                const Vec2 p = pl->points[5];
+                CHECK(sample_in(list, {p.x - 30, p.y - 10, p.x + 30, p.y + 10}) != "");
+                checked = true;
+            }
+    CHECK(checked);
+}
+
+TEST_CASE("No text of any figure reads as a negative zero", "[layout][minus-zero]") {
+    // A minus (ASCII or U+2212) before a number all of whose digits are 0, e.g. "-0", "−0.0000", "-0.00e+00".
+    const std::regex negative_zero("(^|[^0-9.])(-|\xE2\x88\x92)0+(\\.0*)?([eE][-+]?[0-9]+)?($|[^0-9.])");
+    int texts = 0;
+    for (const fv::FigureData& fig : figures()) {
+        const DisplayList list = session().record_figure(fig);
+        for (const auto& c : list.commands)
+            if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
+                ++texts;
+                INFO(fig.id << ": \"" << t->text << "\"");
+                CHECK_FALSE(std::regex_search(t->text, negative_zero));
+            }
+    }
+    CHECK(texts > 100);
+}
+
+TEST_CASE("format_number: a value that rounds to zero has no sign", "[layout][minus-zero]") {
+    CHECK(fv::format_number("%.4f", -1e-9) == "0.0000");
+    CHECK(fv::format_number("%.5f", -0.0) == "0.00000");
+    CHECK(fv::format_number("%g", -0.0) == "0");
+    CHECK(fv::format_number("%.0f", -0.4) == "0");
+    CHECK(fv::format_number("%.2g", -1e-300) == "-1e-300");
+    // Negative numbers and exponents keep their signs.
+    CHECK(fv::format_number("%.4f", -0.00006) == "-0.0001");
+    CHECK(fv::format_number("%.4f", -0.1553) == "-0.1553");
+    CHECK(fv::format_number("%.0e", 1e-8) == "1e-08");
+    CHECK(fv::format_number("%g", -2.5) == "-2.5");
+}
