@@ -1,9 +1,10 @@
 // render --format png,svg,pdf and --scale through the real executable (issue #13 items 2, 3, 7):
-// - the SVG (rasterised by rsvg-convert) and the PDF (by pdftoppm) show the PNG's picture, within a tolerance
-//   for the two rasterisers' antialiasing and text hinting;
+// - for every registered figure, the SVG (rasterised by rsvg-convert) and the PDF (by pdftoppm) show the
+//   PNG's picture, within a tolerance for the two rasterisers' antialiasing and text hinting;
 // - the PDF's text is text (pdftotext finds the axis labels) in embedded DejaVu Sans, and only images are
 //   images (pdfimages);
-// - --size 2Wx2H --scale 2, averaged over 2x2 pixels, is the WxH picture; pages get the logical size;
+// - for every registered figure, --size 2Wx2H --scale 2, averaged over 2x2 pixels, is the WxH picture;
+//   pages get the logical size;
 // - bad --format / --scale / page sizes exit 2 with one line naming the allowed values, nothing written.
 #include "fv/gfx/compare.hpp"
 #include "fv/gfx/png.hpp"
@@ -82,17 +83,38 @@ int count_files(const std::string& dir) {
 constexpr int kChannel = 64;
 constexpr double kShare = 0.004;
 
-const char* const kFigures[] = {"fig5", "fig8", "fig12", "fig15", "map"};
+// Every registered figure: the ids of `render --list` (ID<TAB>TITLE lines).
+const std::vector<std::string>& figure_ids() {
+    static const std::vector<std::string> ids = [] {
+        const Run r = render("--list");
+        REQUIRE(r.code == 0);
+        std::vector<std::string> v;
+        std::istringstream lines(r.out);
+        for (std::string line; std::getline(lines, line);)
+            if (!line.empty()) v.push_back(line.substr(0, line.find('\t')));
+        REQUIRE(v.size() >= 16);
+        return v;
+    }();
+    return ids;
+}
 
-// Renders the figures once in all three formats at 960x600 (shared by the tests below).
+// All of them (fig19 with the synthetic example data), as `render --figure all` draws them.
+std::string all_figures(const std::string& args) {
+    return render("--figure all --data '" + std::string(FV_SOURCE_DIR) +
+                  "/tests/data/synthetic_two_angles_rdisp2_i0.csv' --amplitude 0.7 " + args)
+        .err;
+}
+
+// Renders every figure once in all three formats at 960x600 (shared by the tests below).
 const std::string& rendered() {
     static const std::string dir = [] {
         const std::string d = scratch("all");
-        std::string ids;
-        for (const char* id : kFigures) ids += (ids.empty() ? "" : ",") + std::string(id);
-        const Run r = render("--figure " + ids + " --format png,svg,pdf --size 960x600 --out " + d);
-        INFO(r.err);
-        REQUIRE(r.code == 0);
+        INFO(all_figures("--format png,svg,pdf --size 960x600 --out " + d));
+        for (const std::string& id : figure_ids())
+            for (const char* ext : {".png", ".svg", ".pdf"}) {
+                INFO(id << ext);
+                REQUIRE_FALSE(slurp(d + "/" + id + ext).empty());
+            }
         return d;
     }();
     return dir;
@@ -102,24 +124,30 @@ const std::string& rendered() {
 
 TEST_CASE("render --format: the SVG and the PDF, rasterised, show the PNG's picture", "[render][formats]") {
     const std::string& d = rendered();
-    for (const char* id : kFigures) {
+    for (const std::string& id : figure_ids()) {
         const std::string base = d + "/" + id;
         REQUIRE(sh("rsvg-convert -w 960 -h 600 -b white '" + base + ".svg' -o '" + base + ".svg.png'").code ==
                 0);
-        REQUIRE(sh("pdftoppm -r 72 -png -singlefile '" + base + ".pdf' '" + base + ".pdf'").code == 0);
+        // pdftoppm's glyphs at 72 dpi are hinted to whole pixels (the GL atlas and rsvg-convert are not):
+        // rasterised at 144 dpi and averaged over 2x2 pixels, text compares like lines do.
+        REQUIRE(sh("pdftoppm -r 144 -png -singlefile '" + base + ".pdf' '" + base + ".pdf2x'").code == 0);
+        write_png(base + ".pdf.png", half(load_png(base + ".pdf2x.png")));
         const fv::gfx::Image png = load_png(base + ".png");
         for (const char* kind : {"svg", "pdf"}) {
             const fv::gfx::Image other = load_png(base + "." + kind + ".png");
-            const auto cmp = fv::gfx::compare_images(other, png, kChannel, kShare);
+            // poppler draws the round dots of dotted lines a little larger than cairo's SVG and GL do: a
+            // figure with long dotted curves (fig19) differs on ~0.5% of its pixels there.
+            const double share = std::string(kind) == "pdf" ? 1.5 * kShare : kShare;
+            const auto cmp = fv::gfx::compare_images(other, png, kChannel, share);
             INFO(id << "." << kind << ": " << cmp.differing_share * 100 << "% of pixels differ by more than "
-                    << kChannel << " (allowed " << kShare * 100 << "%)");
+                    << kChannel << " (allowed " << share * 100 << "%)");
             CHECK(cmp.passed);
             if (!cmp.passed && !cmp.diff.empty()) write_png(base + "." + kind + ".diff.png", cmp.diff);
         }
     }
     // The tolerance does not let another picture through.
-    const auto wrong =
-        fv::gfx::compare_images(load_png(d + "/fig5.pdf.png"), load_png(d + "/fig12.png"), kChannel, kShare);
+    const auto wrong = fv::gfx::compare_images(load_png(d + "/fig5.pdf.png"), load_png(d + "/fig12.png"),
+                                               kChannel, 1.5 * kShare);
     CHECK_FALSE(wrong.passed);
 }
 
@@ -154,12 +182,12 @@ TEST_CASE("render --format pdf: real text in embedded DejaVu Sans, no raster for
 
 TEST_CASE("render --scale: 2x the size at scale 2 is the same picture at twice the resolution",
           "[render][scale]") {
-    const std::string one = scratch("scale1"), two = scratch("scale2");
-    REQUIRE(render("--figure fig8,fig12 --size 960x600 --out " + one).code == 0);
-    const Run r = render("--figure fig8,fig12 --size 1920x1200 --scale 2 --format png,svg,pdf --out " + two);
-    INFO(r.err);
-    REQUIRE(r.code == 0);
-    for (const char* id : {"fig8", "fig12"}) {
+    // Every figure: the 1x pictures are those of the format test.
+    const std::string& one = rendered();
+    const std::string two = scratch("scale2");
+    INFO(all_figures("--size 1920x1200 --scale 2 --out " + two));
+    REQUIRE(render("--figure fig8 --size 1920x1200 --scale 2 --format svg,pdf --out " + two).code == 0);
+    for (const std::string& id : figure_ids()) {
         const fv::gfx::Image big = load_png(two + "/" + id + ".png");
         REQUIRE(big.width == 1920);
         REQUIRE(big.height == 1200);
