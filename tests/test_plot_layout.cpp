@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 #include <string>
@@ -102,7 +103,7 @@ TEST_CASE("Legends: no legend box covers a plotted sample, in any registered fig
             if (r.role != "legend") continue;
             ++legends;
             INFO(fig.id << ": legend at (" << r.rect.x0 << ", " << r.rect.y0 << ")-(" << r.rect.x1 << ", "
-                         << r.rect.y1 << ")");
+                        << r.rect.y1 << ")");
             CHECK(sample_in(list, r.rect) == "");
         }
     }
@@ -112,8 +113,10 @@ TEST_CASE("Legends: no legend box covers a plotted sample, in any registered fig
 
 TEST_CASE("Legends: the check sees a legend over a curve", "[layout][legend]") {
     // The same check on a box put over the first plotted sample of Fig. 5 reports it.
-    const DisplayList list = session().record_figure(figures().front());
-    REQUIRE(figures().front().id == "fig5");
+    const auto fig5 = std::find_if(figures().begin(), figures().end(),
+                                   [](const fv::FigureData& f) { return f.id == "fig5"; });
+    REQUIRE(fig5 != figures().end());
+    const DisplayList list = session().record_figure(*fig5);
     bool checked = false;
     for (const fv::gfx::Region& data : list.regions)
         for (std::size_t k = data.first; k < data.last && !checked && data.role == "data"; ++k)

@@ -3,6 +3,8 @@
 #include "fv/gfx/plot.hpp"
 
 #include <cmath>
+#include <functional>
+#include <variant>
 
 namespace fv::app {
 namespace {
@@ -65,7 +67,9 @@ class LabelPlacer {
   public:
     LabelPlacer(gfx::Canvas& c, const gfx::PlotTransform& tf) : canvas_(c), tf_(tf) {}
 
-    void place(const std::string& text, const std::vector<LabelCandidate>& candidates) {
+    // `own`: the shape the label names (its marker, arrow or segment), which it may touch.
+    void place(const std::string& text, const std::vector<LabelCandidate>& candidates,
+               const std::function<bool(const gfx::dl::Command&)>& own) {
         if (text.empty() || candidates.empty()) return;
         const auto& cmds = canvas_.display_list().commands;
         double best_score = 1e300;
@@ -78,7 +82,7 @@ class LabelPlacer {
             if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
             for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
                 const auto& cmd = cmds[k];
-                if (!gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
+                if (own(cmd) || !gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
                 // Text on text or on a marker is unreadable; crossing a line is only untidy.
                 const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
                                    std::holds_alternative<gfx::dl::Marker>(cmd) ||
@@ -104,6 +108,10 @@ class LabelPlacer {
     std::vector<gfx::Rect> placed_;
     std::vector<gfx::dl::Text> pending_;
 };
+
+bool same(gfx::Vec2 a, gfx::Vec2 b) {
+    return std::fabs(a.x - b.x) < 1e-3f && std::fabs(a.y - b.y) < 1e-3f;
+}
 
 // The eight places around a point, at `r` from it, starting with direction (dx, dy) and turning away from it.
 std::vector<LabelCandidate> around(gfx::Vec2 at, float dx, float dy, float size, gfx::Color color) {
@@ -236,7 +244,11 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
                 const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
                 placer.place(p.label,
-                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15, gfx::colors::text));
+                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15, gfx::colors::text),
+                             [&](const gfx::dl::Command& cmd) {
+                                 const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
+                                 return m && same(m->center, at);
+                             });
             }
             for (const ArrowData& a : pd->arrows) {
                 const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
@@ -253,7 +265,10 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                         cands.push_back(
                             {{m.x + nx * 9, m.y + ny * 9}, label_style(14, ink_color(a.ink, 0), nx, ny)});
                     }
-                placer.place(a.label, cands);
+                placer.place(a.label, cands, [&](const gfx::dl::Command& cmd) {
+                    const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
+                    return ar && same(ar->from, from) && same(ar->to, to);
+                });
             }
             for (const SegmentData& s : pd->segments) {
                 if (s.label.empty()) continue;
@@ -279,7 +294,10 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                                          label_style(15, label_color(s.ink), side * nx, side * ny)});
                     }
                 }
-                placer.place(s.label, cands);
+                placer.place(s.label, cands, [&](const gfx::dl::Command& cmd) {
+                    const auto* pl = std::get_if<gfx::dl::Polyline>(&cmd);
+                    return pl && pl->points.size() == 2 && same(pl->points[0], a) && same(pl->points[1], b);
+                });
             }
             placer.draw();
         },
