@@ -244,7 +244,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
                 const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
                 placer.place(p.label,
-                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15, gfx::colors::text),
+                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * pd->text_scale,
+                                    gfx::colors::text),
                              [&](const gfx::dl::Command& cmd) {
                                  const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
                                  return m && same(m->center, at);
@@ -256,14 +257,21 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 if (len < 2 || a.label.empty()) continue;
                 const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
                 // Beyond the head, then beside the head or the shaft on either side.
-                std::vector<LabelCandidate> cands = {
-                    {{to.x + ux * 6, to.y + uy * 6}, label_style(14, ink_color(a.ink, 0), ux, uy)}};
+                // Centred above or below the head first when asked (arrows along one line).
+                const float size = 14 * pd->text_scale;
+                std::vector<LabelCandidate> cands;
+                if (a.label_dy != 0)
+                    cands.push_back(
+                        {{to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)},
+                         label_style(size, ink_color(a.ink, 0), 0, static_cast<float>(a.label_dy))});
+                cands.push_back(
+                    {{to.x + ux * 6, to.y + uy * 6}, label_style(size, ink_color(a.ink, 0), ux, uy)});
                 for (float along : {0.85f, 0.5f})
                     for (float side : {1.f, -1.f}) {
                         const float nx = -uy * side, ny = ux * side;
                         const gfx::Vec2 m = from + (to - from) * along;
                         cands.push_back(
-                            {{m.x + nx * 9, m.y + ny * 9}, label_style(14, ink_color(a.ink, 0), nx, ny)});
+                            {{m.x + nx * 9, m.y + ny * 9}, label_style(size, ink_color(a.ink, 0), nx, ny)});
                     }
                 placer.place(a.label, cands, [&](const gfx::dl::Command& cmd) {
                     const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
@@ -290,8 +298,9 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                     if (side < 0 && s.label_side != 0) break;
                     for (float at : {s.label_at, 0.3f, 0.7f}) {
                         const gfx::Vec2 q = a + (b - a) * at;
-                        cands.push_back({{q.x + side * nx * 8, q.y + side * ny * 8},
-                                         label_style(15, label_color(s.ink), side * nx, side * ny)});
+                        cands.push_back(
+                            {{q.x + side * nx * 8, q.y + side * ny * 8},
+                             label_style(15 * pd->text_scale, label_color(s.ink), side * nx, side * ny)});
                     }
                 }
                 placer.place(s.label, cands, [&](const gfx::dl::Command& cmd) {

@@ -162,7 +162,8 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     };
     for (const SeriesData& s : panel.series)
         for (std::size_t k = 0; k < s.x.size(); ++k) take(s.x[k], s.y[k]);
-    const double half_h = (1 + (rigid ? 0.5 : p.zss())) * 1.2 * view.zoom;
+    // The spring's zigzag scales with the view: about half the trails' height, as the frame below shows it.
+    const double half_h = std::max(0.5 * (y1 - y0), 0.5) * 1.08 * view.zoom;
     // What moves, drawn behind the trails' heads (issue #14 item 1): the body around P (it carries P and
     // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
     // the asperity as a spring from its tip T (held by the fixed plane while it sticks) to P, green while it
