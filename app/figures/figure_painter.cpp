@@ -273,6 +273,12 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                         cands.push_back(
                             {{m.x + nx * 9, m.y + ny * 9}, label_style(size, ink_color(a.ink, 0), nx, ny)});
                     }
+                // Crowded (a short arrow among other labels): the same places further out.
+                cands.push_back(
+                    {{to.x + ux * 20, to.y + uy * 20}, label_style(size, ink_color(a.ink, 0), ux, uy)});
+                for (float side : {1.f, -1.f})
+                    cands.push_back({{to.x - uy * side * 22, to.y + ux * side * 22},
+                                     label_style(size, ink_color(a.ink, 0), -uy * side, ux * side)});
                 placer.place(a.label, cands, [&](const gfx::dl::Command& cmd) {
                     const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
                     return ar && same(ar->from, from) && same(ar->to, to);
