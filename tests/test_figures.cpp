@@ -169,9 +169,14 @@ TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zet
     // The jump from 0 to 90 degrees is not drawn as a line: the curve breaks (a NaN sample) between them.
     CHECK(std::count_if(rigid_best.y.begin(), rigid_best.y.end(), [](double v) { return std::isnan(v); }) ==
           1);
-    // Grid cells hold the Dahl r_x at (zeta, theta): spot-check one against a direct call.
-    const double direct = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}).rx;
-    CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(direct).margin(1e-6));
+    // Grid cells hold the Dahl r_x at (zeta, theta) at the map's tolerance, 1e-6: a cell is the single point
+    // solved at that tolerance (`ratio --tolerance 1e-6`), to the bit, and within 1e-6 of the default solve.
+    fv::SteadyOptions o;
+    o.ode_tolerance = fv::kMapTolerance;
+    const double direct = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}, o).rx;
+    CHECK(panel.heatmap->values[9 * 5 + 1] == direct);
+    const double fine = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}).rx;
+    CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(fine).margin(1e-6));
     // The best-angle table: a header and one row per zeta.
     REQUIRE(d.tables.size() == 2);
     CHECK(std::count(d.tables[1].text.begin(), d.tables[1].text.end(), '\n') == 6);

@@ -52,6 +52,10 @@ void add_solver_options(CLI::App& cmd, SolverArgs& s) {
            "--steps-per-period", s.steps_per_period,
            "run the paper's scheme exactly as printed with N steps per period (implies --scheme paper)")
         ->check(integer_in(kMinSteps, kMaxSteps));
+    cmd.add_option("--tolerance", s.tolerance,
+                   "ode scheme: the target for |r - r(dtau -> 0)| of r_x and r_y (default 1e-8; the (zeta, "
+                   "theta) map uses 1e-6, so `--tolerance 1e-6` gives its cells)")
+        ->check(number_in(kToleranceRange));
 }
 
 SteadyOptions solver_options(const SolverArgs& s) {
@@ -61,6 +65,11 @@ SteadyOptions solver_options(const SolverArgs& s) {
     SteadyOptions o;
     o.scheme = s.scheme == "paper" || s.steps_per_period > 0 ? Scheme::paper : Scheme::ode;
     o.steps_per_period = s.steps_per_period;
+    if (s.tolerance > 0) {
+        if (o.scheme == Scheme::paper)
+            throw UsageError("--tolerance belongs to --scheme ode; allowed: drop it, or use --scheme ode");
+        o.ode_tolerance = s.tolerance;
+    }
     return o;
 }
 

@@ -16,12 +16,14 @@ namespace fv::cli {
 // The parameters' ranges (kZetaRange, kThetaRange, kRdispRange, kIRange) are core's table,
 // fv/param_ranges.hpp, shared with the data reader and the app.
 inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
-inline constexpr int kMaxSweepPoints = 100000; // COUNT of a sweep's FROM:TO:COUNT
+inline constexpr int kMaxSweepPoints = 100000;       // COUNT of a sweep's FROM:TO:COUNT
+inline constexpr Range kToleranceRange{1e-12, 1e-4}; // --tolerance of the ode scheme
 
 // --scheme ode|paper and --steps-per-period N (which means the paper's scheme as printed).
 struct SolverArgs {
     std::string scheme = "ode";
     int steps_per_period = 0;
+    double tolerance = 0; // --tolerance: the ode scheme's target; 0: the default (SteadyOptions)
     CLI::Option* scheme_opt = nullptr;
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& s);

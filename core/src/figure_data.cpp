@@ -292,7 +292,9 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
     std::vector<double> thetas;
     for (int j = 0; j < nth; ++j) thetas.push_back(j * dth * kPi / 180);
     // Every grid point on its own, spread over the cores.
-    const auto rows = sweep(Model::dahl, zetas, thetas, {spec.params.rdisp}, {spec.params.i}, {}, threads);
+    SteadyOptions opt;
+    if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
+    const auto rows = sweep(Model::dahl, zetas, thetas, {spec.params.rdisp}, {spec.params.i}, opt, threads);
     const std::size_t nz = zetas.size();
     HeatmapData h;
     h.nx = static_cast<int>(nz);

@@ -64,9 +64,9 @@ template <class F> std::string distinct(const std::vector<Curve>& curves, Model 
     return s;
 }
 
-std::string ode_solver() {
+std::string ode_solver(double tol = 0) {
     return "the continuous-time steady-state solver (Radau IIA, Newton on the period map), tolerance " +
-           tolerance(SteadyOptions{}.ode_tolerance) + " on r_x and r_y";
+           tolerance(tol > 0 ? tol : SteadyOptions{}.ode_tolerance) + " on r_x and r_y";
 }
 const char* kQuadrature = "adaptive Gauss–Kronrod quadrature of Eq. (9), tolerance 1e-13";
 
@@ -241,7 +241,7 @@ std::string figure_parameters(const FigureSpec& spec) {
         break;
     case FigureKind::map:
         s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + "; r_x from " +
-            ode_solver() + " on a grid of " + zeta_sampling(spec.zetas) + " × θ at " +
+            ode_solver(spec.ode_tolerance) + " on a grid of " + zeta_sampling(spec.zetas) + " × θ at " +
             std::to_string(spec.theta_count) + " evenly spaced angles from 0° to " +
             number(spec.theta_max_deg) +
             "°; θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours, for the rigid "

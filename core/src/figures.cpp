@@ -43,6 +43,7 @@ FigureSpec map_figure(double rdisp, double i) {
     f.zetas = linspace(0.02, 3, 200);
     f.theta_count = 91;
     f.theta_max_deg = 90;
+    f.ode_tolerance = kMapTolerance;
     f.title = "friction ratio r_{x}(ζ, θ), Dahl model, r_{disp} = " + format_number("%g", rdisp) +
               ", i = " + format_number("%g", i);
     f.caption =

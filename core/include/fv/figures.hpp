@@ -35,6 +35,8 @@ struct Curve {
     double i = 1;     // Dahl only
 };
 
+inline constexpr double kMapTolerance = 1e-6;
+
 struct FigureSpec {
     std::string id;    // "fig10"
     std::string title; // drawn above the figure (markup: r_{disp}); names the parameters that distinguish it
@@ -60,6 +62,10 @@ struct FigureSpec {
     // map: theta from 0 to theta_max_deg in theta_count steps (zetas as above; params.rdisp, params.i)
     int theta_count = 91;
     double theta_max_deg = 90;
+    // The Dahl solver's target |r - r(dtau -> 0)| (SteadyOptions::ode_tolerance); 0: the default. The map
+    // uses kMapTolerance: a colour map needs no more, and it is the 1e-6 (ratio --tolerance 1e-6
+    // gives every cell).
+    double ode_tolerance = 0;
     // measurements: the figure, computed (data read and fitted) when the spec was made, the fit behind it,
     // and the sentence naming its parameters (figure_parameters)
     std::shared_ptr<const FigureData> precomputed;
