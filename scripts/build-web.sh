@@ -44,7 +44,8 @@ imgui_dir=$(cd "$imgui_dir" && pwd)
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 emcmake cmake -S . -B "$work/cmake" -DCMAKE_BUILD_TYPE=Release -DFV_WERROR=ON -DBUILD_TESTING=OFF \
-  -DEigen3_DIR=/usr/share/eigen3/cmake -DFV_IMGUI_SOURCE_DIR="$imgui_dir" "${launcher[@]}" >/dev/null
+  -DEigen3_DIR=/usr/share/eigen3/cmake \
+  -DFV_IMGUI_SOURCE_DIR="$imgui_dir" "${launcher[@]}" >/dev/null
 cmake --build "$work/cmake" -j"$(nproc)"
 
 mkdir -p "$out"

@@ -192,8 +192,11 @@ int run_gui(const GuiOptions& o) {
         const double ms = Ms(Clock::now() - t0).count();
         if (o.bench_frames > 0)
             stats.record(ms, Ms(t_ui - t0).count(), Ms(t_layout - t_ui).count(), Ms(t_gl - t_layout).count());
-        // Without vsync (e.g. Xvfb) do not spin: about 60 frames per second are plenty.
+            // Without vsync (e.g. Xvfb) do not spin: about 60 frames per second are plenty. (The web platform
+            // paces its frames in present(), where it hands control back to the browser.)
+#if !defined(__EMSCRIPTEN__)
         if (real_time && ms < 15) std::this_thread::sleep_for(Ms(15 - ms));
+#endif
     }
     const gfx::Size fb = session.context().framebuffer_size();
     stats.print(fb.width, fb.height, session.pixel_ratio(), session.context().describe());

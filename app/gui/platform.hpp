@@ -60,7 +60,8 @@ class Platform {
     Platform() = default;
 };
 
-// The names make_platform() takes: window, headless, auto (a window when a display is there, else headless).
+// The names make_platform() takes: window, headless, auto (a window when a display is there, else headless);
+// in the browser build web and auto (= web).
 const std::vector<std::string_view>& platform_names();
 // The one place a platform is chosen. Throws std::invalid_argument for an unknown name (the message lists
 // the names) and std::runtime_error (one line) when the platform cannot start (no display, no GL).
@@ -68,8 +69,10 @@ std::unique_ptr<Platform> make_platform(std::string_view name, const PlatformOpt
 // What "auto" picks here: "window" when DISPLAY or WAYLAND_DISPLAY is set, else "headless".
 std::string_view resolve_platform_name(std::string_view name);
 
-// The two adapters (platform_window.cpp, platform_headless.cpp); use make_platform().
+// The adapters (platform_window.cpp, platform_headless.cpp; platform_web.cpp in the browser build, where it
+// is the only one); use make_platform().
 std::unique_ptr<Platform> make_window_platform(const PlatformOptions& options);
 std::unique_ptr<Platform> make_headless_platform(const PlatformOptions& options);
+std::unique_ptr<Platform> make_web_platform(const PlatformOptions& options);
 
 } // namespace fv::app

@@ -37,7 +37,12 @@ RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bo
     return out;
 }
 
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+// The browser build without pthreads: no thread; request() computes at once (see ratio_worker.hpp).
+RatioWorker::RatioWorker() = default;
+#else
 RatioWorker::RatioWorker() : thread_([this] { run(); }) {}
+#endif
 
 RatioWorker::~RatioWorker() {
     {
@@ -45,7 +50,7 @@ RatioWorker::~RatioWorker() {
         stop_ = true;
     }
     cv_.notify_all();
-    thread_.join();
+    if (thread_.joinable()) thread_.join();
 }
 
 void RatioWorker::request(const RatioRequest& r) {
@@ -58,6 +63,10 @@ void RatioWorker::request(const RatioRequest& r) {
         ++generation_;
     }
     cv_.notify_all();
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    pending_.reset();
+    work(r, generation_);
+#endif
 }
 
 std::optional<RatioCurves> RatioWorker::latest() const {
@@ -88,29 +97,33 @@ void RatioWorker::run() {
             pending_.reset();
             gen = generation_;
         }
-        // A newer request makes this one moot: check between points and give up early.
-        auto outdated = [&] { return generation_ != gen; };
-        RatioCurves out = compute_ratio_curves(req, outdated);
-        bool aborted = outdated();
-        // The map only changes with r_disp and i: keep the previous one when those did not move.
-        if (!aborted && req.map && req.model == Model::dahl) {
-            {
-                std::lock_guard<std::mutex> lock(mutex_);
-                if (result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
-                    result_->request.params.i == req.params.i)
-                    out.map = result_->map;
-            }
-            if (!out.map) {
-                FigureData f = compute_figure(map_figure(req.params.rdisp, req.params.i), 1);
-                out.map = std::move(f.panels.front());
-            }
-            aborted = outdated();
-        }
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (!aborted) result_ = std::move(out);
-        if (!pending_) busy_ = false;
-        cv_.notify_all();
+        work(req, gen);
     }
+}
+
+void RatioWorker::work(const RatioRequest& req, std::uint64_t gen) {
+    // A newer request makes this one moot: check between points and give up early.
+    auto outdated = [&] { return generation_ != gen; };
+    RatioCurves out = compute_ratio_curves(req, outdated);
+    bool aborted = outdated();
+    // The map only changes with r_disp and i: keep the previous one when those did not move.
+    if (!aborted && req.map && req.model == Model::dahl) {
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
+                result_->request.params.i == req.params.i)
+                out.map = result_->map;
+        }
+        if (!out.map) {
+            FigureData f = compute_figure(map_figure(req.params.rdisp, req.params.i), 1);
+            out.map = std::move(f.panels.front());
+        }
+        aborted = outdated();
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!aborted) result_ = std::move(out);
+    if (!pending_) busy_ = false;
+    cv_.notify_all();
 }
 
 } // namespace fv::app

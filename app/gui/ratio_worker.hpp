@@ -1,5 +1,6 @@
 // Recomputes the r_x(zeta) curves and the steady-state readouts on a background thread, so that the
 // window never waits for them. Requests supersede each other: a slider drag only ever costs the last one.
+// The browser build without pthreads (a plain static site) has no thread: request() computes at once.
 #pragma once
 
 #include "fv/figure_data.hpp"
@@ -68,6 +69,8 @@ class RatioWorker {
 
   private:
     void run();
+    // Computes one request (generation `gen`) and publishes it unless a newer request came meanwhile.
+    void work(const RatioRequest& req, std::uint64_t gen);
 
     mutable std::mutex mutex_;
     mutable std::condition_variable cv_;

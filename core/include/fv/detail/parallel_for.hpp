@@ -11,6 +11,9 @@ namespace fv {
 
 template <class F> void parallel_for(int count, F&& f, int threads) {
     if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    threads = 1; // the browser build without pthreads (a plain static site): no threads to start
+#endif
     threads = std::min(threads, count);
     if (threads <= 1) {
         for (int k = 0; k < count; ++k) f(k);

@@ -1,0 +1,82 @@
+// The web platform (browser build only): the page's canvas as a GLFW window through emscripten's GLFW (WebGL
+// 2; the GL context is gfx::WindowContext, as on the desktop) with Dear ImGui's GLFW input backend. The app's
+// loop (run_gui) is a plain loop; present() hands control back to the browser once per frame
+// (emscripten_sleep under ASYNCIFY), so the page stays responsive and the canvas is shown.
+#include "platform.hpp"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <emscripten.h>
+#include <imgui.h>
+
+namespace fv::app {
+namespace {
+
+gfx::WindowOptions canvas_options(const PlatformOptions& o) {
+    gfx::WindowOptions w;
+    w.title = o.title;
+    w.width = o.width > 0 ? o.width : 1280;
+    w.height = o.height > 0 ? o.height : 800;
+    w.scale_to_monitor = false;
+    return w;
+}
+
+class WebPlatform final : public Platform {
+  public:
+    explicit WebPlatform(const PlatformOptions& o) : ctx_(canvas_options(o)) {}
+    ~WebPlatform() override { disconnect_imgui(); }
+
+    std::string_view name() const override { return "web"; }
+    gfx::GpuContext& context() override { return ctx_; }
+    // emscripten's GLFW sizes the canvas in CSS pixels: one pixel per logical unit.
+    float pixel_ratio() const override { return 1.0f; }
+    bool interactive() const override { return true; }
+    void connect_imgui() override {
+        if (!connected_) connected_ = ImGui_ImplGlfw_InitForOpenGL(ctx_.native(), true);
+    }
+    void disconnect_imgui() override {
+        if (connected_) ImGui_ImplGlfw_Shutdown();
+        connected_ = false;
+    }
+    PlatformEvents poll() override {
+        ctx_.poll_events();
+        const bool f1 = glfwGetKey(ctx_.native(), GLFW_KEY_F1) == GLFW_PRESS;
+        const bool pressed = f1 && !f1_down_;
+        f1_down_ = f1;
+        return {false, ctx_.take_dropped_paths(), pressed};
+    }
+    void imgui_new_frame(gfx::Vec2 logical) override {
+        ImGui_ImplGlfw_NewFrame();
+        ImGuiIO& io = ImGui::GetIO();
+        // Under Chromium's --virtual-time-budget (the tests) the clock stands still: ImGui needs time to
+        // pass.
+        if (!(io.DeltaTime > 0)) io.DeltaTime = 1.0f / 60.0f;
+        io.DisplaySize = ImVec2(logical.x, logical.y);
+        io.DisplayFramebufferScale = ImVec2(1, 1);
+    }
+    // Back to the browser, which shows the frame and delivers input, for what is left of 1/60 s since the
+    // last frame (at least 1 ms). A timer, not a busy wait: under a virtual time budget (the tests) the
+    // page's clock moves only with its timers.
+    void present() override {
+        ctx_.present();
+        const double now = emscripten_get_now();
+        const double wait = last_present_ > 0 ? 1000.0 / 60 - (now - last_present_) : 1000.0 / 60;
+        emscripten_sleep(static_cast<unsigned>(wait > 1 ? wait : 1));
+        last_present_ = emscripten_get_now();
+    }
+
+  private:
+    gfx::WindowContext ctx_;
+    bool connected_ = false;
+    bool f1_down_ = false;
+    double last_present_ = 0; // emscripten_get_now() after the last frame, ms
+};
+
+} // namespace
+
+std::unique_ptr<Platform> make_web_platform(const PlatformOptions& options) {
+    return std::make_unique<WebPlatform>(options);
+}
+
+} // namespace fv::app
