@@ -17,6 +17,7 @@ PACKAGES=(
   bc                                        # scripts/bench.sh arithmetic
   clang libclang-rt-14-dev                  # scripts/fuzz.sh (libFuzzer, ASan/UBSan runtimes for clang 14)
   emscripten nodejs dpkg-dev                # scripts/build-web.sh: emcc, node for the web tests, apt-get source
+  fonttools                                 # scripts/build-web.sh: pyftsubset (DejaVu Sans cut to the atlas)
   chromium                                  # web tests: pages screenshot in headless Chromium (software WebGL 2)
 )
 

@@ -138,6 +138,7 @@ int run_gui(const GuiOptions& o) {
         if (o.bench_frames > 0) queued.params = bench_params(app.ui().params, frame);
         const AppState::Actions act = app.sync(queued, scripted);
         if (act.quit) break;
+        if (o.on_state) o.on_state(app.ui());
         queued = UiEdits{};
         if (act.open_export_dialog) export_dialog.open_requested = true;
         if (act.export_animation) {

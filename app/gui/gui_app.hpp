@@ -8,6 +8,7 @@
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -30,6 +31,9 @@ struct GuiOptions {
     // File > Export animation… and the script's `animate`: what writes the file (the command line passes
     // app/anim's exporter); empty: the menu item says it is not available.
     AnimationExporter animation_exporter;
+    // Called once a frame after that frame's edits took effect (the browser page writes the state into its
+    // address as a share link); may be empty.
+    std::function<void(const UiState&)> on_state;
 };
 
 // Returns the process exit code. Throws std::invalid_argument for an unknown platform and
