@@ -5,7 +5,11 @@
 #include "fv/gfx/gl_api.hpp"
 #include "fv/gfx/shader_program.hpp"
 
+#include <vector>
+
 struct ImDrawData;
+struct ImDrawList;
+struct ImDrawCmd;
 struct ImFontAtlas;
 
 namespace fv::gfx {
@@ -29,13 +33,25 @@ class ImGuiRenderer {
     /// Points the vertex attributes at the vertex buffer from vertex `first` on (with the VAO and VBO bound):
     /// the base vertex of a command where glDrawElementsBaseVertex is missing (WebGL 2).
     void point_attributes(unsigned first);
+    /// A part of a command's index range, drawn with one program.
+    struct Run {
+        unsigned first = 0, count = 0; ///< Indices, from the command's first.
+        bool solid = false;
+    };
+    /// Splits a font-atlas command into textured runs and large runs of untextured (white-texel) triangles.
+    void split_runs(const ImDrawList& list, const ImDrawCmd& cmd, float scale);
+    void use_program(bool solid);
 
     const GlApi& gl_;
     ShaderProgram program_;
-    GLint loc_proj_ = -1;
+    ShaderProgram solid_program_; ///< The same without the texture fetch (imgui.frag.glsl, SOLID).
+    GLint loc_proj_ = -1, loc_proj_solid_ = -1;
     GLint loc_tex_ = -1;
     GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
     GLuint font_texture_ = 0;
+    float white_uv_[2] = {-1, -1}; ///< The atlas' white texel (ImFontAtlas::TexUvWhitePixel).
+    std::vector<Run> runs_;
+    bool solid_bound_ = false;
     unsigned attributes_at_ = 0; ///< The vertex the attributes point at (point_attributes).
 };
 
