@@ -164,6 +164,8 @@ int run_gui(const GuiOptions& o) {
         if (!real_time) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
         const UiState& ui = app.ui();
+        // Without threads (the browser) the curves are computed here, a few milliseconds a frame.
+        app.worker().run_slice(std::chrono::milliseconds(6));
         const auto curves = app.worker().latest();
         const bool busy = app.worker().busy();
         queued.merge(draw_controls(ui, app.sim(), curves, busy, panel_w, logical.y, dialog));

@@ -15,34 +15,80 @@
 
 namespace fv::app {
 
-RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated) {
-    RatioCurves out;
-    out.request = req;
-    out.current = steady_ratio(req.model, req.params);
-    out.zetas = ratio_zeta_grid(req.zeta_max);
-    if (outdated && outdated()) return out;
-    for (double z : out.zetas) out.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
-    // One warm-started sweep along zeta with the continuous-time solver: a whole curve in a few tens of
-    // milliseconds, so a dragged slider redraws it within a frame or two.
-    if (req.model == Model::dahl) {
-        const auto rows =
-            sweep(Model::dahl, out.zetas, {req.params.theta}, {req.params.rdisp}, {req.params.i}, {}, 1);
-        // A failed point is not drawn as if it were valid: NaN leaves a gap in the curve.
-        for (const auto& r : rows) {
-            const bool good = ok(shown_status(r.result));
-            out.model_rx.push_back(good ? r.result.rx : std::nan(""));
-            out.model_failed += !good;
+RatioJob::RatioJob(const RatioRequest& req, bool with_map, const std::optional<PanelData>& reuse) {
+    out_.request = req;
+    if (with_map && req.map && req.model == Model::dahl) {
+        if (reuse) {
+            out_.map = reuse;
+        } else {
+            map_spec_ = map_figure(req.params.rdisp, req.params.i);
+            map_options_ = map_options(map_spec_);
+            cells_ = map_points(map_spec_);
         }
     }
-    return out;
 }
 
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-// The browser build without pthreads: no thread; request() computes at once (see ratio_worker.hpp).
-RatioWorker::RatioWorker() = default;
-#else
-RatioWorker::RatioWorker() : thread_([this] { run(); }) {}
-#endif
+void RatioJob::next_stage() {
+    next_ = 0;
+    if (stage_ == Stage::start && out_.request.model == Model::dahl)
+        stage_ = Stage::curve;
+    else if ((stage_ == Stage::start || stage_ == Stage::curve) && !cells_.empty())
+        stage_ = Stage::map_cells;
+    else if (stage_ == Stage::map_cells)
+        stage_ = Stage::map_panel;
+    else
+        stage_ = Stage::done;
+}
+
+bool RatioJob::step() {
+    const RatioRequest& req = out_.request;
+    switch (stage_) {
+    case Stage::start:
+        out_.current = steady_ratio(req.model, req.params);
+        out_.zetas = ratio_zeta_grid(req.zeta_max);
+        for (double z : out_.zetas) out_.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
+        next_stage();
+        return true;
+    case Stage::curve: {
+        // Every point on its own, as sweep() computes it. A failed point is not drawn as if it were valid:
+        // NaN leaves a gap in the curve.
+        SteadyOptions opt;
+        opt.record_period = false;
+        const Params p{out_.zetas[next_], req.params.theta, req.params.rdisp, req.params.i};
+        const SteadyResult r = steady_ratio(Model::dahl, p, opt);
+        const bool good = ok(shown_status(r));
+        out_.model_rx.push_back(good ? r.rx : std::nan(""));
+        out_.model_failed += !good;
+        if (++next_ == out_.zetas.size()) next_stage();
+        return true;
+    }
+    case Stage::map_cells: {
+        SweepPoint& c = cells_[next_];
+        c.result = steady_ratio(c.model, c.params, map_options_);
+        if (++next_ == cells_.size()) next_stage();
+        return true;
+    }
+    case Stage::map_panel:
+        out_.map = map_panel_of(map_spec_, cells_, nullptr, 1);
+        cells_.clear();
+        next_stage();
+        return true;
+    case Stage::done:
+        return false;
+    }
+    return false;
+}
+
+RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated) {
+    RatioJob job(req, false);
+    while (job.step())
+        if (outdated && outdated()) break;
+    return std::move(job.result());
+}
+
+RatioWorker::RatioWorker(bool threaded) : threaded_(threaded) {
+    if (threaded_) thread_ = std::thread([this] { run(); });
+}
 
 RatioWorker::~RatioWorker() {
     {
@@ -63,10 +109,10 @@ void RatioWorker::request(const RatioRequest& r) {
         ++generation_;
     }
     cv_.notify_all();
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-    pending_.reset();
-    work(r, generation_);
-#endif
+    if (!threaded_) {
+        pending_.reset();
+        sliced_.emplace(make_job(r)); // supersedes the one in progress
+    }
 }
 
 std::optional<RatioCurves> RatioWorker::latest() const {
@@ -74,9 +120,40 @@ std::optional<RatioCurves> RatioWorker::latest() const {
     return result_;
 }
 
-void RatioWorker::wait_idle() const {
+void RatioWorker::wait_idle() {
+    if (!threaded_) {
+        run_slice(std::chrono::microseconds::max());
+        return;
+    }
     std::unique_lock<std::mutex> lock(mutex_);
     cv_.wait(lock, [this] { return !busy_; });
+}
+
+void RatioWorker::run_slice(std::chrono::microseconds budget) {
+    if (threaded_ || !sliced_) return;
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    while (sliced_->step())
+        if (!sliced_->done() &&
+            std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start) >= budget)
+            return;
+    finish(*sliced_, false);
+    sliced_.reset();
+}
+
+RatioJob RatioWorker::make_job(const RatioRequest& req) const {
+    // The map only changes with r_disp and i: keep the previous one when those did not move.
+    std::lock_guard<std::mutex> lock(mutex_);
+    const bool reuse = result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
+                       result_->request.params.i == req.params.i;
+    return RatioJob(req, true, reuse ? result_->map : std::nullopt);
+}
+
+void RatioWorker::finish(RatioJob& job, bool aborted) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!aborted) result_ = std::move(job.result());
+    if (!pending_) busy_ = false;
+    cv_.notify_all();
 }
 
 void RatioWorker::run() {
@@ -102,28 +179,11 @@ void RatioWorker::run() {
 }
 
 void RatioWorker::work(const RatioRequest& req, std::uint64_t gen) {
-    // A newer request makes this one moot: check between points and give up early.
-    auto outdated = [&] { return generation_ != gen; };
-    RatioCurves out = compute_ratio_curves(req, outdated);
-    bool aborted = outdated();
-    // The map only changes with r_disp and i: keep the previous one when those did not move.
-    if (!aborted && req.map && req.model == Model::dahl) {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            if (result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
-                result_->request.params.i == req.params.i)
-                out.map = result_->map;
-        }
-        if (!out.map) {
-            FigureData f = compute_figure(map_figure(req.params.rdisp, req.params.i), 1);
-            out.map = std::move(f.panels.front());
-        }
-        aborted = outdated();
-    }
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!aborted) result_ = std::move(out);
-    if (!pending_) busy_ = false;
-    cv_.notify_all();
+    // A newer request makes this one moot: check between steps and give up early.
+    RatioJob job = make_job(req);
+    bool aborted = false;
+    while (!aborted && job.step()) aborted = generation_ != gen;
+    finish(job, aborted || generation_ != gen);
 }
 
 } // namespace fv::app

@@ -1,13 +1,17 @@
 // Recomputes the r_x(zeta) curves and the steady-state readouts on a background thread, so that the
 // window never waits for them. Requests supersede each other: a slider drag only ever costs the last one.
-// The browser build without pthreads (a plain static site) has no thread: request() computes at once.
+// The browser build without pthreads (a plain static site) has no thread: there the same work (RatioJob) is
+// done in time slices, a few milliseconds a frame (RatioWorker::run_slice), and published when complete.
 #pragma once
 
 #include "fv/figure_data.hpp"
+#include "fv/figures.hpp"
 #include "fv/params.hpp"
 #include "fv/steady_state.hpp"
+#include "fv/sweep.hpp"
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
@@ -47,13 +51,47 @@ struct RatioCurves {
     std::optional<PanelData> map;                  // the map panel when asked for
 };
 
+// One request's work in small steps, on whichever thread calls step(): the steady state at the parameters
+// and the rigid curve; each point of the model's r_x(zeta) curve (the same steady_ratio calls as sweep());
+// then, with the map, each of its cells and the panel (map_points, map_panel_of: as compute_figure).
+class RatioJob {
+  public:
+    // with_map: also the map when req.map asks for it (Dahl only); `reuse` is taken instead when it is the
+    // map of the same r_disp and i (the map does not depend on zeta or theta).
+    RatioJob(const RatioRequest& req, bool with_map, const std::optional<PanelData>& reuse = std::nullopt);
+    // Does the next step; false once there was nothing left to do (the result is complete).
+    bool step();
+    bool done() const { return stage_ == Stage::done; }
+    RatioCurves& result() { return out_; }
+
+  private:
+    enum class Stage { start, curve, map_cells, map_panel, done };
+    void next_stage();
+
+    RatioCurves out_;
+    Stage stage_ = Stage::start;
+    std::size_t next_ = 0; // the next point of the curve or cell of the map
+    FigureSpec map_spec_;
+    SteadyOptions map_options_;
+    std::vector<SweepPoint> cells_;
+};
+
 // The curves and the steady state at req.params (not the map), on the calling thread. `outdated` (may be
 // empty) is asked between the steps; when it says true the rest is skipped and the result is incomplete.
 RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated = {});
 
+// The browser build without pthreads (a plain static site) has no thread to start.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+inline constexpr bool kRatioThread = false;
+#else
+inline constexpr bool kRatioThread = true;
+#endif
+
 class RatioWorker {
   public:
-    RatioWorker();
+    // threaded: a background thread does the work; else run_slice() does it in slices (the browser build,
+    // and the tests of it).
+    explicit RatioWorker(bool threaded = kRatioThread);
     ~RatioWorker();
     RatioWorker(const RatioWorker&) = delete;
     RatioWorker& operator=(const RatioWorker&) = delete;
@@ -64,13 +102,22 @@ class RatioWorker {
     std::optional<RatioCurves> latest() const;
     // True while a request is being worked on or waiting.
     bool busy() const { return busy_; }
-    // Blocks until the last request is finished (scripted runs and tests want the final picture).
-    void wait_idle() const;
+    // Blocks until the last request is finished (scripted runs and tests want the final picture). Without
+    // threads, does the rest of the work at once.
+    void wait_idle();
+    // Without a thread (the browser build): works on the current request for about `budget` (at least one
+    // step), publishing the result when it completes; the app's loop calls it once a frame. With a thread:
+    // nothing (the thread works).
+    void run_slice(std::chrono::microseconds budget);
 
   private:
     void run();
     // Computes one request (generation `gen`) and publishes it unless a newer request came meanwhile.
     void work(const RatioRequest& req, std::uint64_t gen);
+    // A job for `req`, with the last result's map when it can be reused.
+    RatioJob make_job(const RatioRequest& req) const;
+    // Publishes a finished job's result (unless outdated) and clears busy when nothing waits.
+    void finish(RatioJob& job, bool aborted);
 
     mutable std::mutex mutex_;
     mutable std::condition_variable cv_;
@@ -80,6 +127,8 @@ class RatioWorker {
     std::atomic<std::uint64_t> generation_{0};
     std::atomic<bool> busy_{false};
     bool stop_ = false;
+    bool threaded_;
+    std::optional<RatioJob> sliced_; // without a thread: the request being worked on in slices
     std::thread thread_;
 };
 

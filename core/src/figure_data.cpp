@@ -284,17 +284,40 @@ void break_at_jumps(SeriesData& s, double min_jump) {
     s = std::move(out);
 }
 
+std::vector<double> map_thetas(const FigureSpec& spec) {
+    const double dth = spec.theta_max_deg / (spec.theta_count - 1);
+    std::vector<double> thetas;
+    for (int j = 0; j < spec.theta_count; ++j) thetas.push_back(j * dth * kPi / 180);
+    return thetas;
+}
+
 PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
                     std::vector<SweepPoint>& rows_out) {
+    // Every grid point on its own, spread over the cores.
+    rows_out = sweep(Model::dahl, spec.zetas, map_thetas(spec), {spec.params.rdisp}, {spec.params.i},
+                     map_options(spec), threads);
+    return map_panel_of(spec, rows_out, &table, threads);
+}
+
+} // namespace
+
+std::vector<SweepPoint> map_points(const FigureSpec& spec) {
+    return sweep_grid(Model::dahl, spec.zetas, map_thetas(spec), {spec.params.rdisp}, {spec.params.i});
+}
+
+SteadyOptions map_options(const FigureSpec& spec) {
+    SteadyOptions opt;
+    if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
+    opt.record_period = false; // as sweep() computes them
+    return opt;
+}
+
+PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows, std::string* best_table,
+                       int threads) {
     const std::vector<double>& zetas = spec.zetas;
     const int nth = spec.theta_count;
     const double dth = spec.theta_max_deg / (nth - 1);
-    std::vector<double> thetas;
-    for (int j = 0; j < nth; ++j) thetas.push_back(j * dth * kPi / 180);
-    // Every grid point on its own, spread over the cores.
-    SteadyOptions opt;
-    if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
-    const auto rows = sweep(Model::dahl, zetas, thetas, {spec.params.rdisp}, {spec.params.i}, opt, threads);
+    const std::vector<double> thetas = map_thetas(spec);
     const std::size_t nz = zetas.size();
     HeatmapData h;
     h.nx = static_cast<int>(nz);
@@ -313,7 +336,7 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
     // theta*(zeta): the angle of the smallest r_x, for the Dahl model and for the rigid one.
     SeriesData best{"best angle θ*, Dahl", {}, {}, Ink::black, Dash::solid, Mark::none, 2.5f};
     SeriesData best_rigid{"best angle θ*, rigid", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.8f};
-    table = "zeta,theta_star_deg,r_x_min,theta_star_rigid_deg,r_x_rigid_min\n";
+    std::string table = "zeta,theta_star_deg,r_x_min,theta_star_rigid_deg,r_x_rigid_min\n";
     std::vector<double> col(static_cast<std::size_t>(nth)), col_rigid(static_cast<std::size_t>(nth));
     std::vector<double> rigid(nz * static_cast<std::size_t>(nth));
     parallel_for(
@@ -347,9 +370,11 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
     panel.x_min = h.x0, panel.x_max = h.x1, panel.y_min = h.y0, panel.y_max = h.y1;
     panel.heatmap = std::move(h);
     panel.series = {std::move(best), std::move(best_rigid)};
-    rows_out = rows;
+    if (best_table) *best_table = std::move(table);
     return panel;
 }
+
+namespace {
 
 // Fig. 14: one top view per exponent on shared axes (the frame of all panels), titled (a), (b), ...; one
 // trace table each ("", "-b", ...). only_panel keeps one of them, on the same axes.

@@ -119,4 +119,14 @@ struct FigureData {
 // Computes everything a figure shows. Ratio curves are spread over all cores.
 FigureData compute_figure(const FigureSpec& spec, int threads = 0);
 
+// The map figure's panel in steps, for a caller that spreads the work over time (the browser's ratio worker
+// computes a few cells per frame): the grid's points, not yet computed (sweep_grid order: theta, then zeta
+// fastest), each to be computed with steady_ratio(Model::dahl, point.params, map_options(spec)), then the
+// panel from the computed points (and the theta*(zeta) table when best_table is given). compute_figure on a
+// map spec is these three in one go, so both give the same panel.
+std::vector<SweepPoint> map_points(const FigureSpec& spec);
+SteadyOptions map_options(const FigureSpec& spec);
+PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows,
+                       std::string* best_table = nullptr, int threads = 0);
+
 } // namespace fv
