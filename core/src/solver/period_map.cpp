@@ -358,6 +358,9 @@ PeriodResult run_lag(const LagModel& m, Vec2 l0, double tau0, double tau1, const
             auto g = [&](int, double t, const auto& y) { return pb.force(y).dot(m.dP(t)); };
             auto on_step = [&](const RadauStep<CircleProblem>& st, const Eigen::Vector2d& integral) {
                 out.force_integral += integral;
+                out.v_min_circle =
+                    std::min({out.v_min_circle, st.p0.e.dot(st.p0.dp), st.pz[0].e.dot(st.pz[0].dp),
+                              st.pz[1].e.dot(st.pz[1].dp), st.pz[2].e.dot(st.pz[2].dp)});
                 if (rq.sensitivity) {
                     // dl/dl0 = e_perp R on the circle; its integral by the trapezoidal rule.
                     const Eigen::Matrix2d m0 = perp(pb.force(st.p0)) * R;

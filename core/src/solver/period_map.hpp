@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include <limits>
 #include <vector>
 
 namespace fv::solver {
@@ -42,6 +43,9 @@ struct PeriodResult {
     bool visited_circle = false; // slipped at full deflection at some time
     bool left_circle = false;    // was on the circle and left it (v < 0: relaxation or stick)
     double pin_drop = 0;         // largest 1 - |l| dropped beyond kPin where a grazing reach was taken
+    // Smallest v = e . P' on the circle at the steps' start and stage points (infinity: never on the circle):
+    // how far the period is from leaving the circle.
+    double v_min_circle = std::numeric_limits<double>::infinity();
     long steps = 0, rejected = 0;
     int events = 0;
 };
