@@ -7,12 +7,15 @@
 // Each point: the median wall time of `repeats` calls (3 by default). Tables of median / p95 / max ms per
 // point by rdisp decade, by i, by theta and by zeta, overall; the failures (status not ok, or a non-finite
 // r_x, r_y or error estimate); the slowest points. Then the (zeta, theta) map figure (fv::map_figure:
-// 200 zeta x 91 theta, all cores) at rdisp = 1, 100, 1e4.
+// 200 zeta x 91 theta) at rdisp = 1, 100, 1e4: wall time and the process's CPU time (user + system, all
+// threads; on a shared machine the CPU time is the figure to compare).
 // This prints figures; it asserts nothing (timings are not tests).
 //   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
-//                          [--tolerance T]
+//                          [--tolerance T] [--map-threads N] [--map-rdisp R]...
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
+//     --map-threads N  threads of the map (default 0: all cores; 1 gives the one-core figure directly)
+//     --map-rdisp R    the map's r_disp (repeatable; default 1, 100, 1e4)
 #include "fv/figure_data.hpp"
 #include "fv/figures.hpp"
 #include "fv/steady_state.hpp"
@@ -22,6 +25,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <map>
 #include <string>
 #include <thread>
@@ -87,6 +91,13 @@ std::string num(const char* f, double v) {
     return b;
 }
 
+// CPU time of the whole process (all threads), seconds.
+double process_cpu_s() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 std::string describe(const Point& q) {
     char b[200];
     std::snprintf(b, sizeof b, "zeta=%-9.4g theta=%5.1f rdisp=%-7.0e i=%-4g", q.p.zeta, q.p.theta / kDeg,
@@ -98,7 +109,8 @@ std::string describe(const Point& q) {
 
 int main(int argc, char** argv) {
     bool quick = false, map = true, grid = true;
-    int repeats = 3, worst = 15;
+    int repeats = 3, worst = 15, map_threads = 0;
+    std::vector<double> map_rdisps;
     double map_i = 1;
     fv::SteadyOptions opt; // --tolerance: the solver's target (default 1e-8; the targets are at 1e-6)
     for (int a = 1; a < argc; ++a) {
@@ -115,12 +127,16 @@ int main(int argc, char** argv) {
             worst = std::max(0, std::atoi(argv[++a]));
         else if (k == "--map-i" && a + 1 < argc)
             map_i = std::atof(argv[++a]);
+        else if (k == "--map-threads" && a + 1 < argc)
+            map_threads = std::max(0, std::atoi(argv[++a]));
+        else if (k == "--map-rdisp" && a + 1 < argc)
+            map_rdisps.push_back(std::atof(argv[++a]));
         else if (k == "--tolerance" && a + 1 < argc)
             opt.ode_tolerance = std::atof(argv[++a]);
         else {
             std::fprintf(stderr,
                          "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
-                         "[--tolerance T]\n",
+                         "[--tolerance T] [--map-threads N] [--map-rdisp R]...\n",
                          argv[0]);
             return 2;
         }
@@ -237,23 +253,32 @@ int main(int argc, char** argv) {
         }
     }
 
-    // The (zeta, theta) map (fv::map_figure: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg]), all cores.
+    // The (zeta, theta) map (fv::map_figure: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg]).
     if (map) {
-        std::printf("\n(zeta, theta) map, fv::compute_figure(fv::map_figure(rdisp, i = %g)), %u threads\n",
-                    map_i, std::thread::hardware_concurrency());
-        std::printf("  %8s %10s %8s %12s\n", "rdisp", "time s", "cells", "non-finite");
-        for (double rd : {1.0, 100.0, 1e4}) {
+        if (map_rdisps.empty()) map_rdisps = {1.0, 100.0, 1e4};
+        const unsigned nth = map_threads > 0 ? static_cast<unsigned>(map_threads)
+                                             : std::max(1u, std::thread::hardware_concurrency());
+        std::printf("\n(zeta, theta) map, fv::compute_figure(fv::map_figure(rdisp, i = %g)), %u thread(s)\n",
+                    map_i, nth);
+        std::printf("  %8s %10s %10s %8s %12s %10s\n", "rdisp", "wall s", "CPU s", "cells", "non-finite",
+                    "not ok");
+        for (double rd : map_rdisps) {
+            const double c0 = process_cpu_s();
             const auto a = std::chrono::steady_clock::now();
-            const fv::FigureData fig = fv::compute_figure(fv::map_figure(rd, map_i));
+            const fv::FigureData fig = fv::compute_figure(fv::map_figure(rd, map_i), map_threads);
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - a).count();
-            int cells = 0, bad = 0;
+            const double cpu = process_cpu_s() - c0;
+            int cells = 0, bad = 0, not_ok = 0;
             for (const auto& panel : fig.panels)
                 if (panel.heatmap)
                     for (double v : panel.heatmap->values) {
                         ++cells;
                         if (!std::isfinite(v)) ++bad;
                     }
-            std::printf("  %8g %10.3f %8d %12d\n", rd, t, cells, bad);
+            for (const auto& table : fig.tables)
+                for (const auto& row : table.ratios)
+                    if (!fv::ok(row.result.status)) ++not_ok;
+            std::printf("  %8g %10.3f %10.3f %8d %12d %10d\n", rd, t, cpu, cells, bad, not_ok);
             std::fflush(stdout);
         }
     }

@@ -170,16 +170,48 @@ TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zet
     CHECK(std::count_if(rigid_best.y.begin(), rigid_best.y.end(), [](double v) { return std::isnan(v); }) ==
           1);
     // Grid cells hold the Dahl r_x at (zeta, theta) at the map's tolerance, 1e-6: a cell is the single point
-    // solved at that tolerance (`ratio --tolerance 1e-6`), to the bit, and within 1e-6 of the default solve.
+    // solved at that tolerance (`ratio --tolerance 1e-6`) within 1e-6, and within 1e-6 of the default solve.
     fv::SteadyOptions o;
     o.ode_tolerance = fv::kMapTolerance;
     const double direct = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}, o).rx;
-    CHECK(panel.heatmap->values[9 * 5 + 1] == direct);
+    CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(direct).margin(fv::kMapTolerance));
     const double fine = fv::steady_ratio(fv::Model::dahl, {0.6, 45 * fv::kPi / 180, 2, 1}).rx;
     CHECK(panel.heatmap->values[9 * 5 + 1] == Approx(fine).margin(1e-6));
     // The best-angle table: a header and one row per zeta.
     REQUIRE(d.tables.size() == 2);
     CHECK(std::count(d.tables[1].text.begin(), d.tables[1].text.end(), '\n') == 6);
+}
+
+TEST_CASE("Map: every cell is its single point within the map's tolerance, warm-started rows included",
+          "[figures][map]") {
+    // The map solves each theta row along zeta, starting a cell from its neighbours' periodic states where
+    // the cold start is slow (small rdisp, dense zeta: where that happens most). Every cell must still be
+    // the point solved on its own at the map's tolerance (`ratio --tolerance 1e-6`) within that tolerance,
+    // ok, and within 1e-6 of the default solve (tolerance 1e-8), whatever start it had.
+    for (const double rdisp : {0.1, 2.0, 100.0}) {
+        fv::FigureSpec spec = fv::map_figure(rdisp, 1);
+        spec.zetas = fv::linspace(0.02, 1.5, 24);
+        spec.theta_count = 4; // 0, 30, 60, 90 deg
+        const auto d = fv::compute_figure(spec, 2);
+        const auto& h = *d.panels.at(0).heatmap;
+        REQUIRE(h.values.size() == 24 * 4);
+        const auto& rows = d.tables.at(0).ratios;
+        REQUIRE(rows.size() == 24 * 4);
+        fv::SteadyOptions o;
+        o.ode_tolerance = fv::kMapTolerance;
+        for (int j = 0; j < 4; ++j)
+            for (std::size_t k = 0; k < 24; ++k) {
+                const fv::Params p{spec.zetas[k], 30.0 * j * fv::kPi / 180, rdisp, 1};
+                const std::size_t u = static_cast<std::size_t>(j) * 24 + k;
+                INFO("rdisp " << rdisp << " theta " << 30 * j << " zeta " << p.zeta);
+                CHECK(fv::ok(rows[u].result.status));
+                const fv::SteadyResult single = fv::steady_ratio(fv::Model::dahl, p, o);
+                REQUIRE(fv::ok(single.status));
+                CHECK(h.values[u] == Approx(single.rx).margin(fv::kMapTolerance));
+                CHECK(rows[u].result.ry == Approx(single.ry).margin(fv::kMapTolerance));
+                CHECK(h.values[u] == Approx(fv::steady_ratio(fv::Model::dahl, p).rx).margin(1e-6));
+            }
+    }
 }
 
 TEST_CASE("Where the model disagrees with the paper's text (README, captions of Figs. 10-13)", "[figures]") {

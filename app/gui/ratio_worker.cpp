@@ -64,7 +64,7 @@ bool RatioJob::step() {
     }
     case Stage::map_cells: {
         SweepPoint& c = cells_[next_];
-        c.result = steady_ratio(c.model, c.params, map_options_);
+        c.result = map_cell(map_spec_, cells_, next_);
         if (++next_ == cells_.size()) next_stage();
         return true;
     }

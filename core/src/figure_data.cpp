@@ -4,6 +4,7 @@
 
 #include "fv/adaptive_sampling.hpp"
 #include "fv/format.hpp"
+#include "fv/ode_solver.hpp"
 #include "fv/rigid.hpp"
 
 #include <algorithm>
@@ -293,9 +294,18 @@ std::vector<double> map_thetas(const FigureSpec& spec) {
 
 PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
                     std::vector<SweepPoint>& rows_out) {
-    // Every grid point on its own, spread over the cores.
-    rows_out = sweep(Model::dahl, spec.zetas, map_thetas(spec), {spec.params.rdisp}, {spec.params.i},
-                     map_options(spec), threads);
+    // Row by row along zeta (a cell may start from the cells before it), rows spread over the cores.
+    rows_out = map_points(spec);
+    const std::size_t nz = spec.zetas.size();
+    parallel_for(
+        spec.theta_count,
+        [&](int row) {
+            for (std::size_t k = 0; k < nz; ++k) {
+                const std::size_t u = static_cast<std::size_t>(row) * nz + k;
+                rows_out[u].result = map_cell(spec, rows_out, u);
+            }
+        },
+        threads);
     return map_panel_of(spec, rows_out, &table, threads);
 }
 
@@ -310,6 +320,13 @@ SteadyOptions map_options(const FigureSpec& spec) {
     if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
     opt.record_period = false; // as sweep() computes them
     return opt;
+}
+
+SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& points, std::size_t k) {
+    const std::size_t pos = k % spec.zetas.size(); // place in its theta row
+    const SteadyResult* prev1 = pos >= 1 ? &points[k - 1].result : nullptr;
+    const SteadyResult* prev2 = pos >= 2 ? &points[k - 2].result : nullptr;
+    return ode_map_cell(points[k].params, prev1, prev2, ode_options(map_options(spec)));
 }
 
 PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows, std::string* best_table,

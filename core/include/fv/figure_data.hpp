@@ -121,11 +121,14 @@ FigureData compute_figure(const FigureSpec& spec, int threads = 0);
 
 // The map figure's panel in steps, for a caller that spreads the work over time (the browser's ratio worker
 // computes a few cells per frame): the grid's points, not yet computed (sweep_grid order: theta, then zeta
-// fastest), each to be computed with steady_ratio(Model::dahl, point.params, map_options(spec)), then the
-// panel from the computed points (and the theta*(zeta) table when best_table is given). compute_figure on a
-// map spec is these three in one go, so both give the same panel.
+// fastest), each to be computed in order with map_cell(spec, points, k) (a cell may start from the cells
+// before it in its theta row: fv::ode_map_cell), then the panel from the computed points (and the
+// theta*(zeta) table when best_table is given). compute_figure on a map spec is these three in one go (rows
+// spread over the cores), so both give the same panel. A cell equals steady_ratio(Model::dahl,
+// point.params, map_options(spec)) within the map's tolerance.
 std::vector<SweepPoint> map_points(const FigureSpec& spec);
 SteadyOptions map_options(const FigureSpec& spec);
+SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& points, std::size_t k);
 PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows,
                        std::string* best_table = nullptr, int threads = 0);
 

@@ -86,4 +86,12 @@ std::vector<SweepPoint> ode_sweep_zeta(const std::vector<double>& zetas, const s
                                        const std::vector<double>& rdisps, const std::vector<double>& is,
                                        const OdeOptions& opt = {}, int threads = 0);
 
+// One cell of a (zeta, theta) map whose theta rows are solved along zeta (core/src/solver/map_grid.cpp):
+// `prev1`, `prev2` are the results of the one and two cells before it in its row (null at the row's start).
+// The cell starts from the straight line through their periodic states where the cold start was slow for
+// `prev1`; else, or when that start fails, it is ode_steady at p. Every cell is verified on its own to the
+// tolerance, so it agrees with ode_steady at its parameters within the tolerance (not to the bit).
+SteadyResult ode_map_cell(const Params& p, const SteadyResult* prev1, const SteadyResult* prev2,
+                          const OdeOptions& opt = {});
+
 } // namespace fv

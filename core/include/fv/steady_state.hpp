@@ -68,6 +68,7 @@ struct SteadyResult {
     long periods_skipped = 0;
     bool on_circle = false;
     std::string detail;
+    Vec2 lag{0, 0}; // Scheme::ode: L = P(0) - T(0) of the steady period found (a warm start for neighbours)
     std::vector<Sample> period; // last steady period at n0 = default_steps_per_period (or the N asked for),
                                 // samples k = 1..n of Eq. (30)
 };

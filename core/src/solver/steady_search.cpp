@@ -762,6 +762,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     res.events_per_period = sol.events_per_period;
     res.on_circle = sol.on_circle;
     res.detail = failure;
+    res.lag = sol.lag;
     return sol;
 }
 
