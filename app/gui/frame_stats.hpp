@@ -8,14 +8,15 @@ namespace fv::app {
 
 class FrameStats {
   public:
-    // One frame: its total and its phases (simulation + controls, dashboard layout, GL drawing), in ms.
-    void record(double total_ms, double sim_ui_ms, double layout_ms, double gl_ms);
+    // One frame: its total, its phases (simulation + controls, dashboard layout, GL drawing) and the CPU time
+    // of the thread that ran it, in ms.
+    void record(double total_ms, double sim_ui_ms, double layout_ms, double gl_ms, double cpu_ms);
     bool empty() const { return total_.empty(); }
-    // Prints two lines to stdout; the first 5 frames (shaders, caches) are left out of the percentiles.
+    // Prints three lines to stdout; the first 5 frames (shaders, caches) are left out of the percentiles.
     void print(int width, int height, float scale, const std::string& backend) const;
 
   private:
-    std::vector<double> total_;
+    std::vector<double> total_, cpu_;
     double phase_[3] = {0, 0, 0};
 };
 

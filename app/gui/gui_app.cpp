@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <thread>
 
 namespace fv::app {
@@ -100,110 +101,166 @@ void write_requested_files(const AppState::Actions& act, const std::string& scre
         report(act.save_session, write_session(act.save_session, session_of(app.ui())), " (session)");
 }
 
-} // namespace
+// This thread's CPU time: with LP_NUM_THREADS=0 llvmpipe draws on it, and then it is the frame's cost with
+// little of the machine's load in it (wall times on a shared machine are mostly the load).
+double thread_cpu_ms() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
+}
 
-int run_gui(const GuiOptions& o) {
-    PlatformOptions po;
-    po.width = o.width;
-    po.height = o.height;
-    po.scale = o.scale;
-    po.title = "frictionviz — friction reduction by in-plane vibrations";
-    const std::unique_ptr<Platform> platform = make_platform(o.platform, po);
-    RenderSession session(platform->context(), platform->pixel_ratio());
-    ImGuiScope imgui(session, *platform);
+// The app's frame loop, one method per phase: poll → sync (every edit at one point) → advance (fixed
+// simulation steps) → draw (the panel's and the mouse's edits queued for the next frame) → finish (files,
+// present, frame times).
+class GuiLoop {
+  public:
+    explicit GuiLoop(const GuiOptions& o)
+        : o_(o), platform_(make_platform(o.platform, platform_options(o))),
+          session_(platform_->context(), platform_->pixel_ratio()), imgui_(session_, *platform_),
+          scripted_(o.frames > 0 || o.bench_frames > 0),
+          real_time_(platform_->interactive() && !scripted_), // else a fixed 1/60 s per frame, no mouse
+          script_(o.script.empty() ? Script{} : load_script(o.script)), app_(o.start, o.data, o.session_file),
+          animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {}
 
-    const bool scripted = o.frames > 0 || o.bench_frames > 0;
-    const bool real_time = platform->interactive() && !scripted; // else a fixed 1/60 s per frame, no mouse
-    const Script script = o.script.empty() ? Script{} : load_script(o.script);
-    AppState app(o.start, o.data, o.session_file);
-    FileDialogs dialog;
-    ExportDialog export_dialog;
-    AnimationExportJob animation(o.animation_exporter);
-    UiEdits queued;
-    DashboardTransforms transforms{};
-    FrameStats stats;
-    int shots = 0, exports = 0;
-    const int total_frames = o.bench_frames > 0 ? o.bench_frames : o.frames;
-    auto last = Clock::now();
-
-    for (int frame = 0; total_frames == 0 || frame < total_frames; ++frame) {
-        const auto t0 = Clock::now();
-        PlatformEvents events = platform->poll();
-        if (events.close) break;
-        // 1. All edits of the previous frame (panel, keys, mouse, drops) and of the script land here, at one
-        //    point. A drop shows the last file (one data set at a time).
-        if (!events.dropped.empty()) queued.load_data = std::move(events.dropped.back());
-        if (events.help_key) queued.show_help = !app.ui().show_help;
-        queued.merge(script_edits(script, frame, app.ui()));
-        if (o.bench_frames > 0) queued.params = bench_params(app.ui().params, frame);
-        const AppState::Actions act = app.sync(queued, scripted);
-        if (act.quit) break;
-        if (o.on_state) o.on_state(app.ui());
-        queued = UiEdits{};
-        if (act.open_export_dialog) export_dialog.open_requested = true;
-        if (act.export_animation) {
-            app.ui().status = animation.start(*act.export_animation);
-            if (scripted) animation.wait(); // the file is there before the next frame
+    int run() {
+        for (int frame = 0; total_frames_ == 0 || frame < total_frames_; ++frame) {
+            times_.start = Clock::now();
+            cpu_start_ = thread_cpu_ms();
+            if (!sync(frame)) break;
+            advance();
+            draw();
+            finish(frame);
         }
-        if (auto status = animation.poll()) app.ui().status = *status;
+        const gfx::Size fb = session_.context().framebuffer_size();
+        stats_.print(fb.width, fb.height, session_.pixel_ratio(), session_.context().describe());
+        return 0;
+    }
 
-        // 2. Simulation time: fixed steps, their number from the elapsed wall time (a fixed 1/60 s per frame
-        //    when not real time, so that scripted runs are reproducible).
+  private:
+    struct FrameTimes {
+        Clock::time_point start, ui, layout, gl;
+    };
+
+    static PlatformOptions platform_options(const GuiOptions& o) {
+        PlatformOptions po;
+        po.width = o.width;
+        po.height = o.height;
+        po.scale = o.scale;
+        po.title = "frictionviz — friction reduction by in-plane vibrations";
+        return po;
+    }
+
+    // 1. Events, then all edits of the previous frame (panel, keys, mouse, drops) and of the script, applied
+    //    at one point. A drop shows the last file (one data set at a time). False: the app closes.
+    bool sync(int frame) {
+        PlatformEvents events = platform_->poll();
+        if (events.close) return false;
+        if (!events.dropped.empty()) queued_.load_data = std::move(events.dropped.back());
+        if (events.help_key) queued_.show_help = !app_.ui().show_help;
+        queued_.merge(script_edits(script_, frame, app_.ui()));
+        if (o_.bench_frames > 0) queued_.params = bench_params(app_.ui().params, frame);
+        act_ = app_.sync(queued_, scripted_);
+        if (act_.quit) return false;
+        if (o_.on_state) o_.on_state(app_.ui());
+        queued_ = UiEdits{};
+        if (act_.open_export_dialog) export_dialog_.open_requested = true;
+        if (act_.export_animation) {
+            app_.ui().status = animation_.start(*act_.export_animation);
+            if (scripted_) animation_.wait(); // the file is there before the next frame
+        }
+        if (auto status = animation_.poll()) app_.ui().status = *status;
+        return true;
+    }
+
+    // 2. Simulation time: fixed steps, their number from the elapsed wall time (a fixed 1/60 s per frame when
+    //    not real time, so that scripted runs are reproducible).
+    void advance() {
         const auto now = Clock::now();
-        app.advance(real_time ? std::min(0.1, std::chrono::duration<double>(now - last).count()) : 1.0 / 60);
-        last = now;
-        if (scripted && o.bench_frames == 0) app.worker().wait_idle(); // reproducible pictures
+        app_.advance(real_time_ ? std::min(0.1, std::chrono::duration<double>(now - last_).count())
+                                : 1.0 / 60);
+        last_ = now;
+        if (scripted_ && o_.bench_frames == 0) app_.worker().wait_idle(); // reproducible pictures
+    }
 
-        // 3. Draw: the dashboard through the canvas, the panel through ImGui on top; the panel's and the
-        //    mouse's edits are queued for the next frame.
-        const gfx::Vec2 logical = session.logical_page();
-        const bool present = app.ui().presentation;
+    // 3. Draw: the panel through ImGui (its edits queued for the next frame), the dashboard through the
+    // canvas,
+    //    the panel on top.
+    void draw() {
+        const gfx::Vec2 logical = session_.logical_page();
+        const UiState& ui = app_.ui();
+        const bool present = ui.presentation;
         const float panel_w = present ? 450 : kPanelWidth;
-        ImGui::GetIO().FontDefault = session.fonts().font_for(present ? 22 : 15);
-        platform->imgui_new_frame(logical);
-        if (!real_time) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
+        ImGui::GetIO().FontDefault = session_.fonts().font_for(present ? 22 : 15);
+        platform_->imgui_new_frame(logical);
+        if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
-        const UiState& ui = app.ui();
         // Without threads (the browser) the curves are computed here, a few milliseconds a frame.
-        app.worker().run_slice(std::chrono::milliseconds(6));
-        const auto curves = app.worker().latest();
-        const bool busy = app.worker().busy();
-        queued.merge(draw_controls(ui, app.sim(), curves, busy, panel_w, logical.y, dialog));
-        queued.export_animation = draw_export_dialog(export_dialog, ui.speed, animation.running());
-        queued.merge(keyboard_edits(ui));
-        handle_dashboard_mouse(app.ui().view, app.sim(), transforms);
+        app_.worker().run_slice(std::chrono::milliseconds(6));
+        const auto curves = app_.worker().latest();
+        const bool busy = app_.worker().busy();
+        queued_.merge(draw_controls(ui, app_.sim(), curves, busy, panel_w, logical.y, dialog_));
+        queued_.export_animation = draw_export_dialog(export_dialog_, ui.speed, animation_.running());
+        queued_.merge(keyboard_edits(ui));
+        handle_dashboard_mouse(app_.ui().view, app_.sim(), transforms_);
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
-            queued.show_help = false;
+            queued_.show_help = false;
         ImGui::Render();
-        const auto t_ui = Clock::now();
-        gfx::Canvas& canvas = session.canvas();
-        canvas.begin(logical, session.pixel_ratio(), gfx::colors::white);
-        transforms = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app.sim(),
-                                     ui.view, curves, busy, lower_panel(ui),
-                                     {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins},
-                                     present ? kPresentationScale : 1.0f);
-        const auto t_layout = Clock::now();
+        times_.ui = Clock::now();
+        gfx::Canvas& canvas = session_.canvas();
+        canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
+        transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app_.sim(),
+                                      ui.view, curves, busy, lower_panel(ui),
+                                      {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins},
+                                      present ? kPresentationScale : 1.0f);
+        times_.layout = Clock::now();
         canvas.end();
-        session.imgui().render(*ImGui::GetDrawData());
-        session.context().gl().Finish();
-        const auto t_gl = Clock::now();
+        session_.imgui().render(*ImGui::GetDrawData());
+        session_.context().gl().Finish();
+        times_.gl = Clock::now();
+    }
 
-        // 4. Files, then show the frame.
-        const bool last_frame = total_frames > 0 && frame + 1 == total_frames;
-        write_requested_files(act, last_frame ? o.screenshot : std::string(), session, app, shots, exports);
-        platform->present();
-        const double ms = Ms(Clock::now() - t0).count();
-        if (o.bench_frames > 0)
-            stats.record(ms, Ms(t_ui - t0).count(), Ms(t_layout - t_ui).count(), Ms(t_gl - t_layout).count());
+    // 4. Files, then show the frame, then its times.
+    void finish(int frame) {
+        const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
+        write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, app_, shots_,
+                              exports_);
+        platform_->present();
+        const double ms = Ms(Clock::now() - times_.start).count();
+        if (o_.bench_frames > 0)
+            stats_.record(ms, Ms(times_.ui - times_.start).count(), Ms(times_.layout - times_.ui).count(),
+                          Ms(times_.gl - times_.layout).count(), thread_cpu_ms() - cpu_start_);
             // Without vsync (e.g. Xvfb) do not spin: about 60 frames per second are plenty. (The web platform
             // paces its frames in present(), where it hands control back to the browser.)
 #if !defined(__EMSCRIPTEN__)
-        if (real_time && ms < 15) std::this_thread::sleep_for(Ms(15 - ms));
+        if (real_time_ && ms < 15) std::this_thread::sleep_for(Ms(15 - ms));
 #endif
     }
-    const gfx::Size fb = session.context().framebuffer_size();
-    stats.print(fb.width, fb.height, session.pixel_ratio(), session.context().describe());
-    return 0;
+
+    const GuiOptions& o_;
+    const std::unique_ptr<Platform> platform_;
+    RenderSession session_;
+    ImGuiScope imgui_;
+    const bool scripted_, real_time_;
+    const Script script_;
+    AppState app_;
+    FileDialogs dialog_;
+    ExportDialog export_dialog_;
+    AnimationExportJob animation_;
+    const int total_frames_;
+    UiEdits queued_;          // edits made while drawing, applied by the next frame's sync
+    AppState::Actions act_{}; // what this frame's sync asks for (files, dialogs)
+    DashboardTransforms transforms_{};
+    FrameStats stats_;
+    FrameTimes times_;
+    double cpu_start_ = 0;
+    int shots_ = 0, exports_ = 0;
+    Clock::time_point last_ = Clock::now();
+};
+
+} // namespace
+
+int run_gui(const GuiOptions& o) {
+    return GuiLoop(o).run();
 }
 
 } // namespace fv::app
