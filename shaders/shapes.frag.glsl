@@ -1,7 +1,8 @@
 #version 330 core
 // Signed-distance evaluation of the canvas primitives. Distances are in logical pixels; the
 // coverage ramp is one framebuffer pixel wide (u_ratio = framebuffer pixels per logical pixel).
-// KIND: 1 dashed segment, 2 marker, 3 triangle, 4 rectangle, 5 solid segment.
+// KIND: 1 dashed segment, 2 marker, 3 triangle, 4 rectangle, 5 solid segment, 6 flat (full coverage: the
+// inside of a large fill, where every other kind would give 1 too).
 // The program is compiled once per primitive kind with "#define KIND n" inserted after #version:
 // llvmpipe pays for every branch of a divergent if, so a single uber-shader made a full-screen
 // rectangle cost 20+ ms.
@@ -136,6 +137,8 @@ void main() {
     float alpha = marker_alpha(p);
 #elif KIND == 3
     float alpha = coverage(sd_triangle(p, v_a.xy, v_a.zw, v_b.xy));
+#elif KIND == 6
+    float alpha = 1.0;
 #else
     vec2 c = 0.5 * (v_a.xy + v_a.zw), h = 0.5 * (v_a.zw - v_a.xy);
     float d = sd_box(p - c, h);

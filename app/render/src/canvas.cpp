@@ -36,6 +36,9 @@ struct Batch {
     std::size_t list = 0;             // Text: index into the draw-list pool.
 };
 
+// Logical units added to every bounding quad beyond the farthest pixel its shape can touch (rounding).
+constexpr float kQuadMargin = 0.05f;
+
 bool same_rect(const Rect& a, const Rect& b) {
     return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
 }
@@ -204,10 +207,17 @@ struct Canvas::Impl {
         quad(q, kind, a, b, {0, 0, 0, 0}, {0, 0, 0}, col);
     }
 
+    // How far beyond a shape's edge its antialiasing ramp has coverage > 0 (half a framebuffer pixel), with a
+    // margin for rounding: the bounding quads reach this far and no farther, as llvmpipe pays for every pixel
+    // a quad covers, discarded or not.
+    float aa_reach() const { return 0.5f / ratio + kQuadMargin; }
+
     void segment(Vec2 prev, Vec2 p0, Vec2 p1, Vec2 next, bool has_prev, bool has_next, float s0,
                  const Stroke& s, const DashPattern& dp) {
         const float hw = 0.5f * s.width;
-        const float e = hw + 1.0f + 1.0f / ratio; // Must exceed the shader's reach (hw + 1/ratio + 0.5).
+        // The shader's reach (hw + 1/ratio + 0.5, where it decides which segment owns a pixel at a joint):
+        // every pixel it may shade.
+        const float e = hw + 1.0f / ratio + 0.5f + kQuadMargin;
         Vec2 dir = p1 - p0;
         const float len = std::hypot(dir.x, dir.y);
         dir = dir * (1.0f / len);
@@ -259,15 +269,20 @@ struct Canvas::Impl {
             clear_rect(r, c);
             return;
         }
-        const float e = 2;
-        // Opaque and large: the pixels fully inside (with a pixel to spare) get the same colour from a
-        // scissored clear as from the SDF; only the border bands need the shader. llvmpipe pays per shaded
-        // pixel, and plot backgrounds are large.
+        const float e = aa_reach();
+        // Large: the pixels fully inside (with a pixel to spare) get the same colour from a scissored clear
+        // (opaque) or a flat quad (translucent) as from the SDF, whose coverage is 1 there; only the border
+        // bands need the SDF. llvmpipe pays per shaded pixel, and plot backgrounds and slip shading are
+        // large.
         const float ix0 = (std::ceil(r.x0 * ratio) + 1) / ratio, iy0 = (std::ceil(r.y0 * ratio) + 1) / ratio;
         const float ix1 = (std::floor(r.x1 * ratio) - 1) / ratio,
                     iy1 = (std::floor(r.y1 * ratio) - 1) / ratio;
-        if (c.a >= 1.0f && ix1 - ix0 > 4 && iy1 - iy0 > 4) {
-            clear_rect({ix0, iy0, ix1, iy1}, c);
+        if (ix1 - ix0 > 4 && iy1 - iy0 > 4) {
+            if (c.a >= 1.0f) {
+                clear_rect({ix0, iy0, ix1, iy1}, c);
+            } else {
+                box_quad(ix0, iy0, ix1, iy1, detail::kFlat, {0, 0, 0, 0}, {0, 0, 0, 0}, c);
+            }
             const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {0, 1, 0, 0};
             box_quad(r.x0 - e, r.y0 - e, r.x1 + e, iy0, detail::kRect, a, b, c); // top
             box_quad(r.x0 - e, iy1, r.x1 + e, r.y1 + e, detail::kRect, a, b, c); // bottom
@@ -286,7 +301,7 @@ struct Canvas::Impl {
             polyline({{r.x0, r.y0}, {r.x1, r.y0}, {r.x1, r.y1}, {r.x0, r.y1}}, s, true);
             return;
         }
-        const float hw = 0.5f * s.width, e = hw + 2;
+        const float hw = 0.5f * s.width, e = hw + aa_reach();
         const float a[4] = {r.x0, r.y0, r.x1, r.y1}, b[4] = {hw, 0, 0, 0};
         if (r.width() > 2 * e + 2 && r.height() > 2 * e + 2) {
             // The outline's SDF evaluated only on four bands along the edges (same pixels as one quad over
@@ -331,7 +346,7 @@ struct Canvas::Impl {
         const float radius = cmd.radius;
         const Stroke& s = cmd.stroke;
         if (s.style == LineStyle::Solid) {
-            const float hw = 0.5f * s.width, e = radius + hw + 2;
+            const float hw = 0.5f * s.width, e = radius + hw + aa_reach();
             box_quad(center.x - e, center.y - e, center.x + e, center.y + e, detail::kMarker,
                      {center.x, center.y, radius, hw}, {1, 0, 0, 0}, s.color);
             return;
@@ -341,13 +356,13 @@ struct Canvas::Impl {
     }
 
     void draw(const dl::FillCircle& cmd) {
-        const float e = cmd.radius + 2;
+        const float e = cmd.radius + aa_reach();
         box_quad(cmd.center.x - e, cmd.center.y - e, cmd.center.x + e, cmd.center.y + e, detail::kMarker,
                  {cmd.center.x, cmd.center.y, cmd.radius, 0}, {1, 1, 0, 0}, cmd.color);
     }
 
     void fill_triangle(Vec2 a, Vec2 b, Vec2 c, Color col) {
-        const float e = 2;
+        const float e = aa_reach();
         const float x0 = std::min({a.x, b.x, c.x}) - e, x1 = std::max({a.x, b.x, c.x}) + e;
         const float y0 = std::min({a.y, b.y, c.y}) - e, y1 = std::max({a.y, b.y, c.y}) + e;
         box_quad(x0, y0, x1, y1, detail::kTriangle, {a.x, a.y, b.x, b.y}, {c.x, c.y, 0, 0}, col);

@@ -11,8 +11,9 @@
 
 namespace fv::gfx::detail {
 
-enum ShapeKind : int { kSegment = 1, kMarker = 2, kTriangle = 3, kRect = 4, kSolidSegment = 5 };
-constexpr int kShapeKindCount = 5;
+// kFlat: the inside of a large translucent fill, where the SDF's coverage is 1 anyway (no SDF at all).
+enum ShapeKind : int { kSegment = 1, kMarker = 2, kTriangle = 3, kRect = 4, kSolidSegment = 5, kFlat = 6 };
+constexpr int kShapeKindCount = 6;
 
 struct ShapeVertex {
     float pos[2];
