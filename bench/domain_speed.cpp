@@ -4,12 +4,13 @@
 //   theta in {0, 30, ..., 180 deg}
 //   rdisp in {1e-9, 1e-8, ..., 1e4} (one per decade)
 //   i     in {0, 0.5, 1, 2, 5, 10}
-// Each point: the median wall time of `repeats` calls (3 by default). Tables of median / p95 / max ms per
-// point by rdisp decade, by i, by theta and by zeta, overall; the failures (status not ok, or a non-finite
-// r_x, r_y or error estimate); the slowest points. Then the (zeta, theta) map figure (fv::map_figure:
-// 200 zeta x 91 theta) at rdisp = 1, 100, 1e4: wall time and the process's CPU time (user + system, all
-// threads; on a shared machine the CPU time is the figure to compare).
-// This prints figures; it asserts nothing (timings are not tests).
+// Each point: the median CPU time of its thread over `repeats` calls (3 by default; CPU time, so that other
+// work on a shared machine does not count, though it still slows the caches). Tables of median / p95 / max ms
+// per point by rdisp decade, by i, by theta and by zeta, overall; the failures (status not ok, or a
+// non-finite r_x, r_y or error estimate); the slowest points. Then the (zeta, theta) map figure
+// (fv::map_figure: 200 zeta x 91 theta) at rdisp = 1, 100, 1e4: wall time and the process's CPU time (user +
+// system, all threads; on a shared machine the CPU time is the figure to compare). This prints figures; it
+// asserts nothing (timings are not tests).
 //   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
 //                          [--tolerance T] [--map-threads N] [--map-rdisp R]...
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
@@ -98,6 +99,13 @@ double process_cpu_s() {
     return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// CPU time of the calling thread, seconds.
+double thread_cpu_s() {
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 std::string describe(const Point& q) {
     char b[200];
     std::snprintf(b, sizeof b, "zeta=%-9.4g theta=%5.1f rdisp=%-7.0e i=%-4g", q.p.zeta, q.p.theta / kDeg,
@@ -175,7 +183,7 @@ int main(int argc, char** argv) {
     if (grid) {
         std::printf(
             "fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu theta x %zu "
-            "rdisp x %zu i)%s, median of %d call(s) per point, one thread\n",
+            "rdisp x %zu i)%s, median CPU time of %d call(s) per point, one thread\n",
             opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
             quick ? " [--quick]" : "", repeats);
         std::fflush(stdout);
@@ -184,10 +192,9 @@ int main(int argc, char** argv) {
         for (Point& q : pts) {
             std::vector<double> t;
             for (int k = 0; k < repeats; ++k) {
-                const auto a = std::chrono::steady_clock::now();
+                const double a = thread_cpu_s();
                 q.r = fv::steady_ratio(fv::Model::dahl, q.p, opt);
-                const auto b = std::chrono::steady_clock::now();
-                t.push_back(std::chrono::duration<double, std::milli>(b - a).count());
+                t.push_back(1e3 * (thread_cpu_s() - a));
             }
             q.ms = quantile(t, 0.5);
         }
