@@ -225,7 +225,8 @@ TEST_CASE("App mechanism: the live arrows are the velocity and the friction on t
     const Params p{0.5, kPi / 2, 2, 1};
     LiveSim rigid(Model::rigid, p);
     rigid.step(100);
-    const PanelData m = mechanism_panel_live(rigid);
+    MechanismBase base;
+    const PanelData m = mechanism_panel_live(rigid, base);
     REQUIRE(m.arrows.size() >= 2);
     // Eq. (1): v/v_v = (zeta + cos tau cos theta, cos tau sin theta); Eq. (2): friction -F_c v/|v|.
     const double c = std::cos(rigid.tau());
@@ -237,6 +238,6 @@ TEST_CASE("App mechanism: the live arrows are the velocity and the friction on t
     // Dahl: the friction on the body is -F, F = (P - T)/z_ss.
     LiveSim dahl(Model::dahl, p);
     dahl.step(100);
-    const PanelData d = mechanism_panel_live(dahl);
+    const PanelData d = mechanism_panel_live(dahl, base);
     CHECK((d.arrows.back().to + (dahl.P() - dahl.T()) / p.zss()).norm() < 1e-9);
 }

@@ -1,4 +1,5 @@
 #include "animation_export.hpp"
+#include "dialog_footer.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -146,10 +147,7 @@ std::optional<AnimationRequest> draw_export_dialog(ExportDialog& d, double speed
             ImGui::CloseCurrentPopup();
         }
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
-        ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
+    end_dialog_with_cancel();
     return out;
 }
 

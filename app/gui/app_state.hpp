@@ -5,6 +5,7 @@
 // drive it directly.
 #pragma once
 
+#include "dashboard.hpp"
 #include "measured_data.hpp"
 #include "ratio_worker.hpp"
 #include "session.hpp"
@@ -53,7 +54,8 @@ class AppState {
     UiState& ui() { return ui_; } // the view (zoom, pan) is edited in place by the mouse
     const LiveSim& sim() const { return sim_; }
     RatioWorker& worker() { return worker_; }
-    int syncs() const { return syncs_; } // how many frames' edits were applied
+    MechanismBase& mechanism() { return mechanism_; } // the mechanism panel's base, kept between frames
+    int syncs() const { return syncs_; }              // how many frames' edits were applied
 
   private:
     RatioRequest ratio_request() const;
@@ -68,6 +70,7 @@ class AppState {
     UiState ui_;
     LiveSim sim_;
     RatioWorker worker_;
+    MechanismBase mechanism_;
     DataFit fit_;
     double step_carry_ = 0;
     bool step_pending_ = false;

@@ -403,14 +403,9 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     return panel;
 }
 
-PanelData mechanism_panel_live(const LiveSim& sim, double rewind) {
-    // The paper's Fig. 4 (the registered fig4: velocity and friction of the rigid model at tau = k pi/4,
-    // their loci, the mean friction) for the current zeta and theta, kept while they stay; the live instant
-    // on top.
-    static std::optional<std::pair<Vec2, PanelData>> cached;
-    const Params& p = sim.params();
+const PanelData& MechanismBase::for_params(const Params& p) {
     const Vec2 key{p.zeta, p.theta};
-    if (!cached || cached->first != key) {
+    if (!cached_ || cached_->first != key) {
         FigureInputs in;
         in.zeta = p.zeta;
         in.theta_deg = p.theta * 180 / kPi;
@@ -418,9 +413,13 @@ PanelData mechanism_panel_live(const LiveSim& sim, double rewind) {
         // Faded: the live arrows are the ones to follow.
         for (ArrowData& a : base.arrows) a.width *= 0.6f, a.label.clear();
         for (SeriesData& x : base.series) x.opacity *= 0.6f;
-        cached.emplace(key, std::move(base));
+        cached_.emplace(key, std::move(base));
     }
-    PanelData panel = cached->second;
+    return cached_->second;
+}
+
+PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double rewind) {
+    PanelData panel = base.for_params(sim.params());
     const SimMoment m = moment_at(sim, rewind);
     const Vec2 v = m.velocity;
     // The friction on the body: against the velocity (rigid), or -F of the asperity (Dahl).
@@ -447,16 +446,19 @@ PanelData enlarged(PanelData panel, float k) {
 
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
-                                    bool busy, LowerPanel lower, const RatioOverlay& overlay, float style) {
+                                    bool busy, LowerPanel lower, const RatioOverlay& overlay, float style,
+                                    MechanismBase* mechanism) {
     const DashboardLayout l = layout_dashboard(area);
+    MechanismBase once;
     DashboardTransforms t;
     t.top_view = paint_panel(canvas, enlarged(top_view_panel(sim, view), style), l.top_view);
     t.force = paint_panel(canvas, enlarged(force_panel_live(sim, curves, view.rewind), style), l.force);
     t.ratio = paint_panel(canvas,
-                          enlarged(lower == LowerPanel::map         ? map_panel_live(sim, curves, busy)
-                                   : lower == LowerPanel::loop      ? loop_panel_live(sim, view.rewind)
-                                   : lower == LowerPanel::mechanism ? mechanism_panel_live(sim, view.rewind)
-                                                                    : ratio_panel_live(curves, busy, overlay),
+                          enlarged(lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
+                                   : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
+                                   : lower == LowerPanel::mechanism
+                                       ? mechanism_panel_live(sim, mechanism ? *mechanism : once, view.rewind)
+                                       : ratio_panel_live(curves, busy, overlay),
                                    style),
                           l.ratio);
     return t;

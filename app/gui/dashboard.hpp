@@ -81,13 +81,25 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
 
 // What the lower-right panel shows.
 enum class LowerPanel { curves, map, loop, mechanism };
+// The mechanism panel's base: the registered fig4 (the paper's Fig. 4: the rigid model's velocity and
+// friction at tau = k pi/4, their loci, the mean friction) for the current zeta and theta, faded. Computing
+// it is a figure's sweep, so it is kept (in AppState) while zeta and theta stay.
+class MechanismBase {
+  public:
+    const PanelData& for_params(const Params& p);
+
+  private:
+    std::optional<std::pair<Vec2, PanelData>> cached_; // (zeta, theta) and the panel
+};
 // The mechanism (the paper's Fig. 4) live: the velocity and the friction on the body at the shown instant
-// over the rigid model's arrows at tau = k pi/4, their loci and the mean friction.
-PanelData mechanism_panel_live(const LiveSim& sim, double rewind = 0);
+// over the base.
+PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double rewind = 0);
+// mechanism: the base kept between frames (nullptr: computed for this call).
 DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, const LiveSim& sim,
                                     const ViewState& view, const std::optional<RatioCurves>& curves,
                                     bool busy, LowerPanel lower = LowerPanel::curves,
-                                    const RatioOverlay& overlay = {}, float style = 1);
+                                    const RatioOverlay& overlay = {}, float style = 1,
+                                    MechanismBase* mechanism = nullptr);
 // The panel with its text, lines and markers k times larger (presentation mode).
 PanelData enlarged(PanelData panel, float k);
 

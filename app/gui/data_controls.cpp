@@ -1,4 +1,5 @@
 #include "data_controls.hpp"
+#include "dialog_footer.hpp"
 
 #include "measured_data.hpp"
 
@@ -184,10 +185,7 @@ std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
         out = d.path;
         ImGui::CloseCurrentPopup();
     }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
-        ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
+    end_dialog_with_cancel();
     return out;
 }
 

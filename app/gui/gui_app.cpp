@@ -211,7 +211,7 @@ class GuiLoop {
         transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app_.sim(),
                                       ui.view, curves, busy, lower_panel(ui),
                                       {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins},
-                                      present ? kPresentationScale : 1.0f);
+                                      present ? kPresentationScale : 1.0f, &app_.mechanism());
         times_.layout = Clock::now();
         canvas.end();
         session_.imgui().render(*ImGui::GetDrawData());
