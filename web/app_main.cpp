@@ -10,6 +10,7 @@
 #include "fv/share_link.hpp"
 
 #include <emscripten.h>
+#include <sys/stat.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -43,6 +44,9 @@ std::string page_query() {
 } // namespace
 
 int main() {
+    // emscripten starts with a umask of 0777, so files the app writes (exports, sessions) would have no
+    // permissions and could not be read back (the download, File > Open session): a desktop's default.
+    ::umask(022);
     try {
         fv::app::GuiOptions o;
         o.platform = "web";

@@ -193,6 +193,8 @@ std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
 
 UiEdits draw_file_dialogs(FileDialogs& dialog) {
     UiEdits e;
+    if (dialog.data.open_requested && dialog.choose_data && dialog.choose_data())
+        dialog.data.open_requested = false;
     e.load_data =
         path_dialog(dialog.data, {"Open data file",
                                   "CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f "

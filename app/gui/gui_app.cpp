@@ -81,10 +81,12 @@ class ImGuiScope {
 
 // The files a frame's actions ask for; the status line says what was written or why not.
 void write_requested_files(const AppState::Actions& act, const std::string& screenshot_path,
-                           const RenderSession& session, AppState& app, int& shots, int& exports) {
+                           const RenderSession& session, Platform& platform, AppState& app, int& shots,
+                           int& exports) {
     auto report = [&](const std::string& path, const std::string& err, const char* what) {
         app.ui().status = err.empty() ? "wrote " + path + what : err;
         if (!err.empty()) std::fprintf(stderr, "frictionviz: %s\n", err.c_str());
+        if (err.empty()) platform.file_written(path);
     };
     if (act.screenshot || !screenshot_path.empty()) {
         const std::string path = !screenshot_path.empty()
@@ -120,7 +122,9 @@ class GuiLoop {
           scripted_(o.frames > 0 || o.bench_frames > 0),
           real_time_(platform_->interactive() && !scripted_), // else a fixed 1/60 s per frame, no mouse
           script_(o.script.empty() ? Script{} : load_script(o.script)), app_(o.start, o.data, o.session_file),
-          animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {}
+          animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {
+        dialog_.choose_data = [this] { return platform_->choose_file(".csv"); };
+    }
 
     int run() {
         for (int frame = 0; total_frames_ == 0 || frame < total_frames_; ++frame) {
@@ -222,8 +226,8 @@ class GuiLoop {
     // 4. Files, then show the frame, then its times.
     void finish(int frame) {
         const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
-        write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, app_, shots_,
-                              exports_);
+        write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_, app_,
+                              shots_, exports_);
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)

@@ -56,6 +56,17 @@ class Platform {
     // Shows the frame (swap buffers; nothing headless).
     virtual void present() = 0;
 
+    // The platform's own file chooser for a file of the kind `accept` (".csv"), where it has one (the web
+    // page's file input): true when it opened; the file chosen arrives later among PlatformEvents::dropped,
+    // as if dropped. False: the app shows its own path dialog.
+    virtual bool choose_file(const std::string& accept) {
+        (void)accept;
+        return false;
+    }
+    // A file the user asked for (a screenshot, an export, a session) was written at `path`: the web platform
+    // hands a copy to the browser as a download; elsewhere the file is where it belongs already.
+    virtual void file_written(const std::string& path) { (void)path; }
+
   protected:
     Platform() = default;
 };

@@ -13,6 +13,45 @@
 namespace fv::app {
 namespace {
 
+// The browser's file input for a file of the kind `accept`; the file chosen goes the way of a file dropped
+// onto the canvas (emscripten's GLFW: read into the in-memory file system, /.glfw_dropped_files/NAME, then
+// the drop callback). Browsers open the chooser only shortly after a user's click, which this follows.
+// clang-format off
+EM_JS(void, fv_web_choose_file, (const char* accept), {
+    var input = document.createElement("input");
+    input.type = "file";
+    input.accept = UTF8ToString(accept);
+    input.onchange = function() {
+        if (input.files && input.files.length > 0)
+            GLFW.onDrop({dataTransfer: {files: input.files}, preventDefault: function() {}});
+    };
+    input.click();
+});
+
+// A file of the in-memory file system to the browser as a download (a Blob behind a link clicked once).
+EM_JS(void, fv_web_download, (const char* path), {
+    var p = UTF8ToString(path);
+    var data = FS.readFile(p);
+    var name = p.substring(p.lastIndexOf("/") + 1);
+    var types = {png: "image/png", csv: "text/csv", json: "application/json"};
+    var ext = name.substring(name.lastIndexOf(".") + 1).toLowerCase();
+    var url = URL.createObjectURL(new Blob([data], {type: types[ext] || "application/octet-stream"}));
+    var a = document.createElement("a");
+    a.href = url;
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(function() { URL.revokeObjectURL(url); }, 60000);
+    console.log("frictionviz: download " + name + " (" + data.length + " bytes)");
+});
+
+// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page).
+EM_JS(void, fv_web_frame_shown, (), {
+    if (Module["fvFrame"]) Module["fvFrame"]();
+});
+// clang-format on
+
 gfx::WindowOptions canvas_options(const PlatformOptions& o) {
     gfx::WindowOptions w;
     w.title = o.title;
@@ -60,11 +99,18 @@ class WebPlatform final : public Platform {
     // page's clock moves only with its timers.
     void present() override {
         ctx_.present();
+        fv_web_frame_shown();
         const double now = emscripten_get_now();
         const double wait = last_present_ > 0 ? 1000.0 / 60 - (now - last_present_) : 1000.0 / 60;
         emscripten_sleep(static_cast<unsigned>(wait > 1 ? wait : 1));
         last_present_ = emscripten_get_now();
     }
+
+    bool choose_file(const std::string& accept) override {
+        fv_web_choose_file(accept.c_str());
+        return true;
+    }
+    void file_written(const std::string& path) override { fv_web_download(path.c_str()); }
 
   private:
     gfx::WindowContext ctx_;

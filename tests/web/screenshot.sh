@@ -14,19 +14,8 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
-python3 -u -m http.server --bind 127.0.0.1 --directory "$site" 0 >"$tmp/server.log" 2>&1 &
-server=$!
-port=""
-for _ in $(seq 1 100); do
-  port=$(sed -n 's/^Serving HTTP on 127\.0\.0\.1 port \([0-9]*\).*/\1/p' "$tmp/server.log")
-  [ -n "$port" ] && break
-  sleep 0.1
-done
-if [ -z "$port" ]; then
-  echo "screenshot.sh: the HTTP server did not start:" >&2
-  cat "$tmp/server.log" >&2
-  exit 1
-fi
+source "$(dirname "$0")/serve.sh"
+fv_serve "$site" "$tmp/server.log"
 rm -f "$out"
 action=(--screenshot="$out")
 case $out in *.html) action=(--dump-dom) ;; esac

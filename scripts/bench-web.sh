@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Times the browser build in headless Chromium (software WebGL 2, as the web tests): the first frame after
+# navigation start, and slider edits made with mouse events on the canvas, from the event to the end of the
+# frame that shows the new state. Prints the numbers; not a pass/fail test (#15's targets: first frame
+# <= 3 s, slider to frame <= 33 ms). Real time, not virtual: run it on a quiet machine (uptime is printed).
+#   scripts/bench-web.sh [SITE_DIR]      (default build-web/site; scripts/build-web.sh makes it)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+site=${1:-build-web/site}
+[ -f "$site/frictionviz.wasm" ] || { echo "bench-web: no site in $site (run scripts/build-web.sh)" >&2; exit 2; }
+tmp=$(mktemp -d)
+server="" browser=""
+cleanup() {
+  for p in $browser $server; do kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; done
+  rm -rf "$tmp"
+}
+trap cleanup EXIT
+mkdir "$tmp/site"
+cp "$site/frictionviz.js" "$site/frictionviz.wasm" bench/web/bench.html tests/web/page_input.js "$tmp/site/"
+source tests/web/serve.sh
+fv_serve "$tmp/site" "$tmp/server.log"
+echo "load: $(uptime)"
+chromium --headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader \
+  --user-data-dir="$tmp/profile" --no-first-run --window-size=1280,800 --enable-logging=stderr --v=0 \
+  "http://127.0.0.1:$port/bench.html${FV_BENCH_QUERY:-}" 2>"$tmp/chromium.log" &
+browser=$!
+for _ in $(seq 1 1200); do
+  grep -aq 'fv-bench: done' "$tmp/chromium.log" && break
+  if ! kill -0 "$browser" 2>/dev/null; then break; fi
+  sleep 0.1
+done
+grep -a 'fv-bench: ' "$tmp/chromium.log" | sed 's/^.*fv-bench: /  /; s/", source:.*$//'
+grep -aq 'fv-bench: done' "$tmp/chromium.log" || { echo "bench-web: the page did not finish in 120 s" >&2; exit 1; }
