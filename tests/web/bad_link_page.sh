@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
 # The app's page opened with a share link that does not read: the page says why, in the words of the desktop
-# app's own `gui --link` error (the same parser), and shows the default setup: its screenshot against the
-# desktop app's default headless screenshot, with the tolerance of app_page_vs_headless.sh (the message over
-# the top view counts among the differences).
+# app's own `gui --link` error (the same parser), and shows the default setup: the panel of its screenshot
+# (sliders, readouts: the left 340 px) against the desktop app's default headless screenshot: a pixel differs
+# past 32 levels, at most 0.3% of them may. Only the panel: the message covers the top view's title, and how
+# far the animation has run when the shot is taken varies with the page's start-up (2.4-3.7% of the whole
+# page differed). Measured 0.07% of the panel; the page opened with the link's zeta = 0.45 applied would
+# differ by 1.0% (its values in the panel).
 #   bad_link_page.sh SITE_DIR FRICTIONVIZ FV_PNG_COMPARE OUTDIR BAD_LINK
 set -euo pipefail
 site=$1 exe=$2 compare=$3 out=$4 link=$5
@@ -29,4 +32,5 @@ fi
 echo "page says: $expected"
 bash "$here/screenshot.sh" "$site" "$link" "$out/bad-link-web.png" 1280 800
 "$exe" gui --headless --frames 600 --screenshot "$out/default-headless.png" >/dev/null
-"$compare" "$out/bad-link-web.png" "$out/default-headless.png" 32 0.03 "$out/bad-link-web-vs-default.diff.png"
+"$compare" "$out/bad-link-web.png" "$out/default-headless.png" 32 0.003 "$out/bad-link-web-vs-default.diff.png" \
+  0,0,340,800
