@@ -2,11 +2,8 @@
 // 2; the GL context is gfx::WindowContext, as on the desktop) with Dear ImGui's GLFW input backend. The app's
 // loop (run_gui) is a plain loop; present() hands control back to the browser once per frame
 // (emscripten_sleep under ASYNCIFY), so the page stays responsive and the canvas is shown.
-#include "platform.hpp"
+#include "platform_glfw.hpp"
 
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
-#include <backends/imgui_impl_glfw.h>
 #include <emscripten.h>
 #include <imgui.h>
 
@@ -61,38 +58,19 @@ gfx::WindowOptions canvas_options(const PlatformOptions& o) {
     return w;
 }
 
-class WebPlatform final : public Platform {
+class WebPlatform final : public GlfwPlatform {
   public:
-    explicit WebPlatform(const PlatformOptions& o) : ctx_(canvas_options(o)) {}
-    ~WebPlatform() override { disconnect_imgui(); }
+    explicit WebPlatform(const PlatformOptions& o) : GlfwPlatform(canvas_options(o)) {}
 
     std::string_view name() const override { return "web"; }
-    gfx::GpuContext& context() override { return ctx_; }
     // emscripten's GLFW sizes the canvas in CSS pixels: one pixel per logical unit.
     float pixel_ratio() const override { return 1.0f; }
-    bool interactive() const override { return true; }
-    void connect_imgui() override {
-        if (!connected_) connected_ = ImGui_ImplGlfw_InitForOpenGL(ctx_.native(), true);
-    }
-    void disconnect_imgui() override {
-        if (connected_) ImGui_ImplGlfw_Shutdown();
-        connected_ = false;
-    }
-    PlatformEvents poll() override {
-        ctx_.poll_events();
-        const bool f1 = glfwGetKey(ctx_.native(), GLFW_KEY_F1) == GLFW_PRESS;
-        const bool pressed = f1 && !f1_down_;
-        f1_down_ = f1;
-        return {false, ctx_.take_dropped_paths(), pressed};
-    }
     void imgui_new_frame(gfx::Vec2 logical) override {
-        ImGui_ImplGlfw_NewFrame();
-        ImGuiIO& io = ImGui::GetIO();
+        GlfwPlatform::imgui_new_frame(logical);
         // Under Chromium's --virtual-time-budget (the tests) the clock stands still: ImGui needs time to
         // pass.
+        ImGuiIO& io = ImGui::GetIO();
         if (!(io.DeltaTime > 0)) io.DeltaTime = 1.0f / 60.0f;
-        io.DisplaySize = ImVec2(logical.x, logical.y);
-        io.DisplayFramebufferScale = ImVec2(1, 1);
     }
     // Back to the browser, which shows the frame and delivers input, for what is left of 1/60 s since the
     // last frame (at least 1 ms). A timer, not a busy wait: under a virtual time budget (the tests) the
@@ -113,9 +91,6 @@ class WebPlatform final : public Platform {
     void file_written(const std::string& path) override { fv_web_download(path.c_str()); }
 
   private:
-    gfx::WindowContext ctx_;
-    bool connected_ = false;
-    bool f1_down_ = false;
     double last_present_ = 0; // emscripten_get_now() after the last frame, ms
 };
 
