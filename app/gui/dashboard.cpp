@@ -255,19 +255,14 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         }
         panel.series.push_back(key("T slips", Ink::tip, 9, 0.25f));
     }
-    // F_x averaged over the period before each instant (prefix sums over the samples): once the transient is
+    // F_x averaged over the period before each instant (the history's running sums): once the transient is
     // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
     SeriesData run{"F_{x}, mean of last period", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
-    {
-        std::vector<double> prefix(h.size() + 1, 0.0);
-        for (std::size_t k = 0; k < h.size(); ++k) prefix[k + 1] = prefix[k] + h[k].F.x();
-        const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
-        for (std::size_t k = n; k < h.size(); k += stride) {
-            if (h[k].tau < t0) continue;
-            if (h[k].tau > t1) break;
-            run.x.push_back(h[k].tau),
-                run.y.push_back((prefix[k + 1] - prefix[k + 1 - n]) / static_cast<double>(n));
-        }
+    const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
+    for (std::size_t k = n; k < h.size(); k += stride) {
+        if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
+        run.x.push_back(h[k].tau), run.y.push_back((h[k].fx_sum - h[k - n].fx_sum) / static_cast<double>(n));
     }
     if (!run.x.empty()) panel.series.push_back(std::move(run));
     if (curves && curves->request.params.zeta == sim.params().zeta)

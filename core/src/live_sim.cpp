@@ -112,6 +112,7 @@ void LiveSim::record() {
     s.T = model_ == Model::rigid ? s.P : Vec2(s.P - lag_);
     s.F = force();
     s.slip = slipping();
+    s.fx_sum = (history_.empty() ? 0.0 : history_.back().fx_sum) + s.F.x();
     history_.push_back(s);
     const double keep = history_periods_ * 2 * kPi;
     while (!history_.empty() && history_.front().tau < tau_ - keep) history_.pop_front();

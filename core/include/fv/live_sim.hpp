@@ -16,6 +16,9 @@ struct LiveSample {
     Vec2 P{0, 0}, T{0, 0}; // display coordinates (continuous across parameter changes)
     Vec2 F{0, 0};          // F / F_c
     bool slip = false;     // the tip slips (LiveSim::slipping) at this instant
+    // F_x summed over the history's samples up to this one (from its last restart): the mean of F_x over the
+    // n samples before an instant is a difference of two, (fx_sum[k] - fx_sum[k - n]) / n.
+    double fx_sum = 0;
 };
 
 class LiveSim {
