@@ -5,7 +5,10 @@
 #include "platform_glfw.hpp"
 
 #include <emscripten.h>
+#include <emscripten/html5.h>
 #include <imgui.h>
+
+#include <cmath>
 
 namespace fv::app {
 namespace {
@@ -49,22 +52,31 @@ EM_JS(void, fv_web_frame_shown, (), {
 });
 // clang-format on
 
+// Framebuffer pixels per CSS pixel: as asked, else the screen's (window.devicePixelRatio: 2 on a HiDPI
+// screen, also with the browser's zoom).
+float canvas_ratio(const PlatformOptions& o) {
+    return o.scale > 0 ? o.scale : static_cast<float>(emscripten_get_device_pixel_ratio());
+}
+
+// The canvas in framebuffer pixels (its width and height attributes: emscripten's GLFW counts the window in
+// them, and the mouse too); index.html's style shows it at 1280 x 800 CSS pixels.
 gfx::WindowOptions canvas_options(const PlatformOptions& o) {
+    const float r = canvas_ratio(o);
     gfx::WindowOptions w;
     w.title = o.title;
-    w.width = o.width > 0 ? o.width : 1280;
-    w.height = o.height > 0 ? o.height : 800;
+    w.width = o.width > 0 ? o.width : static_cast<int>(std::lround(1280 * r));
+    w.height = o.height > 0 ? o.height : static_cast<int>(std::lround(800 * r));
     w.scale_to_monitor = false;
     return w;
 }
 
 class WebPlatform final : public GlfwPlatform {
   public:
-    explicit WebPlatform(const PlatformOptions& o) : GlfwPlatform(canvas_options(o)) {}
+    explicit WebPlatform(const PlatformOptions& o)
+        : GlfwPlatform(canvas_options(o)), ratio_(canvas_ratio(o)) {}
 
     std::string_view name() const override { return "web"; }
-    // emscripten's GLFW sizes the canvas in CSS pixels: one pixel per logical unit.
-    float pixel_ratio() const override { return 1.0f; }
+    float pixel_ratio() const override { return ratio_; }
     void imgui_new_frame(gfx::Vec2 logical) override {
         GlfwPlatform::imgui_new_frame(logical);
         // Under Chromium's --virtual-time-budget (the tests) the clock stands still: ImGui needs time to
@@ -91,6 +103,7 @@ class WebPlatform final : public GlfwPlatform {
     void file_written(const std::string& path) override { fv_web_download(path.c_str()); }
 
   private:
+    float ratio_;
     double last_present_ = 0; // emscripten_get_now() after the last frame, ms
 };
 
