@@ -2,6 +2,8 @@
 # fv_serve DIR LOG serves DIR from 127.0.0.1 with python3's http.server on a free port, in the background;
 # sets $server (its pid, for the caller to stop) and $port, or fails with the server's log.
 fv_serve() {
+  # The log exists before the loop reads it (the background job opens it only when it gets to run).
+  : >"$2"
   python3 -u -m http.server --bind 127.0.0.1 --directory "$1" 0 >"$2" 2>&1 &
   server=$!
   port=""
