@@ -3,7 +3,8 @@
 # Export trace CSV reaches the browser as a text/csv Blob with the trace's header; Open data file… takes a
 # CSV through the page's file input into the same reader as the desktop app's: the page's screenshot against
 # `gui --headless --frames 600 --data FILE` (the status line names the file by another path: counted among
-# the differences), with the tolerance of app_page_vs_headless.sh.
+# the differences), with the tolerance of app_page_vs_headless.sh. On a HiDPI screen (devicePixelRatio 2,
+# against --scale 2): the clicks, in CSS pixels, must land on the menu drawn at twice the pixels.
 #   file_io_page.sh SITE_DIR FRICTIONVIZ FV_PNG_COMPARE OUTDIR DATA_CSV
 set -euo pipefail
 site=$1 exe=$2 compare=$3 out=$4 data=$5
@@ -15,12 +16,12 @@ cp "$site/frictionviz.js" "$site/frictionviz.wasm" "$tmp/"
 cp "$here/file_io.html" "$tmp/index.html"
 cp "$here/page_input.js" "$tmp/"
 cp "$data" "$tmp/data.csv"
-bash "$here/screenshot.sh" "$tmp" "" "$out/file-io-web.png" 1280 800 | tee "$out/file-io-console.txt"
+bash "$here/screenshot.sh" "$tmp" "" "$out/file-io-web.png" 1280 800 10000 2 | tee "$out/file-io-console.txt"
 fail=0
 grep -q 'fv-io: download text/csv [1-9][0-9]* bytes, first line tau,Px,Py,Tx,Ty,z,Fx,Fy' "$out/file-io-console.txt" ||
   { echo "no trace CSV download from File > Export trace CSV" >&2; fail=1; }
 grep -q 'fv-io: file input opened, accept .csv' "$out/file-io-console.txt" ||
   { echo "File > Open data file… did not open the browser's file input" >&2; fail=1; }
 [ "$fail" -eq 0 ] || exit 1
-"$exe" gui --headless --frames 600 --data "$data" --screenshot "$out/file-io-headless.png" >/dev/null
+"$exe" gui --headless --frames 600 --scale 2 --data "$data" --screenshot "$out/file-io-headless.png" >/dev/null
 "$compare" "$out/file-io-web.png" "$out/file-io-headless.png" 32 0.03 "$out/file-io-web-vs-headless.diff.png"
