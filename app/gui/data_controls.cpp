@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 namespace fv::app {
@@ -193,8 +194,8 @@ std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
 
 UiEdits draw_file_dialogs(FileDialogs& dialog) {
     UiEdits e;
-    if (dialog.data.open_requested && dialog.choose_data && dialog.choose_data())
-        dialog.data.open_requested = false;
+    for (auto [d, accept] : {std::pair{&dialog.data, ".csv"}, std::pair{&dialog.open_session, ".json"}})
+        if (d->open_requested && dialog.choose && dialog.choose(accept)) d->open_requested = false;
     e.load_data =
         path_dialog(dialog.data, {"Open data file",
                                   "CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f "

@@ -16,9 +16,10 @@ struct PathDialog {
 // The File menu's dialogs: open a data file, open a session, save a session.
 struct FileDialogs {
     PathDialog data, open_session, save_session;
-    // The platform's own chooser for the data file (the browser's file input; the file arrives as a drop):
-    // true when it opened instead of the path dialog. May be empty.
-    std::function<bool()> choose_data;
+    // The platform's own chooser for files to open, given the extension they take (the browser's file
+    // input; the file arrives as a drop, routed by its extension): true when it opened instead of the path
+    // dialog. May be empty.
+    std::function<bool(const std::string& accept)> choose;
 };
 
 // Amplitude and frequency inputs; v_b and z_ss as inputs that set zeta and r_disp (Eqs. (6), (34)).

@@ -111,9 +111,10 @@ double thread_cpu_ms() {
     return static_cast<double>(ts.tv_sec) * 1e3 + static_cast<double>(ts.tv_nsec) * 1e-6;
 }
 
-// The app's frame loop, one method per phase: poll → sync (every edit at one point) → advance (fixed
-// simulation steps) → draw (the panel's and the mouse's edits queued for the next frame) → finish (files,
-// present, frame times).
+// The app's frame loop, one method per phase: poll → build the panel (its edits queued) → sync (every edit
+// at one point) → advance (fixed simulation steps) → draw → finish (files, present, frame times). The panel
+// is built before the sync, so a slider moved in a frame moves the scene in that same frame (one frame from
+// input to picture, not two: the browser's 33 ms slider-to-frame budget is two frames at 60 Hz).
 class GuiLoop {
   public:
     explicit GuiLoop(const GuiOptions& o)
@@ -123,13 +124,16 @@ class GuiLoop {
           real_time_(platform_->interactive() && !scripted_), // else a fixed 1/60 s per frame, no mouse
           script_(o.script.empty() ? Script{} : load_script(o.script)), app_(o.start, o.data, o.session_file),
           animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {
-        dialog_.choose_data = [this] { return platform_->choose_file(".csv"); };
+        dialog_.choose = [this](const std::string& accept) { return platform_->choose_file(accept); };
     }
 
     int run() {
         for (int frame = 0; total_frames_ == 0 || frame < total_frames_; ++frame) {
             times_.start = Clock::now();
             cpu_start_ = thread_cpu_ms();
+            events_ = platform_->poll();
+            if (events_.close) break;
+            build_ui();
             if (!sync(frame)) break;
             advance();
             draw();
@@ -142,7 +146,7 @@ class GuiLoop {
 
   private:
     struct FrameTimes {
-        Clock::time_point start, ui, layout, gl;
+        Clock::time_point start, sim, layout, gl;
     };
 
     static PlatformOptions platform_options(const GuiOptions& o) {
@@ -154,13 +158,38 @@ class GuiLoop {
         return po;
     }
 
-    // 1. Events, then all edits of the previous frame (panel, keys, mouse, drops) and of the script, applied
-    //    at one point. A drop shows the last file (one data set at a time). False: the app closes.
+    // 1. The panel through ImGui, from the state after the previous frame's sync; its edits, the keys' and
+    //    the mouse's are queued for this frame's sync.
+    void build_ui() {
+        const gfx::Vec2 logical = session_.logical_page();
+        const UiState& ui = app_.ui();
+        const float panel_w = panel_w_ = ui.presentation ? 450 : kPanelWidth;
+        ImGui::GetIO().FontDefault = session_.fonts().font_for(ui.presentation ? 22 : 15);
+        platform_->imgui_new_frame(logical);
+        if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
+        ImGui::NewFrame();
+        // Without threads (the browser) the curves are computed here, a few milliseconds a frame.
+        app_.worker().run_slice(std::chrono::milliseconds(6));
+        queued_.merge(draw_controls(ui, app_.sim(), app_.worker().latest(), app_.worker().busy(), panel_w,
+                                    logical.y, dialog_));
+        queued_.export_animation = draw_export_dialog(export_dialog_, ui.speed, animation_.running());
+        queued_.merge(keyboard_edits(ui));
+        handle_dashboard_mouse(app_.ui().view, app_.sim(), transforms_);
+        if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
+            queued_.show_help = false;
+        ImGui::Render();
+    }
+
+    // 2. All edits — the panel's, keys, mouse, drops and the script's — applied at one point. A dropped
+    //    .json opens as a session, anything else as data (the last file: one data set at a time). False: the
+    //    app closes.
     bool sync(int frame) {
-        PlatformEvents events = platform_->poll();
-        if (events.close) return false;
-        if (!events.dropped.empty()) queued_.load_data = std::move(events.dropped.back());
-        if (events.help_key) queued_.show_help = !app_.ui().show_help;
+        if (!events_.dropped.empty()) {
+            std::string& path = events_.dropped.back();
+            const bool session = path.size() >= 5 && path.compare(path.size() - 5, 5, ".json") == 0;
+            (session ? queued_.open_session : queued_.load_data) = std::move(path);
+        }
+        if (events_.help_key) queued_.show_help = !app_.ui().show_help;
         queued_.merge(script_edits(script_, frame, app_.ui()));
         if (o_.bench_frames > 0) queued_.params = bench_params(app_.ui().params, frame);
         act_ = app_.sync(queued_, scripted_);
@@ -176,7 +205,7 @@ class GuiLoop {
         return true;
     }
 
-    // 2. Simulation time: fixed steps, their number from the elapsed wall time (a fixed 1/60 s per frame when
+    // 3. Simulation time: fixed steps, their number from the elapsed wall time (a fixed 1/60 s per frame when
     //    not real time, so that scripted runs are reproducible).
     void advance() {
         const auto now = Clock::now();
@@ -184,32 +213,17 @@ class GuiLoop {
                                 : 1.0 / 60);
         last_ = now;
         if (scripted_ && o_.bench_frames == 0) app_.worker().wait_idle(); // reproducible pictures
+        times_.sim = Clock::now();
     }
 
-    // 3. Draw: the panel through ImGui (its edits queued for the next frame), the dashboard through the
-    // canvas,
-    //    the panel on top.
+    // 4. Draw: the dashboard through the canvas from the state after this frame's sync, the panel on top.
     void draw() {
         const gfx::Vec2 logical = session_.logical_page();
         const UiState& ui = app_.ui();
         const bool present = ui.presentation;
-        const float panel_w = present ? 450 : kPanelWidth;
-        ImGui::GetIO().FontDefault = session_.fonts().font_for(present ? 22 : 15);
-        platform_->imgui_new_frame(logical);
-        if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
-        ImGui::NewFrame();
-        // Without threads (the browser) the curves are computed here, a few milliseconds a frame.
-        app_.worker().run_slice(std::chrono::milliseconds(6));
+        const float panel_w = panel_w_; // the panel's as built (presentation may have changed since)
         const auto curves = app_.worker().latest();
         const bool busy = app_.worker().busy();
-        queued_.merge(draw_controls(ui, app_.sim(), curves, busy, panel_w, logical.y, dialog_));
-        queued_.export_animation = draw_export_dialog(export_dialog_, ui.speed, animation_.running());
-        queued_.merge(keyboard_edits(ui));
-        handle_dashboard_mouse(app_.ui().view, app_.sim(), transforms_);
-        if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
-            queued_.show_help = false;
-        ImGui::Render();
-        times_.ui = Clock::now();
         gfx::Canvas& canvas = session_.canvas();
         canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
         transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app_.sim(),
@@ -223,7 +237,7 @@ class GuiLoop {
         times_.gl = Clock::now();
     }
 
-    // 4. Files, then show the frame, then its times.
+    // 5. Files, then show the frame, then its times.
     void finish(int frame) {
         const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
         write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_, app_,
@@ -231,7 +245,7 @@ class GuiLoop {
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)
-            stats_.record(ms, Ms(times_.ui - times_.start).count(), Ms(times_.layout - times_.ui).count(),
+            stats_.record(ms, Ms(times_.sim - times_.start).count(), Ms(times_.layout - times_.sim).count(),
                           Ms(times_.gl - times_.layout).count(), thread_cpu_ms() - cpu_start_);
             // Without vsync (e.g. Xvfb) do not spin: about 60 frames per second are plenty. (The web platform
             // paces its frames in present(), where it hands control back to the browser.)
@@ -251,7 +265,9 @@ class GuiLoop {
     ExportDialog export_dialog_;
     AnimationExportJob animation_;
     const int total_frames_;
-    UiEdits queued_;          // edits made while drawing, applied by the next frame's sync
+    PlatformEvents events_; // this frame's, polled before the panel is built
+    float panel_w_ = kPanelWidth;
+    UiEdits queued_;          // the panel's, keys' and mouse's edits, applied by this frame's sync
     AppState::Actions act_{}; // what this frame's sync asks for (files, dialogs)
     DashboardTransforms transforms_{};
     FrameStats stats_;
