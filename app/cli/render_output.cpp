@@ -88,8 +88,8 @@ void add_output_options(CLI::App& cmd, OutputArgs& args) {
     cmd.add_option(
            "--format", args.format,
            std::string("output formats: ") + kFormats +
-               "; FIGURE.png, FIGURE.svg, FIGURE.pdf (SVG and PDF: vectors and real text, the page the "
-               "logical size in points)")
+               "; FIGURE.png, FIGURE.svg, FIGURE.pdf (SVG and PDF: vectors, the page the logical size in "
+               "points; PDF text is text, SVG text glyph outlines)")
         ->check(CLI::Validator([](std::string& s) { return parse_formats(s, nullptr); }, "png|svg|pdf,.."))
         ->capture_default_str();
     cmd.add_option("--scale", args.scale,

@@ -2,9 +2,13 @@
 
 #include "fv/gfx/plot.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <string_view>
 #include <variant>
+#include <vector>
 
 namespace fv::app {
 namespace {
@@ -320,13 +324,59 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     return plot.draw(canvas);
 }
 
-void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
+namespace {
+
+// The figure's title centred at the top of `bounds`, within its width: at 22 units where it fits, else
+// smaller down to 16, else on two lines broken after the ", ", "; " or ": " that balances them best (as
+// large as both fit, at most 22). Returns where the title ends.
+float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds) {
+    constexpr float kSize = 22, kMinOneLine = 16, kTop = 12, kLeading = 1.15f;
+    const float avail = std::max(1.0f, bounds.width() - 16);
     gfx::TextStyle ts;
-    ts.size = 22;
     ts.halign = gfx::HAlign::Center;
     ts.valign = gfx::VAlign::Top;
-    canvas.text({(bounds.x0 + bounds.x1) / 2, bounds.y0 + 12}, fig.title, ts);
-    const gfx::Rect body{bounds.x0 + 8, bounds.y0 + 48, bounds.x1 - 8, bounds.y1 - 8};
+    const float cx = (bounds.x0 + bounds.x1) / 2;
+    auto width = [&](std::string_view s, float size) { return canvas.measure_text(s, size).x; };
+    // The largest size (in steps of 0.5) at which every line fits, not below `floor`.
+    auto fit = [&](const std::vector<std::string_view>& lines, float floor) {
+        float size = kSize;
+        for (;;) {
+            bool fits = true;
+            for (std::string_view l : lines) fits = fits && width(l, size) <= avail;
+            if (fits || size - 0.5f < floor) return size;
+            size -= 0.5f;
+        }
+    };
+    const float one = fit({title}, kMinOneLine);
+    std::string_view first, second;
+    if (width(title, one) > avail) {
+        float best = 1e30f;
+        int depth = 0; // no break inside markup braces
+        for (std::size_t k = 0; k + 1 < title.size(); ++k) {
+            depth += title[k] == '{' ? 1 : (title[k] == '}' ? -1 : 0);
+            if (depth != 0 || title[k + 1] != ' ' || (title[k] != ',' && title[k] != ';' && title[k] != ':'))
+                continue;
+            const std::string_view a(title.data(), k + 1), b(title.data() + k + 2, title.size() - k - 2);
+            const float w = std::max(width(a, kSize), width(b, kSize));
+            if (w < best) best = w, first = a, second = b;
+        }
+    }
+    if (second.empty()) {
+        ts.size = one;
+        canvas.text({cx, bounds.y0 + kTop}, title, ts);
+        return bounds.y0 + kTop + one;
+    }
+    ts.size = fit({first, second}, 1);
+    canvas.text({cx, bounds.y0 + kTop}, std::string(first), ts);
+    canvas.text({cx, bounds.y0 + kTop + kLeading * ts.size}, std::string(second), ts);
+    return bounds.y0 + kTop + (1 + kLeading) * ts.size;
+}
+
+} // namespace
+
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
+    const float title_end = paint_title(canvas, fig.title, bounds);
+    const gfx::Rect body{bounds.x0 + 8, title_end + 14, bounds.x1 - 8, bounds.y1 - 8};
     if (fig.panels.size() == 3) {
         const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
         paint_panel(canvas, fig.panels[0], {body.x0, body.y0, split - 6, body.y1});

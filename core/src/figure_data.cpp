@@ -162,7 +162,7 @@ PanelData top_view(const Params& p, const std::vector<Sample>& period, const std
 PanelData force_panel(const std::vector<Sample>& period) {
     PanelData panel;
     panel.x_title = "time τ = ωt over one period";
-    panel.y_title = "friction force F / F_{c}";
+    panel.y_title = "F / F_{c} = (P − T) / z_{ss}"; // the convention; the captions say what it means
     panel.y_min = -1.15;
     panel.y_max = 1.15;
     panel.x_min = 0;
@@ -484,7 +484,7 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         PanelData view = top_view(p, r.period, nullptr);
         view.title = "top view";
         PanelData force = force_panel(r.period);
-        force.title = "force over one period";
+        force.title = "friction force over one period";
         TableData ratios{"-ratio", {}, {}, ""};
         PanelData curve = ratio_panel(spec, ratios.ratios, threads);
         curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry);

@@ -63,7 +63,8 @@ FigureSpec scene_figure(const Params& p) {
     f.title = params_title(p);
     f.caption = "One parameter set, " + plain_text(params_title(p)) +
                 ": top view of P and T, the friction force over one steady-state period, and r_x(ζ) with the "
-                "rigid curve and the current point.";
+                "rigid curve and the current point." +
+                std::string(kForceConvention);
     f.zetas = ratio_zeta_start();
     f.zeta_budget = kRatioZetaBudget;
     f.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};

@@ -98,4 +98,10 @@ std::string params_title(const Params& p);
 // The dashboard of one parameter set: top view, force over a period, r_x(zeta) with the rigid curve.
 FigureSpec scene_figure(const Params& p);
 
+// The sign convention of every force plot (Figs. 15, 16, 18, the scene), named in their captions; their
+// y axis reads "F / F_c = (P − T) / z_ss".
+inline constexpr const char* kForceConvention =
+    " F = (P − T) F_c / z_ss (Eqs. 23–24), the spring's pull on the asperity tip T, towards the body "
+    "point P: positive along v_b, so the friction on the body is −F and r_x is the mean of F_x / F_c.";
+
 } // namespace fv

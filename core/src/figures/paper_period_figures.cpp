@@ -89,12 +89,14 @@ const RegisterFigure register_fig15{period_figure(
     "fig15", "friction force over one period, ζ = 0.15, i = 1", FigureKind::period_force, kFig14a,
     "Fig. 15: friction force over one period, " + params_title(kFig14a),
     "F_x, F_y and |F| over the steady period of Fig. 14a (ζ = 0.15, θ = 90°, r_disp = 2, i = 1): |F| drops "
-    "well below F_c while the asperity relaxes.")};
+    "well below F_c while the asperity relaxes." +
+        std::string(kForceConvention))};
 
 const RegisterFigure register_fig16{period_figure(
     "fig16", "friction force over one period, ζ = 0.15, i = 0", FigureKind::period_force, kFig14b,
     "Fig. 16: friction force over one period, " + params_title(kFig14b),
-    "F_x, F_y and |F| over the steady period of Fig. 14b (ζ = 0.15, θ = 90°, r_disp = 2, i = 0).")};
+    "F_x, F_y and |F| over the steady period of Fig. 14b (ζ = 0.15, θ = 90°, r_disp = 2, i = 0)." +
+        std::string(kForceConvention))};
 
 const RegisterFigure register_fig17{period_figure(
     "fig17", "top view, ζ = 0.5, θ = 90°, r_disp = 2, i = 1 and 0", FigureKind::period_view, kFig17,
@@ -106,7 +108,8 @@ const RegisterFigure register_fig18{period_figure(
     "fig18", "friction force over one period, ζ = 0.5, i = 1", FigureKind::period_force, kFig17,
     "Fig. 18: friction force over one period, " + params_title(kFig17),
     "F_x, F_y and |F| over the steady period of Fig. 17 (ζ = 0.5, θ = 90°, r_disp = 2, i = 1): |F| = F_c "
-    "throughout.")};
+    "throughout." +
+        std::string(kForceConvention))};
 
 } // namespace
 } // namespace fv
