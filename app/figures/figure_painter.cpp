@@ -155,8 +155,10 @@ gfx::Color ink_color(Ink ink, std::size_t series_index) {
     return gfx::palette(series_index);
 }
 
-gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds) {
+gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
+                               bool legend_below) {
     gfx::Plot plot(bounds);
+    plot.legend_below = legend_below;
     plot.title = panel.title;
     plot.x_axis.title = panel.x_title;
     plot.y_axis.title = panel.y_title;
@@ -379,15 +381,15 @@ void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& b
     const gfx::Rect body{bounds.x0 + 8, title_end + 14, bounds.x1 - 8, bounds.y1 - 8};
     if (fig.panels.size() == 3) {
         const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
-        paint_panel(canvas, fig.panels[0], {body.x0, body.y0, split - 6, body.y1});
-        paint_panel(canvas, fig.panels[1], {split + 6, body.y0, body.x1, mid - 6});
-        paint_panel(canvas, fig.panels[2], {split + 6, mid + 6, body.x1, body.y1});
+        paint_panel(canvas, fig.panels[0], {body.x0, body.y0, split - 6, body.y1}, true);
+        paint_panel(canvas, fig.panels[1], {split + 6, body.y0, body.x1, mid - 6}, true);
+        paint_panel(canvas, fig.panels[2], {split + 6, mid + 6, body.x1, body.y1}, true);
         return;
     }
     const float w = body.width() / static_cast<float>(fig.panels.size());
     for (std::size_t k = 0; k < fig.panels.size(); ++k) {
         const float x0 = body.x0 + w * static_cast<float>(k);
-        paint_panel(canvas, fig.panels[k], {x0, body.y0, x0 + w, body.y1});
+        paint_panel(canvas, fig.panels[k], {x0, body.y0, x0 + w, body.y1}, true);
     }
 }
 

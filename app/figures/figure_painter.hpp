@@ -12,7 +12,10 @@ namespace fv::app {
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds);
 
 // One panel inside `bounds` (used by the app's own layouts too). Returns its data <-> pixel mapping.
-gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds);
+// `legend_below`: gfx::Plot::legend_below (figures, whose pages may be narrow; the app's panels keep their
+// legends inside).
+gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
+                               bool legend_below = false);
 
 gfx::Color ink_color(Ink ink, std::size_t series_index);
 

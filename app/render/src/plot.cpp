@@ -197,7 +197,7 @@ static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform&
 // `reserve`: room kept free right of the data area (and of the colour bar) for a legend outside the axes.
 static Layout compute_layout(const Plot& plot, const std::vector<Series>& series,
                              const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas,
-                             float reserve = 0) {
+                             float reserve = 0, float reserve_below = 0) {
     Layout L;
     Range xr = fit_range(series, true, plot.x_axis), yr = fit_range(series, false, plot.y_axis);
     if (hm) {
@@ -209,8 +209,9 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
     const float fs = plot.font_size, title_fs = plot.font_size + 1, head_fs = plot.font_size + 3;
     const float top =
         bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f)) + top_axis_band(plot);
-    const float bottom = bounds.y1 - std::round(kTickLength + 4 + fs * 1.2f +
-                                                (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
+    const float bottom =
+        bounds.y1 - reserve_below -
+        std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
     // Room for the last x tick label's overhang, or for the colour bar.
     const float right =
         bounds.x1 - (reserve > 0 ? reserve : std::round(fs * 1.5f)) - (hm ? kColorBarSpace : 0.0f);
@@ -302,22 +303,26 @@ Vec2 legend_size(const Canvas& canvas, const std::vector<Series>& series,
 PlotTransform Plot::draw(Canvas& canvas) const {
     const auto entries = legend_entries(series_);
     const bool has_legend = legend != LegendPosition::None && !entries.empty();
-    bool go_outside = has_legend && legend == LegendPosition::Outside;
-    if (go_outside) return draw_with_legend(canvas, true, go_outside);
+    LegendPlace redraw = LegendPlace::Inside;
+    if (has_legend && legend == LegendPosition::Outside)
+        return draw_with_legend(canvas, LegendPlace::Right, redraw);
     const Canvas::Mark start = canvas.mark();
-    const PlotTransform tf = draw_with_legend(canvas, false, go_outside);
-    if (!go_outside) return tf;
-    // Every place inside the axes covers data: draw the plot again, narrower, with the legend right of it.
+    const PlotTransform tf = draw_with_legend(canvas, LegendPlace::Inside, redraw);
+    if (redraw == LegendPlace::Inside) return tf;
+    // Every place inside the axes covers data: draw the plot again, narrower with the legend right of it,
+    // or shorter with the legend below it.
     canvas.rewind(start);
-    return draw_with_legend(canvas, true, go_outside);
+    return draw_with_legend(canvas, redraw, redraw);
 }
 
-PlotTransform Plot::draw_with_legend(Canvas& canvas, bool outside, bool& redraw_outside) const {
-    redraw_outside = false;
+PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPlace& redraw) const {
+    redraw = LegendPlace::Inside;
+    const bool outside = place == LegendPlace::Right;
     const std::vector<std::size_t> entries = legend_entries(series_);
     const Vec2 lsize = legend_size(canvas, series_, entries, font_size);
-    const Layout L =
-        compute_layout(*this, series_, heatmap_, bounds_, canvas, outside ? lsize.x + 2 * kLegendGap : 0.0f);
+    const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
+    const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas,
+                                    outside ? lsize.x + 2 * kLegendGap : 0.0f, below);
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
     const float fs = font_size, title_fs = font_size + 1, head_fs = font_size + 3;
@@ -422,7 +427,7 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, bool outside, bool& redraw_
     tt.size = title_fs;
     if (!x_axis.title.empty()) {
         tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
-        canvas.text({0.5f * (A.x0 + A.x1), bounds_.y1 - 4}, x_axis.title, tt);
+        canvas.text({0.5f * (A.x0 + A.x1), bounds_.y1 - below - 4}, x_axis.title, tt);
     }
     if (!y_axis.title.empty()) {
         tt.halign = HAlign::Center, tt.valign = VAlign::Top, tt.angle_deg = 90;
@@ -466,40 +471,53 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, bool outside, bool& redraw_
         break;
     }
     Rect box = box_at(pos);
+    // Everything drawn in the data area is what the legend must not cover; how much it covers counts lines
+    // by their segments.
+    const auto& cmds = canvas.display_list().commands;
+    auto covered = [&](const Rect& r) {
+        std::size_t n = 0;
+        for (std::size_t k = data_start.commands; k < data_end.commands; ++k) {
+            if (!command_touches(cmds[k], r, canvas.fonts(), 2.0f)) continue;
+            const auto* pl = std::get_if<dl::Polyline>(&cmds[k]);
+            if (!pl) {
+                ++n;
+                continue;
+            }
+            const float g = 2.0f + 0.5f * pl->stroke.width;
+            for (std::size_t i = 1; i < pl->points.size(); ++i) {
+                double ax = pl->points[i - 1].x, ay = pl->points[i - 1].y, bx = pl->points[i].x,
+                       by = pl->points[i].y;
+                n += clip_segment(ax, ay, bx, by, r.x0 - g, r.y0 - g, r.x1 + g, r.y1 + g);
+            }
+        }
+        return n;
+    };
+    // Below the axes: where it fits (a third of the plot's height), else inside.
+    const bool below_fits = legend_below && w <= bounds_.width() && h + kLegendGap <= bounds_.height() / 3;
     if (outside) {
         const float x0 = A.x1 + (heatmap_ ? kColorBarSpace : 0.0f) + kLegendGap;
         box = {x0, A.y0, x0 + w, A.y0 + h};
+    } else if (place == LegendPlace::Below) {
+        const float x0 = std::clamp(std::round(0.5f * (A.x0 + A.x1 - w)), bounds_.x0, bounds_.x1 - w);
+        box = {x0, bounds_.y1 - h, x0 + w, bounds_.y1};
     } else if (legend == LegendPosition::Best) {
-        // Everything drawn in the data area is what the legend must not cover; how much it covers counts
-        // lines by their segments.
-        const auto& cmds = canvas.display_list().commands;
-        auto covered = [&](const Rect& r) {
-            std::size_t n = 0;
-            for (std::size_t k = data_start.commands; k < data_end.commands; ++k) {
-                if (!command_touches(cmds[k], r, canvas.fonts(), 2.0f)) continue;
-                const auto* pl = std::get_if<dl::Polyline>(&cmds[k]);
-                if (!pl) {
-                    ++n;
-                    continue;
-                }
-                const float g = 2.0f + 0.5f * pl->stroke.width;
-                for (std::size_t i = 1; i < pl->points.size(); ++i) {
-                    double ax = pl->points[i - 1].x, ay = pl->points[i - 1].y, bx = pl->points[i].x,
-                           by = pl->points[i].y;
-                    n += clip_segment(ax, ay, bx, by, r.x0 - g, r.y0 - g, r.x1 + g, r.y1 + g);
-                }
-            }
-            return n;
-        };
         std::size_t least = std::numeric_limits<std::size_t>::max();
         for (int k = 0; k < 8 && least > 0; ++k)
             if (const std::size_t n = covered(box_at(k)); n < least) least = n, box = box_at(k);
         // None is free: the plot is drawn again with the legend outside, unless that would take more than a
-        // third of the plot's width (a small panel): then the place covering least.
+        // third of the plot's width (a small panel): then below it where allowed, else the place covering
+        // least.
         if (least > 0 && w + 2 * kLegendGap <= bounds_.width() / 3) {
-            redraw_outside = true;
+            redraw = LegendPlace::Right;
             return tf;
         }
+        if (least > 0 && below_fits) {
+            redraw = LegendPlace::Below;
+            return tf;
+        }
+    } else if (below_fits && covered(box) > 0) {
+        redraw = LegendPlace::Below; // the figure's corner covers data on this page
+        return tf;
     }
     const Canvas::Mark legend_start = canvas.mark();
     canvas.fill_rect(box, colors::white.with_alpha(0.92f));

@@ -81,6 +81,10 @@ class Plot {
     std::string top_title;
     bool equal_aspect = false; ///< One data unit spans the same pixels in x and y (linear axes).
     LegendPosition legend = LegendPosition::Best;
+    /// Where the legend's place inside the axes covers data and it cannot go right of them (a third of the
+    /// plot's width at most): below the axes, under the x axis title, the plot shorter, instead of the place
+    /// covering least. Only where its height fits a third of the plot's; for a fixed corner too.
+    bool legend_below = false;
     float font_size = 13; ///< Tick labels; titles are a little larger.
 
     Series& add_series(std::string label, std::vector<double> x, std::vector<double> y,
@@ -108,7 +112,8 @@ class Plot {
     std::vector<Series> series_;
     std::optional<HeatMap> heatmap_;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_, unclipped_overlays_;
-    PlotTransform draw_with_legend(Canvas& canvas, bool outside, bool& redraw_outside) const;
+    enum class LegendPlace { Inside, Right, Below };
+    PlotTransform draw_with_legend(Canvas& canvas, LegendPlace place, LegendPlace& redraw) const;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> underlays_;
 };
 
