@@ -135,10 +135,13 @@ PanelData top_view(const Params& p, const std::vector<Sample>& period, const std
         const Sample& s = period[(n * static_cast<std::size_t>(j)) / 24 + n / 48];
         panel.segments.push_back({s.P, s.T, Ink::spring, Dash::solid, 1.2f, ""});
     }
+    // With the other i overlaid (Fig. 17), both tips say which i they are, as the title does.
+    if (other) T.label += ", i = " + format_number("%g", p.i);
     panel.series.push_back(std::move(P));
     panel.series.push_back(std::move(T));
     if (other) {
-        SeriesData T0{"tip T, i = 0", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.5f};
+        SeriesData T0{"", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.5f};
+        T0.label = p.i == 0 ? "asperity tip T, i = 1" : "asperity tip T, i = 0"; // the overlaid other i
         for (const auto& s : *other) {
             T0.x.push_back(s.T.x());
             T0.y.push_back(s.T.y());
