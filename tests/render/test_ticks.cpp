@@ -31,6 +31,16 @@ TEST_CASE("tick formatting avoids -0 and float noise") {
     CHECK(format_tick(1e-4, 1e-4) == "10^{" + kMinus + "4}");
 }
 
+TEST_CASE("linear ticks: at least two in the range") {
+    // The nice step for 2 ticks over [-1.45, 1.45] is 2: only 0 lay inside (fig4 at 640x400).
+    const auto t = linear_ticks(-1.45, 1.45, 2);
+    REQUIRE(t.size() >= 2);
+    CHECK(t.front().value >= -1.45);
+    CHECK(t.back().value <= 1.45);
+    CHECK(linear_ticks(0, 1, 2).size() == 3); // 0, 0.5, 1 as before
+    CHECK(linear_ticks(0.3, 0.31, 1).size() >= 2);
+}
+
 TEST_CASE("log ticks sit on decades with unlabelled minor ticks") {
     const auto ticks = log_ticks(0.05, 200, 6);
     std::vector<std::string> major;

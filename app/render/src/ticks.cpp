@@ -51,10 +51,15 @@ std::string format_tick(double value, double step) {
 std::vector<Tick> linear_ticks(double lo, double hi, int target_count) {
     std::vector<Tick> ticks;
     if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi)) return ticks;
-    const double step = nice_step(hi - lo, target_count);
-    const double eps = step * 1e-6;
-    // Integer multiples avoid accumulating 0.1 + 0.1 + ... rounding errors.
-    const double first = std::ceil((lo - eps) / step), last = std::floor((hi + eps) / step);
+    // At least two ticks in the range: asked for 2 over [-1.45, 1.45], the nice step 2 left only 0 inside
+    // (fig4's top view on a narrow page); a finer step then.
+    double step = 0, first = 0, last = -1;
+    for (int n = std::max(1, target_count); n <= std::max(1, target_count) + 8 && last - first < 1; ++n) {
+        step = nice_step(hi - lo, n);
+        const double eps = step * 1e-6;
+        // Integer multiples avoid accumulating 0.1 + 0.1 + ... rounding errors.
+        first = std::ceil((lo - eps) / step), last = std::floor((hi + eps) / step);
+    }
     for (double i = first; i <= last && ticks.size() < 1000; i += 1) {
         const double v = i * step;
         ticks.push_back({v, format_tick(v, step), true});
