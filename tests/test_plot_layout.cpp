@@ -2,6 +2,8 @@
 // - no legend box touches a plotted sample: a series' samples and the segments between them, markers;
 // - no text reads as a negative zero ("-0", "−0.0000");
 // - on a narrow page (640x400 logical, the "clipped at 640x400") no text leaves the page;
+// - no two texts of a figure overlap (labels, ticks, titles, legends), on the default page and the
+// snapshots';
 // - every force plot states its sign convention, F = (P − T) F_c / z_ss, on its axis and in its caption;
 // - format_number never prints a negative zero.
 #include "figures/render_session.hpp"
@@ -177,6 +179,41 @@ TEST_CASE("No text of any figure leaves a narrow page", "[layout][page]") {
             }
     }
     CHECK(texts > 100);
+}
+
+// The first pair of texts in `list` whose boxes overlap by more than `slack` units each way, or "".
+std::string overlapping_texts(const DisplayList& list, const fv::gfx::FontSet& fonts, float slack) {
+    std::vector<std::pair<Rect, const fv::gfx::dl::Text*>> boxes;
+    for (const auto& c : list.commands)
+        if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c))
+            boxes.push_back({fv::gfx::text_bounds(*t, fonts), t});
+    for (std::size_t a = 0; a < boxes.size(); ++a)
+        for (std::size_t b = a + 1; b < boxes.size(); ++b) {
+            const Rect &p = boxes[a].first, &q = boxes[b].first;
+            if (std::min(p.x1, q.x1) - std::max(p.x0, q.x0) > slack &&
+                std::min(p.y1, q.y1) - std::max(p.y0, q.y0) > slack)
+                return "\"" + boxes[a].second->text + "\" and \"" + boxes[b].second->text + "\"";
+        }
+    return "";
+}
+
+TEST_CASE("No two texts of a figure overlap", "[layout][labels]") {
+    for (const Vec2 page : {Vec2{1280, 800}, Vec2{960, 600}, Vec2{640, 400}}) {
+        fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
+        for (const fv::FigureData& fig : figures()) {
+            INFO(fig.id << " on " << page.x << "x" << page.y);
+            CHECK(overlapping_texts(s.record_figure(fig), s.fonts(), 1.0f) == "");
+        }
+    }
+    // The check sees a text moved 3 units onto a copy of itself.
+    DisplayList list = session().record_figure(figures().front());
+    const auto t = std::find_if(list.commands.begin(), list.commands.end(),
+                                [](const auto& c) { return std::holds_alternative<fv::gfx::dl::Text>(c); });
+    REQUIRE(t != list.commands.end());
+    fv::gfx::dl::Text copy = std::get<fv::gfx::dl::Text>(*t);
+    copy.anchor.x += 3, copy.anchor.y += 3;
+    list.commands.push_back(copy);
+    CHECK(overlapping_texts(list, session().fonts(), 1.0f) != "");
 }
 
 TEST_CASE("Every force plot states its sign convention on the figure and in its caption", "[layout][force]") {
