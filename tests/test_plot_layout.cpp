@@ -6,7 +6,10 @@
 // snapshots';
 // - every force plot states its sign convention, F = (P − T) F_c / z_ss, on its axis and in its caption;
 // - format_number never prints a negative zero.
+#include "figures/figure_painter.hpp"
 #include "figures/render_session.hpp"
+#include "gui/app_state.hpp"
+#include "gui/dashboard.hpp"
 
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
@@ -123,6 +126,38 @@ TEST_CASE("Legends: no legend box covers a plotted sample, in any registered fig
         }
     // Most figures have a legend: the check above ran on them (their number only grows).
     CHECK(legends >= 12);
+}
+
+TEST_CASE("Legends: the app's live force plot covers none of its curves as they scroll", "[layout][legend]") {
+    // The benchmark's scene (theta 60, r_disp 2, i 0) from the start, through the transient (the period
+    // mean joins after a period) into the steady state: F_x, F_y and |F| pass through every part of the axes.
+    fv::app::AppState a(fv::Model::dahl, fv::Params{0.3, fv::kPi / 3, 2, 0}, 0.7, 60);
+    a.worker().wait_idle(); // the steady r_x line too
+    fv::app::UiEdits e;
+    e.playing = true;
+    e.speed = 1;
+    a.sync(e);
+    const Rect force = fv::app::layout_dashboard({346, 4, 1276, 796}).force;
+    int legends = 0;
+    for (int frame = 0; frame < 5 * 60; ++frame) {
+        a.advance(1.0 / 60);
+        if (frame % 7 != 0) continue;
+        fv::gfx::Canvas& canvas = session().canvas();
+        canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
+        fv::app::paint_panel(canvas, fv::app::force_panel_live(a.sim(), a.worker().latest()), force);
+        canvas.end_recording();
+        const DisplayList& list = canvas.display_list();
+        for (const fv::gfx::Region& r : list.regions) {
+            if (r.role != "legend") continue;
+            ++legends;
+            INFO("frame " << frame << ": legend at (" << r.rect.x0 << ", " << r.rect.y0 << ")-(" << r.rect.x1
+                          << ", " << r.rect.y1 << ")");
+            CHECK(sample_in(list, r.rect) == "");
+            CHECK(r.rect.x0 >= force.x0);
+            CHECK(r.rect.x1 <= force.x1); // within the panel
+        }
+    }
+    CHECK(legends == 43);
 }
 
 TEST_CASE("Legends: the check sees a legend over a curve", "[layout][legend]") {

@@ -182,6 +182,8 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         plot.legend = gfx::LegendPosition::BottomRight;
     else if (panel.legend == "outside")
         plot.legend = gfx::LegendPosition::Outside;
+    else if (panel.legend == "above")
+        plot.legend = gfx::LegendPosition::Above;
     if (panel.heatmap) {
         const HeatmapData& h = *panel.heatmap;
         gfx::HeatMap m;

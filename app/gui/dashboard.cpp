@@ -222,7 +222,8 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     panel.title = "friction force (F_{x} > 0 resists v_{b}), last periods";
     panel.x_title = "time τ = ωt";
     panel.y_title = "F / F_{c}";
-    panel.legend = "best";
+    // The curves scroll through every part of the axes: a legend inside would cover them sooner or later.
+    panel.legend = "above";
     const auto& h = sim.history();
     const double t1 = std::max(moment_at(sim, rewind).tau, 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
     panel.x_min = t0;
@@ -257,7 +258,7 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     }
     // F_x averaged over the period before each instant (the history's running sums): once the transient is
     // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
-    SeriesData run{"F_{x}, mean of last period", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
+    SeriesData run{"period mean F_{x}", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
     const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
     for (std::size_t k = n; k < h.size(); k += stride) {
         if (h[k].tau < t0) continue;
@@ -265,10 +266,11 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         run.x.push_back(h[k].tau), run.y.push_back((h[k].fx_sum - h[k - n].fx_sum) / static_cast<double>(n));
     }
     if (!run.x.empty()) panel.series.push_back(std::move(run));
+    // Its value is in the panel and the ratio plot's title: the legend's rows above the axes stay short.
     if (curves && curves->request.params.zeta == sim.params().zeta)
-        panel.series.push_back(hline("steady r_{x} = " + format_number("%.4f", curves->current.rx) +
-                                         (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
-                                     t0, t1, curves->current.rx, Ink::rigid, Dash::dotted));
+        panel.series.push_back(
+            hline(std::string("steady r_{x}") + (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
+                  t0, t1, curves->current.rx, Ink::rigid, Dash::dotted));
     return panel;
 }
 

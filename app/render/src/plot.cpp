@@ -195,9 +195,10 @@ static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform&
 }
 
 // `reserve`: room kept free right of the data area (and of the colour bar) for a legend outside the axes.
+// `band`: room kept free above the data area (and its top axis) for a legend above the axes.
 static Layout compute_layout(const Plot& plot, const std::vector<Series>& series,
                              const std::optional<HeatMap>& hm, const Rect& bounds, const Canvas& canvas,
-                             float reserve = 0, float reserve_below = 0) {
+                             float reserve = 0, float reserve_below = 0, float band = 0) {
     Layout L;
     Range xr = fit_range(series, true, plot.x_axis), yr = fit_range(series, false, plot.y_axis);
     if (hm) {
@@ -208,7 +209,7 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
     tf.log_x = plot.x_axis.log, tf.log_y = plot.y_axis.log;
     const float fs = plot.font_size, title_fs = plot.font_size + 1, head_fs = plot.font_size + 3;
     const float top =
-        bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f)) + top_axis_band(plot);
+        bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f)) + top_axis_band(plot) + band;
     const float bottom =
         bounds.y1 - reserve_below -
         std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
@@ -274,7 +275,7 @@ static void draw_colorbar(Canvas& canvas, const Rect& A, const HeatMap& hm, floa
 }
 
 PlotTransform Plot::layout(const Canvas& canvas) const {
-    return compute_layout(*this, series_, heatmap_, bounds_, canvas).tf;
+    return compute_layout(*this, series_, heatmap_, bounds_, canvas, 0, 0, legend_band(canvas)).tf;
 }
 
 namespace {
@@ -298,7 +299,42 @@ Vec2 legend_size(const Canvas& canvas, const std::vector<Series>& series,
             std::round(kLegendPad * 0.75f * 2 + row * static_cast<float>(entries.size()))};
 }
 
+// Between entries in a row; between the rows and the axes; rows in font sizes (tighter than a boxed
+// legend's).
+constexpr float kAboveGap = 16, kAboveSpace = 6, kAboveRow = 1.4f;
+
+// A legend above the axes: each entry's offset (sample's left, row's top) from the block's top-left corner,
+// in rows no wider than `width` (an entry wider than that gets a row of its own), and the block's size.
+struct AboveLayout {
+    std::vector<Vec2> at;
+    Vec2 size{0, 0};
+};
+
+AboveLayout above_layout(const Canvas& canvas, const std::vector<Series>& series,
+                         const std::vector<std::size_t>& entries, float fs, float width) {
+    AboveLayout out;
+    const float row = std::round(fs * kAboveRow);
+    float x = 0, y = 0;
+    for (std::size_t i : entries) {
+        const float w = std::ceil(kLegendSample + 8 + canvas.measure_text(series[i].label, fs).x);
+        if (x > 0 && x + w > width) x = 0, y += row;
+        out.at.push_back({x, y});
+        out.size.x = std::max(out.size.x, x + w);
+        x += w + kAboveGap;
+    }
+    out.size.y = entries.empty() ? 0 : y + row;
+    return out;
+}
+
 } // namespace
+
+float Plot::legend_band(const Canvas& canvas) const {
+    const auto entries = legend_entries(series_);
+    if (legend != LegendPosition::Above || entries.empty()) return 0;
+    // The rows wrap at the data area's width, which the band hardly changes (only through the y ticks).
+    const float width = compute_layout(*this, series_, heatmap_, bounds_, canvas).tf.area.width();
+    return above_layout(canvas, series_, entries, font_size, width).size.y + kAboveSpace;
+}
 
 PlotTransform Plot::draw(Canvas& canvas) const {
     const auto entries = legend_entries(series_);
@@ -321,8 +357,9 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     const std::vector<std::size_t> entries = legend_entries(series_);
     const Vec2 lsize = legend_size(canvas, series_, entries, font_size);
     const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
+    const float band = legend_band(canvas);
     const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas,
-                                    outside ? lsize.x + 2 * kLegendGap : 0.0f, below);
+                                    outside ? lsize.x + 2 * kLegendGap : 0.0f, below, band);
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
     const float fs = font_size, title_fs = font_size + 1, head_fs = font_size + 3;
@@ -436,7 +473,8 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     }
     if (!title.empty()) {
         tt.size = head_fs, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
-        canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this))}, title, tt);
+        canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this) - band)}, title,
+                    tt);
     }
     if (top_scale > 0) draw_top_axis(canvas, *this, tf);
 
@@ -445,6 +483,34 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     // Legend.
     if (legend == LegendPosition::None || entries.empty()) return tf;
     const float row = std::round(fs * 1.6f), sample = kLegendSample, pad = kLegendPad;
+    if (legend == LegendPosition::Above) {
+        const AboveLayout above = above_layout(canvas, series_, entries, fs, A.width());
+        const float above_row = std::round(fs * kAboveRow);
+        const Vec2 origin{A.x0, A.y0 - top_axis_band(*this) - band};
+        const Canvas::Mark legend_start = canvas.mark();
+        TextStyle lt;
+        lt.size = fs, lt.valign = VAlign::Middle;
+        // Samples first, labels after (fewer draw batches; they do not overlap).
+        for (std::size_t k = 0; k < entries.size(); ++k) {
+            const Series& s = series_[entries[k]];
+            const Color c = series_color(s, entries[k]);
+            const float x0 = origin.x + above.at[k].x,
+                        cy = std::floor(origin.y + above.at[k].y + 0.5f * above_row) + 0.5f;
+            if (s.style.draw_line)
+                canvas.line({x0, cy}, {x0 + sample, cy}, {c, s.style.line_width, s.style.line});
+            if (!s.y_err.empty() && !s.style.draw_line)
+                canvas.line({x0 + 0.5f * sample, cy - 6}, {x0 + 0.5f * sample, cy + 6},
+                            {c, 1.2f, LineStyle::Solid});
+            if (s.style.marker != MarkerShape::None)
+                canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
+        }
+        for (std::size_t k = 0; k < entries.size(); ++k)
+            canvas.text({origin.x + above.at[k].x + sample + 8, origin.y + above.at[k].y + 0.5f * above_row},
+                        series_[entries[k]].label, lt);
+        canvas.add_region("legend", {origin.x, origin.y, origin.x + above.size.x, origin.y + above.size.y},
+                          legend_start);
+        return tf;
+    }
     const float w = lsize.x, h = lsize.y;
     const float m = kLegendMargin;
     // Inside the axes: corners, then the middles of the edges.

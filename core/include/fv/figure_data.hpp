@@ -93,7 +93,8 @@ struct PanelData {
     std::optional<HeatmapData> heatmap;
     std::vector<BandData> bands; // behind the series
     std::string legend = "best"; // best (a free place inside, else outside), none, top-left, top-right,
-                                 // bottom-left, bottom-right, outside (right of the axes)
+                                 // bottom-left, bottom-right, outside (right of the axes), above (between
+                                 // the title and the axes, in rows)
     float text_scale = 1;        // all of the panel's text (the app's presentation mode)
     // A second x axis along the top: top value = top_scale * x (fig19: v_b in m/s beside zeta); 0: none.
     double top_scale = 0;

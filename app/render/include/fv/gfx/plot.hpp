@@ -53,8 +53,9 @@ struct HeatMap {
 /// bottom left, top, bottom, right, left) whose box touches nothing drawn in the data area (series samples
 /// and segments, markers, error bars, overlays and their text); outside the axes, right of them, when none is
 /// free (in a plot too small for that, the place covering least). Outside: always there (e.g. for an animated
-/// plot, whose free corner moves).
-enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft, Outside };
+/// plot, whose free corner moves). Above: between the title and the axes, the entries side by side in rows as
+/// wide as the data area (a small animated plot: nothing it draws can run under its legend).
+enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft, Outside, Above };
 
 /// Data <-> pixel mapping of a laid-out plot.
 struct PlotTransform {
@@ -114,6 +115,8 @@ class Plot {
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> overlays_, unclipped_overlays_;
     enum class LegendPlace { Inside, Right, Below };
     PlotTransform draw_with_legend(Canvas& canvas, LegendPlace place, LegendPlace& redraw) const;
+    /// Height of the band above the axes that a LegendPosition::Above legend takes (0 for other legends).
+    float legend_band(const Canvas& canvas) const;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> underlays_;
 };
 
