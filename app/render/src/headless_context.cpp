@@ -8,6 +8,8 @@
 #include <cstdlib>
 
 #include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace fv::gfx {
@@ -63,9 +65,21 @@ void* osmesa_loader(const char* name) {
 
 } // namespace
 
+// The frame is drawn into a framebuffer object of the context's size, not into OSMesa's default framebuffer:
+// OSMesa keeps that one in a resource of its own and copies it into the client's buffer at every
+// glFinish (1920x1080: 8 MB, about 1 ms of the app thread per frame). Nothing reads the client's buffer
+// (read_pixels reads the bound framebuffer), so it is 1x1. The entry points are loaded here, not in
+// GlApi: only this backend needs them.
 struct HeadlessContext::Impl {
     OSMesaContext ctx = nullptr;
-    std::vector<unsigned char> buffer; // The default framebuffer lives here (RGBA8, bottom-up).
+    std::vector<unsigned char> buffer = std::vector<unsigned char>(4); // OSMesa's default framebuffer
+    int buffer_width = 1, buffer_height = 1;
+    PFNGLGENFRAMEBUFFERSPROC GenFramebuffers = nullptr;
+    PFNGLBINDFRAMEBUFFERPROC BindFramebuffer = nullptr;
+    PFNGLFRAMEBUFFERTEXTURE2DPROC FramebufferTexture2D = nullptr;
+    PFNGLCHECKFRAMEBUFFERSTATUSPROC CheckFramebufferStatus = nullptr;
+    PFNGLFRAMEBUFFERPARAMETERIPROC FramebufferParameteri = nullptr;
+    GLuint framebuffer = 0; // the frame's (0: OSMesa's default framebuffer of the context's size)
 };
 
 HeadlessContext::HeadlessContext(int width, int height, float scale)
@@ -89,13 +103,56 @@ HeadlessContext::HeadlessContext(int width, int height, float scale)
                            0};
     impl_->ctx = lib.create(attribs, nullptr);
     if (!impl_->ctx) throw std::runtime_error("OSMesa could not create a core-profile 3.3 context");
-    impl_->buffer.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4);
     make_current();
     gl_.load(&osmesa_loader);
+    if (!draw_into_framebuffer_object()) { // an OSMesa without GL_MESA_framebuffer_flip_y: the default one
+        impl_->buffer.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4, 0);
+        impl_->buffer_width = width, impl_->buffer_height = height;
+        make_current();
+    }
+}
+
+bool HeadlessContext::draw_into_framebuffer_object() {
+    Impl& m = *impl_;
+    auto load = [](auto& fn, const char* name) {
+        fn = reinterpret_cast<std::remove_reference_t<decltype(fn)>>(osmesa_loader(name));
+        return fn != nullptr;
+    };
+    if (!load(m.GenFramebuffers, "glGenFramebuffers") || !load(m.BindFramebuffer, "glBindFramebuffer") ||
+        !load(m.FramebufferTexture2D, "glFramebufferTexture2D") ||
+        !load(m.CheckFramebufferStatus, "glCheckFramebufferStatus") ||
+        !load(m.FramebufferParameteri, "glFramebufferParameteri"))
+        return false;
+    while (gl_.GetError() != GL_NO_ERROR) {
+    }
+    GLuint colour = 0, framebuffer = 0;
+    gl_.GenTextures(1, &colour);
+    gl_.BindTexture(GL_TEXTURE_2D, colour);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width_, height_, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    m.GenFramebuffers(1, &framebuffer);
+    m.BindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    m.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    // Rows kept top-down, as in a window system's framebuffer (Gallium draws those flipped): the same
+    // rasterization, so the same pixels as OSMesa's default framebuffer and a window (without it, glyph edges
+    // differ by 1 in a few pixels).
+    constexpr GLenum kFramebufferFlipYMesa = 0x8BBB; // GL_MESA_framebuffer_flip_y
+    m.FramebufferParameteri(GL_FRAMEBUFFER, kFramebufferFlipYMesa, GL_TRUE);
+    if (gl_.GetError() != GL_NO_ERROR ||
+        m.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+        m.BindFramebuffer(GL_FRAMEBUFFER, 0);
+        gl_.DeleteTextures(1, &colour);
+        return false;
+    }
+    m.framebuffer = framebuffer;
+    gl_.Viewport(0, 0, width_, height_);
+    return true;
 }
 
 HeadlessContext::~HeadlessContext() {
-    if (impl_->ctx) osmesa().destroy(impl_->ctx);
+    if (impl_->ctx) osmesa().destroy(impl_->ctx); // with the context go its framebuffer object and texture
 }
 
 Size HeadlessContext::logical_size() const {
@@ -104,8 +161,10 @@ Size HeadlessContext::logical_size() const {
 }
 
 void HeadlessContext::make_current() {
-    if (!osmesa().make_current(impl_->ctx, impl_->buffer.data(), GL_UNSIGNED_BYTE, width_, height_))
+    if (!osmesa().make_current(impl_->ctx, impl_->buffer.data(), GL_UNSIGNED_BYTE, impl_->buffer_width,
+                               impl_->buffer_height))
         throw std::runtime_error("OSMesaMakeCurrent failed");
+    if (impl_->framebuffer) impl_->BindFramebuffer(GL_FRAMEBUFFER, impl_->framebuffer);
 }
 
 void HeadlessContext::present() {

@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_internal.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -13,6 +14,18 @@ namespace {
 // Untextured triangles worth a draw call of their own, in framebuffer pixels: window, child and frame
 // backgrounds. Smaller runs stay with the text around them (same pixels either way, fewer draw calls).
 constexpr float kMinSolidRunArea = 4096;
+
+// Appends indices [first, first + count) to the runs, joined with the last run when it is of the same kind.
+template <typename Run> void add_run(std::vector<Run>& runs, unsigned first, unsigned count, bool solid) {
+    if (count == 0) return;
+    if (!runs.empty() && !runs.back().clear && runs.back().solid == solid) {
+        runs.back().count += count;
+    } else {
+        Run r;
+        r.first = first, r.count = count, r.solid = solid;
+        runs.push_back(r);
+    }
+}
 
 } // namespace
 
@@ -73,19 +86,12 @@ void ImGuiRenderer::upload_font_atlas(ImFontAtlas& atlas) {
     white_uv_[1] = atlas.TexUvWhitePixel.y;
 }
 
-void ImGuiRenderer::split_runs(const ImDrawList& list, const ImDrawCmd& cmd, float scale) {
+void ImGuiRenderer::split_runs(const ImDrawList& list, const ImDrawCmd& cmd, float scale, float off_x,
+                               float off_y) {
     runs_.clear();
     const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset;
     const ImDrawVert* vtx = list.VtxBuffer.Data + cmd.VtxOffset;
     auto white = [&](const ImDrawVert& v) { return v.uv.x == white_uv_[0] && v.uv.y == white_uv_[1]; };
-    auto add = [&](unsigned first, unsigned count, bool solid) {
-        if (count == 0) return;
-        if (!runs_.empty() && runs_.back().solid == solid) {
-            runs_.back().count += count;
-        } else {
-            runs_.push_back({first, count, solid});
-        }
-    };
     auto solid = [&](unsigned i) {
         return white(vtx[idx[i]]) && white(vtx[idx[i + 1]]) && white(vtx[idx[i + 2]]);
     };
@@ -104,12 +110,57 @@ void ImGuiRenderer::split_runs(const ImDrawList& list, const ImDrawCmd& cmd, flo
         float covered = 0;
         for (; i < n && solid(i); i += 3) covered += area(i);
         if (covered >= kMinSolidRunArea) {
-            add(textured_from, from - textured_from, false);
-            add(from, i - from, true);
+            add_run(runs_, textured_from, from - textured_from, false);
+            add_solid(list, cmd, from, i, scale, off_x, off_y);
             textured_from = i;
         }
     }
-    add(textured_from, cmd.ElemCount - textured_from, false);
+    add_run(runs_, textured_from, cmd.ElemCount - textured_from, false);
+}
+
+void ImGuiRenderer::add_solid(const ImDrawList& list, const ImDrawCmd& cmd, unsigned from, unsigned to,
+                              float scale, float off_x, float off_y) {
+    const ImDrawIdx* idx = list.IdxBuffer.Data + cmd.IdxOffset;
+    const ImDrawVert* vtx = list.VtxBuffer.Data + cmd.VtxOffset;
+    // ImDrawList::PrimRect's two triangles (a, b, c), (a, c, d) with a top-left, c bottom-right, all in one
+    // opaque colour, on pixel edges: exactly the pixels a scissored glClear of that colour writes (the blend
+    // of an opaque colour is the colour; the alpha channel becomes 1 either way). llvmpipe clears tiles
+    // almost for free, while it blends every pixel of the triangles.
+    auto pixel = [scale](float v, float off, int& out) {
+        const float p = (v - off) * scale;
+        out = static_cast<int>(std::lround(p));
+        return static_cast<float>(out) == p;
+    };
+    auto clearable = [&](unsigned i, Run& r) {
+        if (i + 6 > to) return false;
+        const ImDrawIdx a = idx[i], b = idx[i + 1], c = idx[i + 2], d = idx[i + 5];
+        if (idx[i + 3] != a || idx[i + 4] != c) return false;
+        const ImDrawVert &va = vtx[a], &vb = vtx[b], &vc = vtx[c], &vd = vtx[d];
+        if ((va.col >> IM_COL32_A_SHIFT & 0xFF) != 0xFF || vb.col != va.col || vc.col != va.col ||
+            vd.col != va.col)
+            return false;
+        if (vb.pos.y != va.pos.y || vb.pos.x != vc.pos.x || vd.pos.x != va.pos.x || vd.pos.y != vc.pos.y ||
+            !(vc.pos.x > va.pos.x) || !(vc.pos.y > va.pos.y))
+            return false;
+        if (!pixel(va.pos.x, off_x, r.x0) || !pixel(va.pos.y, off_y, r.y0) || !pixel(vc.pos.x, off_x, r.x1) ||
+            !pixel(vc.pos.y, off_y, r.y1))
+            return false;
+        if (static_cast<float>(r.x1 - r.x0) * static_cast<float>(r.y1 - r.y0) < kMinSolidRunArea)
+            return false;
+        r.colour = va.col;
+        return true;
+    };
+    unsigned solid_from = from;
+    for (unsigned i = from; i < to; i += 3) {
+        Run r;
+        if (!clearable(i, r)) continue;
+        add_run(runs_, solid_from, i - solid_from, true);
+        r.clear = true;
+        runs_.push_back(r);
+        i += 3; // the rectangle's second triangle
+        solid_from = i + 3;
+    }
+    add_run(runs_, solid_from, to - solid_from, true);
 }
 
 void ImGuiRenderer::use_program(bool solid) {
@@ -179,14 +230,32 @@ void ImGuiRenderer::render(const ImDrawData& dd) {
                         static_cast<GLsizei>(x1 - x0), static_cast<GLsizei>(y1 - y0));
             gl_.BindTexture(GL_TEXTURE_2D,
                             static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(cmd.GetTexID())));
-            if (cmd.GetTexID() == atlas_id) {
-                split_runs(*list, cmd, scale.x);
+            if (cmd.GetTexID() == atlas_id && scale.x == scale.y) {
+                split_runs(*list, cmd, scale.x, off.x, off.y);
             } else {
-                runs_.assign(1, Run{0, cmd.ElemCount, false});
+                runs_.assign(1, Run{});
+                runs_.back().count = cmd.ElemCount;
             }
             if (!gl_.DrawElementsBaseVertex && cmd.VtxOffset != attributes_at_)
                 point_attributes(cmd.VtxOffset);
+            const GLint sx0 = static_cast<GLint>(x0), sy1 = static_cast<GLint>(static_cast<float>(fb_h) - y1);
+            const GLint sx1 = sx0 + static_cast<GLsizei>(x1 - x0), sy0 = sy1 + static_cast<GLsizei>(y1 - y0);
             for (const Run& run : runs_) {
+                if (run.clear) {
+                    // The rectangle (top-left origin) in GL's bottom-left one, within the command's scissor.
+                    const GLint cx0 = std::max(run.x0, sx0), cx1 = std::min(run.x1, sx1);
+                    const GLint cy0 = std::max(fb_h - run.y1, sy1), cy1 = std::min(fb_h - run.y0, sy0);
+                    if (cx1 <= cx0 || cy1 <= cy0) continue;
+                    gl_.Scissor(cx0, cy0, cx1 - cx0, cy1 - cy0);
+                    auto channel = [&](int shift) {
+                        return static_cast<float>(run.colour >> shift & 0xFF) / 255.0f;
+                    };
+                    gl_.ClearColor(channel(IM_COL32_R_SHIFT), channel(IM_COL32_G_SHIFT),
+                                   channel(IM_COL32_B_SHIFT), 1.0f);
+                    gl_.Clear(GL_COLOR_BUFFER_BIT);
+                    gl_.Scissor(sx0, sy1, sx1 - sx0, sy0 - sy1);
+                    continue;
+                }
                 use_program(run.solid);
                 const auto count = static_cast<GLsizei>(run.count);
                 void* const first_index =

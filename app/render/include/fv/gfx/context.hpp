@@ -73,6 +73,9 @@ class HeadlessContext final : public GpuContext {
     std::string describe() const override;
 
   private:
+    /// Creates the frame's framebuffer object and binds it; false where OSMesa cannot (nothing changed).
+    bool draw_into_framebuffer_object();
+
     struct Impl;
     std::unique_ptr<Impl> impl_;
     int width_;

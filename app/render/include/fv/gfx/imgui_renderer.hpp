@@ -33,13 +33,20 @@ class ImGuiRenderer {
     /// Points the vertex attributes at the vertex buffer from vertex `first` on (with the VAO and VBO bound):
     /// the base vertex of a command where glDrawElementsBaseVertex is missing (WebGL 2).
     void point_attributes(unsigned first);
-    /// A part of a command's index range, drawn with one program.
+    /// A part of a command's index range, drawn with one program, or an opaque rectangle cleared.
     struct Run {
         unsigned first = 0, count = 0; ///< Indices, from the command's first.
         bool solid = false;
+        bool clear = false;                 ///< An opaque axis-aligned rectangle on pixel edges: glClear.
+        int x0 = 0, y0 = 0, x1 = 0, y1 = 0; ///< Its pixels (top-left origin), when `clear`.
+        unsigned colour = 0;                ///< Its colour (IM_COL32), when `clear`.
     };
-    /// Splits a font-atlas command into textured runs and large runs of untextured (white-texel) triangles.
-    void split_runs(const ImDrawList& list, const ImDrawCmd& cmd, float scale);
+    /// Splits a font-atlas command into textured runs and large runs of untextured (white-texel) triangles;
+    /// large opaque rectangles whose edges lie on pixel edges (window backgrounds) become `clear` runs.
+    void split_runs(const ImDrawList& list, const ImDrawCmd& cmd, float scale, float off_x, float off_y);
+    /// Adds the solid triangles [from, to) of a command to runs_, the large opaque rectangles as clears.
+    void add_solid(const ImDrawList& list, const ImDrawCmd& cmd, unsigned from, unsigned to, float scale,
+                   float off_x, float off_y);
     void use_program(bool solid);
 
     const GlApi& gl_;
