@@ -168,12 +168,15 @@ class GuiLoop {
         platform_->imgui_new_frame(logical);
         if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
-        // Without threads (the browser) the curves are computed here, a few milliseconds a frame.
-        app_.worker().run_slice(std::chrono::milliseconds(6));
         queued_.merge(draw_controls(ui, app_.sim(), app_.worker().latest(), app_.worker().busy(), panel_w,
                                     logical.y, dialog_));
         queued_.export_animation = draw_export_dialog(export_dialog_, ui.speed, animation_.running());
         queued_.merge(keyboard_edits(ui));
+        // Without threads (the browser) the curves are computed here, a few milliseconds a frame; not in a
+        // frame that moves the model's parameters: the sync below supersedes the job in progress, so the
+        // slice would be wasted, and the frame that shows the edit would come that much later (while a
+        // slider is dragged, every frame).
+        if (!queued_.moves_curves()) app_.worker().run_slice(std::chrono::milliseconds(6));
         handle_dashboard_mouse(app_.ui().view, app_.sim(), transforms_);
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
             queued_.show_help = false;

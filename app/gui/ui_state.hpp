@@ -68,6 +68,10 @@ struct UiEdits {
 
     // Later edits of the same field win; actions accumulate.
     void merge(const UiEdits& o);
+    // Whether these edits may change the model or its parameters, and so the r_x(zeta) curves.
+    bool moves_curves() const {
+        return model || params || amplitude_um || frequency_khz || vb_m_s || zss_um || open_session || preset;
+    }
 };
 
 } // namespace fv::app
