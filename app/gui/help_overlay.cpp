@@ -37,7 +37,7 @@ constexpr Entry kPlots[] = {
      "friction force F/F_c = (P − T)/z_ss (Dahl; rigid: F_c along the velocity), "
      "positive F_x resists v_b"},
     {Ink::tip, "shading", "times the tip slips"},
-    {Ink::black, "averaged F_x",
+    {Ink::black, "period mean F_x",
      "F_x averaged over the period before each instant (Eq. 30): it settles on "
      "r_x once the start-up transient is over"},
     {Ink::automatic, "r_x, r_y",
