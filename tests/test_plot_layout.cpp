@@ -106,13 +106,17 @@ std::string sample_in(const DisplayList& list, const Rect& box) {
     return "";
 }
 
+// Render's default page, the snapshots', and narrower ones down to the smallest allowed, 320x240.
+const Vec2 kPages[] = {{1280, 800}, {960, 600}, {640, 400}, {480, 320}, {320, 240}};
+
 } // namespace
 
 TEST_CASE("Legends: no legend box covers a plotted sample, in any registered figure", "[layout][legend]") {
-    // On render's default page, the snapshots' and a narrow one, where panels are too small for a legend
-    // inside (fig19's (b) covered its curves at 960x600; at 640x400 fig4's and fig19's go below the axes).
+    // On render's default page, the snapshots', narrow ones where panels are too small for a legend inside
+    // (fig19's (b) covered its curves at 960x600; at 640x400 fig4's and fig19's go below the axes), down to
+    // the smallest page, 320x240 (a one-column journal figure), where legends go below in columns.
     int legends = 0;
-    for (const Vec2 page : {Vec2{1280, 800}, Vec2{960, 600}, Vec2{640, 400}})
+    for (const Vec2 page : kPages)
         for (const fv::FigureData& fig : figures()) {
             const DisplayList list =
                 session(static_cast<int>(page.x), static_cast<int>(page.y)).record_figure(fig);
@@ -195,25 +199,46 @@ TEST_CASE("No text of any figure reads as a negative zero", "[layout][minus-zero
 }
 
 TEST_CASE("No text of any figure leaves a narrow page", "[layout][page]") {
-    // 640x400 logical units: titles that fit 1280 wide are too long for it (Fig. 15's was cut at both ends).
-    fv::app::RenderSession& narrow = session(640, 400);
-    int texts = 0;
-    for (const fv::FigureData& fig : figures()) {
-        const DisplayList list = narrow.record_figure(fig);
-        REQUIRE(list.size.x == 640);
-        for (const auto& c : list.commands)
-            if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
-                ++texts;
-                const Rect b = fv::gfx::text_bounds(*t, narrow.fonts());
-                INFO(fig.id << ": \"" << t->text << "\" at (" << b.x0 << ", " << b.y0 << ")-(" << b.x1 << ", "
-                            << b.y1 << ")");
-                CHECK(b.x0 >= 0);
-                CHECK(b.y0 >= 0);
-                CHECK(b.x1 <= list.size.x);
-                CHECK(b.y1 <= list.size.y);
-            }
+    // 640x400 logical units: titles that fit 1280 wide are too long for it (Fig. 15's was cut at both ends);
+    // 480x320 and the smallest page, 320x240, shorter still.
+    for (const Vec2 page : {Vec2{640, 400}, Vec2{480, 320}, Vec2{320, 240}}) {
+        fv::app::RenderSession& narrow = session(static_cast<int>(page.x), static_cast<int>(page.y));
+        int texts = 0;
+        for (const fv::FigureData& fig : figures()) {
+            const DisplayList list = narrow.record_figure(fig);
+            REQUIRE(list.size.x == page.x);
+            for (const auto& c : list.commands)
+                if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
+                    ++texts;
+                    const Rect b = fv::gfx::text_bounds(*t, narrow.fonts());
+                    INFO(fig.id << " on " << page.x << "x" << page.y << ": \"" << t->text << "\" at (" << b.x0
+                                << ", " << b.y0 << ")-(" << b.x1 << ", " << b.y1 << ")");
+                    CHECK(b.x0 >= 0);
+                    CHECK(b.y0 >= 0);
+                    CHECK(b.x1 <= list.size.x);
+                    CHECK(b.y1 <= list.size.y);
+                }
+        }
+        CHECK(texts > 100);
     }
-    CHECK(texts > 100);
+}
+
+TEST_CASE("Text stays legible on the smallest page: no text below 7 units", "[layout][page]") {
+    // A one-column journal figure is ~250 pt wide; its text is 7-9 pt. At 320x240 (points in the SVG and
+    // PDF) text shrinks with the page, but no text of any figure is below 7 units, and tick labels are 7.8.
+    for (const Vec2 page : {Vec2{480, 320}, Vec2{320, 240}}) {
+        fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
+        float smallest = 1e9f;
+        for (const fv::FigureData& fig : figures())
+            for (const auto& c : s.record_figure(fig).commands)
+                if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
+                    INFO(fig.id << " on " << page.x << "x" << page.y << ": \"" << t->text << "\" at "
+                                << t->style.size);
+                    CHECK(t->style.size >= 7.0f);
+                    smallest = std::min(smallest, t->style.size);
+                }
+        CHECK(smallest < 12.0f); // the page's text did shrink
+    }
 }
 
 // The first pair of texts in `list` whose boxes overlap by more than `slack` units each way, or "".
@@ -233,7 +258,7 @@ std::string overlapping_texts(const DisplayList& list, const fv::gfx::FontSet& f
 }
 
 TEST_CASE("No two texts of a figure overlap", "[layout][labels]") {
-    for (const Vec2 page : {Vec2{1280, 800}, Vec2{960, 600}, Vec2{640, 400}}) {
+    for (const Vec2 page : kPages) {
         fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
         for (const fv::FigureData& fig : figures()) {
             INFO(fig.id << " on " << page.x << "x" << page.y);
@@ -249,6 +274,49 @@ TEST_CASE("No two texts of a figure overlap", "[layout][labels]") {
     copy.anchor.x += 3, copy.anchor.y += 3;
     list.commands.push_back(copy);
     CHECK(overlapping_texts(list, session().fonts(), 1.0f) != "");
+}
+
+// The first label in a data region of `list` (a point's, an arrow's or a segment's name) that lies on an
+// arrow or a marker drawn there (its own included: labels sit beside what they name), as a description, or
+// "".
+std::string label_on_shape(const DisplayList& list, const fv::gfx::FontSet& fonts) {
+    for (const fv::gfx::Region& data : list.regions) {
+        if (data.role != "data") continue;
+        for (std::size_t k = data.first; k < data.last; ++k) {
+            const auto* t = std::get_if<fv::gfx::dl::Text>(&list.commands[k]);
+            if (!t) continue;
+            // The glyphs' box: the text's line box less 2 units each side (its leading, the gaps in glyphs);
+            // a label beside its marker may touch the marker's halo.
+            const Rect l = fv::gfx::text_bounds(*t, fonts);
+            const Rect b{l.x0 + 2, l.y0 + 2, l.x1 - 2, l.y1 - 2};
+            for (std::size_t j = data.first; j < data.last; ++j) {
+                const auto& c = list.commands[j];
+                const bool solid = std::holds_alternative<fv::gfx::dl::Arrow>(c) ||
+                                   std::holds_alternative<fv::gfx::dl::Marker>(c);
+                if (solid && fv::gfx::command_touches(c, b, fonts, 0.0f))
+                    return "\"" + t->text + "\" on " +
+                           (std::holds_alternative<fv::gfx::dl::Arrow>(c) ? "an arrow" : "a marker");
+            }
+        }
+    }
+    return "";
+}
+
+TEST_CASE("No label of a figure lies on an arrow or a marker", "[layout][labels]") {
+    // Fig. 4's "mean friction" and "π/2" sat on arrows at 640x400.
+    int labels = 0;
+    for (const Vec2 page : kPages) {
+        fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
+        for (const fv::FigureData& fig : figures()) {
+            const DisplayList list = s.record_figure(fig);
+            for (const fv::gfx::Region& data : list.regions)
+                for (std::size_t k = data.first; k < data.last && data.role == "data"; ++k)
+                    labels += std::holds_alternative<fv::gfx::dl::Text>(list.commands[k]);
+            INFO(fig.id << " on " << page.x << "x" << page.y);
+            CHECK(label_on_shape(list, s.fonts()) == "");
+        }
+    }
+    CHECK(labels > 50);
 }
 
 TEST_CASE("Every force plot states its sign convention on the figure and in its caption", "[layout][force]") {

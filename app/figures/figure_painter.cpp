@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -63,6 +65,7 @@ gfx::TextStyle label_style(float size, gfx::Color color, float dx, float dy) {
 struct LabelCandidate {
     gfx::Vec2 anchor;
     gfx::TextStyle style;
+    bool far = false; ///< Tried only when every place before lies on text, a marker or an arrow.
 };
 
 // Places labels one after the other where they cover the least of what is drawn in the data area (series,
@@ -71,38 +74,53 @@ class LabelPlacer {
   public:
     LabelPlacer(gfx::Canvas& c, const gfx::PlotTransform& tf) : canvas_(c), tf_(tf) {}
 
-    // `own`: the shape the label names (its marker, arrow or segment), which it may touch.
+    // `own`: the shape the label names (its marker, arrow or segment), which it may touch. `leader_to`: the
+    // point it names; where every candidate lies on a solid shape (text, marker, arrow), the label goes to
+    // the nearest free place in the data area instead, with a thin leader line to that point (matplotlib's
+    // annotate).
     void place(const std::string& text, const std::vector<LabelCandidate>& candidates,
-               const std::function<bool(const gfx::dl::Command&)>& own) {
+               const std::function<bool(const gfx::dl::Command&)>& own,
+               std::optional<gfx::Vec2> leader_to = std::nullopt) {
         if (text.empty() || candidates.empty()) return;
-        const auto& cmds = canvas_.display_list().commands;
         double best_score = 1e300;
         gfx::dl::Text best;
         for (const LabelCandidate& cand : candidates) {
+            if (cand.far && best_score < 100) break;
             gfx::dl::Text t{cand.anchor, text, cand.style, {}};
-            const gfx::Rect b = gfx::text_bounds(t, canvas_.fonts());
-            double score = 0;
-            const gfx::Rect& A = tf_.area;
-            if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
-            for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
-                const auto& cmd = cmds[k];
-                if (own(cmd) || !gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
-                // Text on text or on a marker is unreadable; crossing a line is only untidy.
-                const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
-                                   std::holds_alternative<gfx::dl::Marker>(cmd) ||
-                                   std::holds_alternative<gfx::dl::Arrow>(cmd);
-                score += solid ? 100 : 1;
-            }
-            for (const gfx::Rect& r : placed_)
-                if (r.overlaps(b)) score += 100;
+            const double score = cost(t, own);
             if (score < best_score) best_score = score, best = t;
             if (score == 0) break;
+        }
+        if (best_score >= 100 && leader_to) {
+            const gfx::Rect& A = tf_.area;
+            gfx::TextStyle st = candidates.front().style;
+            st.halign = gfx::HAlign::Center, st.valign = gfx::VAlign::Middle;
+            double best_far = 1e300;
+            gfx::dl::Text far;
+            for (float y = A.y0 + 6; y < A.y1 - 6; y += 6)
+                for (float x = A.x0 + 6; x < A.x1 - 6; x += 6) {
+                    const gfx::dl::Text t{{x, y}, text, st, {}};
+                    const double score = cost(t, own);
+                    if (score >= 100) continue;
+                    const double far_score = score * 1e4 + std::hypot(x - leader_to->x, y - leader_to->y);
+                    if (far_score < best_far) best_far = far_score, far = t;
+                }
+            if (best_far < 1e300) {
+                best = far;
+                const gfx::Rect b = gfx::text_bounds(far, canvas_.fonts());
+                const gfx::Vec2 p = *leader_to;
+                const gfx::Vec2 q{std::clamp(p.x, b.x0, b.x1), std::clamp(p.y, b.y0, b.y1)};
+                // From the box's edge to 4 units short of the point.
+                const float d = std::hypot(p.x - q.x, p.y - q.y);
+                if (d > 6) leaders_.push_back({q, q + (p - q) * ((d - 4) / d)});
+            }
         }
         placed_.push_back(gfx::text_bounds(best, canvas_.fonts()));
         pending_.push_back(best);
     }
     // Draws the placed labels (after every placement, so that each was placed against the shapes only).
     void draw() {
+        for (const auto& [a, b] : leaders_) canvas_.line(a, b, {gfx::Color::hex(0x606060), 0.8f});
         for (const auto& t : pending_) canvas_.text(t.anchor, t.text, t.style);
     }
 
@@ -111,6 +129,28 @@ class LabelPlacer {
     const gfx::PlotTransform& tf_;
     std::vector<gfx::Rect> placed_;
     std::vector<gfx::dl::Text> pending_;
+    std::vector<std::pair<gfx::Vec2, gfx::Vec2>> leaders_;
+
+    // What a label at `t` covers: 1000 outside the data area, 100 per text, marker or arrow (unreadable), 1
+    // per line it crosses (untidy), 100 per label placed before.
+    double cost(const gfx::dl::Text& t, const std::function<bool(const gfx::dl::Command&)>& own) const {
+        const auto& cmds = canvas_.display_list().commands;
+        const gfx::Rect b = gfx::text_bounds(t, canvas_.fonts());
+        double score = 0;
+        const gfx::Rect& A = tf_.area;
+        if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
+        for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
+            const auto& cmd = cmds[k];
+            if (own(cmd) || !gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
+            const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
+                               std::holds_alternative<gfx::dl::Marker>(cmd) ||
+                               std::holds_alternative<gfx::dl::Arrow>(cmd);
+            score += solid ? 100 : 1;
+        }
+        for (const gfx::Rect& r : placed_)
+            if (r.overlaps(b)) score += 100;
+        return score;
+    }
 };
 
 bool same(gfx::Vec2 a, gfx::Vec2 b) {
@@ -118,14 +158,16 @@ bool same(gfx::Vec2 a, gfx::Vec2 b) {
 }
 
 // The eight places around a point, at `r` from it, starting with direction (dx, dy) and turning away from it.
+// Crowded (every place near lies on text, a marker or an arrow): the same eight places twice as far out.
 std::vector<LabelCandidate> around(gfx::Vec2 at, float dx, float dy, float size, gfx::Color color) {
     const float a0 = std::atan2(dy, dx);
     std::vector<LabelCandidate> out;
-    for (int k : {0, 1, -1, 2, -2, 3, -3, 4}) {
-        const float a = a0 + static_cast<float>(k) * 0.25f * static_cast<float>(kPi);
-        const float ux = std::cos(a), uy = std::sin(a);
-        out.push_back({{at.x + 9 * ux, at.y + 8 * uy}, label_style(size, color, ux, uy)});
-    }
+    for (float r : {1.0f, 2.0f})
+        for (int k : {0, 1, -1, 2, -2, 3, -3, 4}) {
+            const float a = a0 + static_cast<float>(k) * 0.25f * static_cast<float>(kPi);
+            const float ux = std::cos(a), uy = std::sin(a);
+            out.push_back({{at.x + 9 * r * ux, at.y + 8 * r * uy}, label_style(size, color, ux, uy), r > 1});
+        }
     return out;
 }
 
@@ -251,13 +293,15 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 // Preferred side: as asked, else away from the middle of all marked points.
                 const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
                 const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
-                placer.place(p.label,
-                             around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * pd->text_scale,
-                                    gfx::colors::text),
-                             [&](const gfx::dl::Command& cmd) {
-                                 const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
-                                 return m && same(m->center, at);
-                             });
+                placer.place(
+                    p.label,
+                    around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * pd->text_scale,
+                           gfx::colors::text),
+                    [&](const gfx::dl::Command& cmd) {
+                        const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
+                        return m && same(m->center, at);
+                    },
+                    at);
             }
             for (const ArrowData& a : pd->arrows) {
                 const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
@@ -287,10 +331,15 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
                 for (float side : {1.f, -1.f})
                     cands.push_back({{to.x - uy * side * 22, to.y + ux * side * 22},
                                      label_style(size, ink_color(a.ink, 0), -uy * side, ux * side)});
-                placer.place(a.label, cands, [&](const gfx::dl::Command& cmd) {
-                    const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
-                    return ar && same(ar->from, from) && same(ar->to, to);
-                });
+                cands.push_back(
+                    {{to.x + ux * 36, to.y + uy * 36}, label_style(size, ink_color(a.ink, 0), ux, uy), true});
+                placer.place(
+                    a.label, cands,
+                    [&](const gfx::dl::Command& cmd) {
+                        const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
+                        return ar && same(ar->from, from) && same(ar->to, to);
+                    },
+                    to);
             }
             for (const SegmentData& s : pd->segments) {
                 if (s.label.empty()) continue;
@@ -332,9 +381,11 @@ namespace {
 
 // The figure's title centred at the top of `bounds`, within its width: at 22 units where it fits, else
 // smaller down to 16, else on two lines broken after the ", ", "; " or ": " that balances them best (as
-// large as both fit, at most 22). Returns where the title ends.
-float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds) {
-    constexpr float kSize = 22, kMinOneLine = 16, kTop = 12, kLeading = 1.15f;
+// large as both fit, at most 22). All three sizes times `factor` (page_text_factor). Returns where the title
+// ends.
+float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds, float factor) {
+    const float kSize = 22 * factor, kMinOneLine = 16 * factor, kTop = 12 * factor;
+    constexpr float kLeading = 1.15f;
     const float avail = std::max(1.0f, bounds.width() - 16);
     gfx::TextStyle ts;
     ts.halign = gfx::HAlign::Center;
@@ -378,20 +429,37 @@ float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect
 
 } // namespace
 
+float page_text_factor(const gfx::Rect& page) {
+    return std::clamp(std::min(page.width() / 640.0f, page.height() / 400.0f), kSmallestTextFactor, 1.0f);
+}
+
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
-    const float title_end = paint_title(canvas, fig.title, bounds);
-    const gfx::Rect body{bounds.x0 + 8, title_end + 14, bounds.x1 - 8, bounds.y1 - 8};
+    const float k = page_text_factor(bounds);
+    const float title_end = paint_title(canvas, fig.title, bounds, k);
+    const float inset = std::round(8 * k), gap = std::round(6 * k);
+    const gfx::Rect body{bounds.x0 + inset, title_end + std::round(14 * k), bounds.x1 - inset,
+                         bounds.y1 - inset};
+    // Each panel's text at the page's factor (a copy only on a small page).
+    auto panel = [&](std::size_t i, const gfx::Rect& r) {
+        if (k >= 1) {
+            paint_panel(canvas, fig.panels[i], r, true);
+            return;
+        }
+        PanelData p = fig.panels[i];
+        p.text_scale *= k;
+        paint_panel(canvas, p, r, true);
+    };
     if (fig.panels.size() == 3) {
         const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
-        paint_panel(canvas, fig.panels[0], {body.x0, body.y0, split - 6, body.y1}, true);
-        paint_panel(canvas, fig.panels[1], {split + 6, body.y0, body.x1, mid - 6}, true);
-        paint_panel(canvas, fig.panels[2], {split + 6, mid + 6, body.x1, body.y1}, true);
+        panel(0, {body.x0, body.y0, split - gap, body.y1});
+        panel(1, {split + gap, body.y0, body.x1, mid - gap});
+        panel(2, {split + gap, mid + gap, body.x1, body.y1});
         return;
     }
     const float w = body.width() / static_cast<float>(fig.panels.size());
-    for (std::size_t k = 0; k < fig.panels.size(); ++k) {
-        const float x0 = body.x0 + w * static_cast<float>(k);
-        paint_panel(canvas, fig.panels[k], {x0, body.y0, x0 + w, body.y1}, true);
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        const float x0 = body.x0 + w * static_cast<float>(i);
+        panel(i, {x0, body.y0, x0 + w, body.y1});
     }
 }
 

@@ -9,7 +9,13 @@ namespace fv::app {
 
 // Lays the panels out inside `bounds` under the figure title: one panel fills it; three panels (the scene)
 // put the top view on the left and the two plots stacked on the right.
+// On a page smaller than 640x400 units all of the figure's text and its spacing shrink with the page (a
+// journal's one-column figure, ~250 pt wide), by page_text_factor: the smaller of width / 640 and height /
+// 400, at least kSmallestTextFactor (tick labels and legends 13 x 0.6 = 7.8 units at 320x240, the smallest
+// page).
 void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds);
+constexpr float kSmallestTextFactor = 0.6f;
+float page_text_factor(const gfx::Rect& page);
 
 // One panel inside `bounds` (used by the app's own layouts too). Returns its data <-> pixel mapping.
 // `legend_below`: gfx::Plot::legend_below (figures, whose pages may be narrow; the app's panels keep their

@@ -219,6 +219,30 @@ TEST_CASE("render --scale: 2x the size at scale 2 is the same picture at twice t
     CHECK(sh("pdfinfo '" + two + "/fig8.pdf'").out.find("960 x 600 pts") != std::string::npos);
 }
 
+TEST_CASE("render --scale below 1 is a thumbnail: the 1x picture at lower resolution, same layout",
+          "[render][scale]") {
+    // README: the page (--size / --scale) decides the layout and the text sizes in logical units; --scale
+    // only the pixels per unit. Below 1 that makes a thumbnail (text 13 x S pixels, 6.5 at 0.5), not a
+    // legible small figure: for that, a small page at scale >= 1 (320x240 at scale 1: tick labels 7.8 px).
+    const std::string& one = rendered();
+    const std::string thumb = scratch("scale05");
+    for (const char* id : {"fig4", "fig5", "fig14"}) {
+        REQUIRE(render(std::string("--figure ") + id + " --size 480x300 --scale 0.5 --out " + thumb).code ==
+                0);
+        const fv::gfx::Image small = load_png(thumb + "/" + id + ".png");
+        REQUIRE(small.width == 480);
+        REQUIRE(small.height == 300);
+        // Glyphs rasterised at 6.5 px are not averaged 13 px glyphs: compared at half the resolution again.
+        const auto cmp = fv::gfx::compare_images(half(small), half(half(load_png(one + "/" + id + ".png"))),
+                                                 kChannel, kShare);
+        INFO(id << ": " << cmp.differing_share * 100 << "% of pixels differ (" << thumb << ")");
+        CHECK(cmp.passed);
+    }
+    // The SVG and PDF do not depend on the scale: their page is the logical page.
+    REQUIRE(render("--figure fig5 --size 480x300 --scale 0.5 --format svg --out " + thumb).code == 0);
+    CHECK(slurp(thumb + "/fig5.svg").find("width=\"960pt\"") != std::string::npos);
+}
+
 TEST_CASE("render --format/--scale: bad input exits 2 naming the allowed values, nothing written",
           "[render][formats][cli]") {
     struct Case {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace fv::gfx {
@@ -76,6 +77,62 @@ Range fit_range(const std::vector<Series>& series, bool is_x, const Axis& axis) 
     }
     if (axis.log) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
     return {lo, hi};
+}
+
+// A title within `avail` units: at `size` where it fits, else smaller (steps of 0.5) down to `floor`, else
+// (when `may_wrap`) on two lines broken at the space that balances them best, outside markup braces, as large
+// as both fit down to `floor`. Too long even so: at `floor`, and its centre kept on the page by the caller.
+struct FittedText {
+    float size = 0;
+    std::string first, second; ///< second empty: one line
+    float width = 0;           ///< of the wider line
+};
+
+constexpr float kTitleLeading = 1.15f;
+
+FittedText fit_text(const Canvas& c, const std::string& s, float size, float floor, float avail,
+                    bool may_wrap) {
+    auto width = [&](const std::string& t, float z) { return c.measure_text(t, z).x; };
+    FittedText f{size, s, "", width(s, size)};
+    if (s.empty() || f.width <= avail) return f;
+    floor = std::min(floor, size);
+    for (float z = size - 0.5f; z >= floor - 1e-3f; z -= 0.5f)
+        if (const float w = width(s, z); w <= avail) return {z, s, "", w};
+    f.size = floor, f.width = width(s, floor);
+    if (!may_wrap) return f;
+    float best = 1e30f;
+    std::string a, b;
+    int depth = 0;
+    for (std::size_t k = 0; k < s.size(); ++k) {
+        depth += s[k] == '{' ? 1 : (s[k] == '}' ? -1 : 0);
+        if (depth != 0 || s[k] != ' ' || k == 0 || k + 1 == s.size()) continue;
+        const std::string l = s.substr(0, k), r = s.substr(k + 1);
+        const float w = std::max(width(l, size), width(r, size));
+        if (w < best) best = w, a = l, b = r;
+    }
+    if (b.empty()) return f;
+    for (float z = size; z >= floor - 1e-3f; z -= 0.5f) {
+        const float w = std::max(width(a, z), width(b, z));
+        if (w <= avail || z - 0.5f < floor - 1e-3f) return {z, a, b, w};
+    }
+    return f;
+}
+
+// The panel title fitted to the plot's width (at most 16 units below the tick labels' size), and the band it
+// takes above the axes: twice its size for one line, as before; a line more for two.
+FittedText panel_title(const Plot& plot, const Canvas& c, const Rect& bounds) {
+    return fit_text(c, plot.title, plot.font_size + 3, plot.font_size, bounds.width() - 4, true);
+}
+float title_band(const FittedText& t) {
+    return std::round(t.size * (t.second.empty() ? 2.0f : 2.0f + kTitleLeading));
+}
+// The y axis title fitted to the data area's height (rotated); its band left of the tick labels.
+FittedText y_title(const Plot& plot, const Canvas& c, float area_height) {
+    return fit_text(c, plot.y_axis.title, plot.font_size + 1, plot.font_size, area_height + plot.font_size,
+                    true);
+}
+float y_title_band(const FittedText& t) {
+    return t.second.empty() ? t.size * 1.5f + 6 : t.size * (1.5f + kTitleLeading) + 6;
 }
 
 struct Layout {
@@ -176,7 +233,7 @@ static float top_axis_band(const Plot& plot) {
 }
 
 // The top axis: ticks at nice values of top_scale * x, labels above them, its title above those.
-static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform& tf) {
+static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform& tf, const Rect& bounds) {
     const Rect& A = tf.area;
     const double k = plot.top_scale;
     const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
@@ -189,8 +246,17 @@ static void draw_top_axis(Canvas& canvas, const Plot& plot, const PlotTransform&
         if (!t.label.empty()) canvas.text({x, A.y0 - kTickLength - 3}, t.label, ts);
     }
     if (!plot.top_title.empty()) {
-        ts.size = plot.font_size + 1;
-        canvas.text({0.5f * (A.x0 + A.x1), A.y0 - top_axis_band(plot) + ts.size * 1.3f}, plot.top_title, ts);
+        // Too long for the plot's width (small pages): smaller, down to the tick labels' size, and kept
+        // within the plot's bounds.
+        const float size = plot.font_size + 1;
+        const FittedText f = fit_text(canvas, plot.top_title, size, plot.font_size, bounds.width(), false);
+        ts.size = f.size;
+        const float cx = 0.5f * (A.x0 + A.x1);
+        canvas.text({f.width >= bounds.width()
+                         ? 0.5f * (bounds.x0 + bounds.x1)
+                         : std::clamp(cx, bounds.x0 + 0.5f * f.width, bounds.x1 - 0.5f * f.width),
+                     A.y0 - top_axis_band(plot) + size * 1.3f},
+                    plot.top_title, ts);
     }
 }
 
@@ -207,9 +273,9 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
     }
     PlotTransform& tf = L.tf;
     tf.log_x = plot.x_axis.log, tf.log_y = plot.y_axis.log;
-    const float fs = plot.font_size, title_fs = plot.font_size + 1, head_fs = plot.font_size + 3;
-    const float top =
-        bounds.y0 + (plot.title.empty() ? 10 : std::round(head_fs * 2.0f)) + top_axis_band(plot) + band;
+    const float fs = plot.font_size, title_fs = plot.font_size + 1;
+    const float top = bounds.y0 + (plot.title.empty() ? 10 : title_band(panel_title(plot, canvas, bounds))) +
+                      top_axis_band(plot) + band;
     const float bottom =
         bounds.y1 - reserve_below -
         std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
@@ -229,13 +295,16 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
             tf.x0 = cx - 0.5 * u * tf.area.width(), tf.x1 = cx + 0.5 * u * tf.area.width();
             tf.y0 = cy - 0.5 * u * tf.area.height(), tf.y1 = cy + 0.5 * u * tf.area.height();
         }
-        const int nx = std::max(2, static_cast<int>(tf.area.width() / 95));
-        const int ny = std::max(2, static_cast<int>(tf.area.height() / 60));
+        // Tick spacing in proportion to the labels' size where they are smaller than 13 units (small pages).
+        const float spacing = std::min(1.0f, fs / 13.0f);
+        const int nx = std::max(2, static_cast<int>(tf.area.width() / (95 * spacing)));
+        const int ny = std::max(2, static_cast<int>(tf.area.height() / (60 * spacing)));
         // Decade labels are short: log axes can carry about twice as many.
         L.x_ticks = tf.log_x ? log_ticks(tf.x0, tf.x1, 2 * nx) : linear_ticks(tf.x0, tf.x1, nx);
         L.y_ticks = tf.log_y ? log_ticks(tf.y0, tf.y1, 2 * ny) : linear_ticks(tf.y0, tf.y1, ny);
-        left_margin = std::round(kTickLength + 5 + max_label_width(canvas, L.y_ticks, fs) +
-                                 (plot.y_axis.title.empty() ? 8 : title_fs * 1.5f + 6));
+        left_margin =
+            std::round(kTickLength + 5 + max_label_width(canvas, L.y_ticks, fs) +
+                       (plot.y_axis.title.empty() ? 8 : y_title_band(y_title(plot, canvas, bottom - top))));
     }
     return L;
 }
@@ -289,14 +358,83 @@ std::vector<std::size_t> legend_entries(const std::vector<Series>& series) {
     return entries;
 }
 
-// Width and height of the legend box.
-Vec2 legend_size(const Canvas& canvas, const std::vector<Series>& series,
-                 const std::vector<std::size_t>& entries, float fs) {
-    const float row = std::round(fs * 1.6f);
+// The legend's geometry: entries in `cols` columns (row by row), spacing shrinking with text smaller than 13
+// units (figures on small pages), never growing with larger text (the app's presentation mode). One column
+// wider than `wrap_width` (> 0): its long labels on two lines.
+struct LegendGeom {
+    float pad, sample, sep, row, col_w, col_gap;
+    int cols;
+    Vec2 size;
+    std::vector<std::string> first, second; ///< Per entry: its label's lines (second empty: one line).
+    std::vector<float> middle;              ///< Per entry in one column: its middle below the box's top.
+};
+
+LegendGeom legend_geom(const Canvas& canvas, const std::vector<Series>& series,
+                       const std::vector<std::size_t>& entries, float fs, int cols = 1,
+                       float wrap_width = 0) {
+    const float k = std::min(1.0f, fs / 13.0f);
+    LegendGeom g{};
+    g.pad = std::round(kLegendPad * k), g.sample = std::round(kLegendSample * k), g.sep = std::round(8 * k);
+    g.row = std::round(fs * 1.6f), g.col_gap = std::round(kLegendGap * k);
+    g.cols = std::max(1, std::min(cols, static_cast<int>(entries.size())));
     float label_w = 0;
     for (std::size_t i : entries) label_w = std::max(label_w, canvas.measure_text(series[i].label, fs).x);
-    return {std::round(kLegendPad + kLegendSample + 8 + label_w + kLegendPad),
-            std::round(kLegendPad * 0.75f * 2 + row * static_cast<float>(entries.size()))};
+    const float label_avail = wrap_width - 2 * g.pad - g.sample - g.sep;
+    const bool wrap = g.cols == 1 && wrap_width > 0 && 2 * g.pad + g.sample + g.sep + label_w > wrap_width;
+    float y = g.pad * 0.75f;
+    if (wrap) label_w = 0;
+    for (std::size_t i : entries) {
+        FittedText f{fs, series[i].label, "", 0};
+        if (wrap) {
+            f = fit_text(canvas, series[i].label, fs, fs, label_avail, true);
+            label_w = std::max(label_w, f.width);
+        }
+        const float h = f.second.empty() ? g.row : g.row + kTitleLeading * fs;
+        g.first.push_back(f.first), g.second.push_back(f.second), g.middle.push_back(y + 0.5f * h);
+        y += h;
+    }
+    g.col_w = g.sample + g.sep + label_w;
+    const int rows = (static_cast<int>(entries.size()) + g.cols - 1) / g.cols;
+    g.size = {
+        std::round(2 * g.pad + static_cast<float>(g.cols) * g.col_w +
+                   static_cast<float>(g.cols - 1) * g.col_gap),
+        std::round(g.cols == 1 ? y + g.pad * 0.75f : g.pad * 0.75f * 2 + g.row * static_cast<float>(rows))};
+    return g;
+}
+
+// Below the axes: as many columns as fit `width`; one column too wide for it: its long labels on two lines.
+LegendGeom legend_below_geom(const Canvas& canvas, const std::vector<Series>& series,
+                             const std::vector<std::size_t>& entries, float fs, float width) {
+    LegendGeom g = legend_geom(canvas, series, entries, fs, 1);
+    if (g.size.x > width) return legend_geom(canvas, series, entries, fs, 1, width);
+    for (int c = 2; c <= static_cast<int>(entries.size()); ++c) {
+        const LegendGeom more = legend_geom(canvas, series, entries, fs, c);
+        if (more.size.x > width) break;
+        g = more;
+    }
+    return g;
+}
+
+// Every `stride`-th label of `ticks` such that neighbours keep `gap` units between them (`along`: the
+// labels' extent along the axis), the others emptied: labels skip rather than collide.
+void thin_labels(std::vector<Tick>& ticks, const std::function<float(const Tick&)>& pos,
+                 const std::function<float(const Tick&)>& along, float gap) {
+    std::vector<std::size_t> labelled;
+    for (std::size_t i = 0; i < ticks.size(); ++i)
+        if (!ticks[i].label.empty()) labelled.push_back(i);
+    for (std::size_t stride = 1; stride < labelled.size(); ++stride) {
+        bool clear = true;
+        for (std::size_t j = stride; j < labelled.size() && clear; j += stride) {
+            const Tick &a = ticks[labelled[j - stride]], &b = ticks[labelled[j]];
+            clear = std::fabs(pos(b) - pos(a)) - 0.5f * (along(a) + along(b)) >= gap;
+        }
+        if (clear) {
+            for (std::size_t j = 0; j < labelled.size(); ++j)
+                if (j % stride != 0) ticks[labelled[j]].label.clear();
+            return;
+        }
+    }
+    for (std::size_t j = 1; j < labelled.size(); ++j) ticks[labelled[j]].label.clear();
 }
 
 // Between entries in a row; between the rows and the axes; rows in font sizes (tighter than a boxed
@@ -355,14 +493,17 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     redraw = LegendPlace::Inside;
     const bool outside = place == LegendPlace::Right;
     const std::vector<std::size_t> entries = legend_entries(series_);
-    const Vec2 lsize = legend_size(canvas, series_, entries, font_size);
+    const LegendGeom below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
+    const LegendGeom lg =
+        place == LegendPlace::Below ? below_geom : legend_geom(canvas, series_, entries, font_size);
+    const Vec2 lsize = lg.size;
     const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
     const float band = legend_band(canvas);
     const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas,
                                     outside ? lsize.x + 2 * kLegendGap : 0.0f, below, band);
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
-    const float fs = font_size, title_fs = font_size + 1, head_fs = font_size + 3;
+    const float fs = font_size, title_fs = font_size + 1;
 
     canvas.fill_rect(A, colors::white);
     // Grid: 1-px lines centred on pixel centres so they stay crisp.
@@ -446,13 +587,20 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     }
     TextStyle ts;
     ts.size = fs;
-    for (const Tick& t : L.x_ticks) {
+    std::vector<Tick> x_ticks = L.x_ticks, y_ticks = L.y_ticks;
+    thin_labels(
+        x_ticks, [&](const Tick& t) { return tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x; },
+        [&](const Tick& t) { return canvas.measure_text(t.label, fs).x; }, 0.5f * fs);
+    thin_labels(
+        y_ticks, [&](const Tick& t) { return tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y; },
+        [&](const Tick& t) { return canvas.measure_text(t.label, fs).y; }, 0.2f * fs);
+    for (const Tick& t : x_ticks) {
         if (t.label.empty()) continue;
         const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
         ts.halign = HAlign::Center, ts.valign = VAlign::Top;
         canvas.text({x, A.y1 + kTickLength + 3}, t.label, ts);
     }
-    for (const Tick& t : L.y_ticks) {
+    for (const Tick& t : y_ticks) {
         if (t.label.empty()) continue;
         const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
         ts.halign = HAlign::Right, ts.valign = VAlign::Middle;
@@ -462,27 +610,45 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     // Titles.
     TextStyle tt;
     tt.size = title_fs;
+    // Centred on the data area, moved as little as keeps them within the plot's bounds (small pages).
+    auto centred = [](float c, float w, float lo, float hi) {
+        return w >= hi - lo ? 0.5f * (lo + hi) : std::clamp(c, lo + 0.5f * w, hi - 0.5f * w);
+    };
     if (!x_axis.title.empty()) {
-        tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
-        canvas.text({0.5f * (A.x0 + A.x1), bounds_.y1 - below - 4}, x_axis.title, tt);
+        const FittedText f = fit_text(canvas, x_axis.title, title_fs, fs, bounds_.width(), false);
+        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
+        canvas.text({centred(0.5f * (A.x0 + A.x1), f.width, bounds_.x0, bounds_.x1), bounds_.y1 - below - 4},
+                    x_axis.title, tt);
     }
     if (!y_axis.title.empty()) {
-        tt.halign = HAlign::Center, tt.valign = VAlign::Top, tt.angle_deg = 90;
-        canvas.text({bounds_.x0 + 4, 0.5f * (A.y0 + A.y1)}, y_axis.title, tt);
+        const FittedText f = y_title(*this, canvas, A.height());
+        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Top, tt.angle_deg = 90;
+        // Longer than the data area (a short plot on a small page): below the panel title, down beside the
+        // x tick labels.
+        const float cy = centred(0.5f * (A.y0 + A.y1), f.width, A.y0 - 0.4f * fs, bounds_.y1 - below);
+        canvas.text({bounds_.x0 + 4, cy}, f.first, tt);
+        if (!f.second.empty()) canvas.text({bounds_.x0 + 4 + kTitleLeading * f.size, cy}, f.second, tt);
         tt.angle_deg = 0;
     }
     if (!title.empty()) {
-        tt.size = head_fs, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
-        canvas.text({0.5f * (A.x0 + A.x1), 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this) - band)}, title,
-                    tt);
+        const FittedText f = panel_title(*this, canvas, bounds_);
+        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
+        const float cx = centred(0.5f * (A.x0 + A.x1), f.width, bounds_.x0, bounds_.x1);
+        const float cy = 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this) - band);
+        if (f.second.empty()) {
+            canvas.text({cx, cy}, title, tt);
+        } else {
+            canvas.text({cx, cy - 0.5f * kTitleLeading * f.size}, f.first, tt);
+            canvas.text({cx, cy + 0.5f * kTitleLeading * f.size}, f.second, tt);
+        }
     }
-    if (top_scale > 0) draw_top_axis(canvas, *this, tf);
+    if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
 
     if (heatmap_) draw_colorbar(canvas, A, *heatmap_, fs, title_fs);
 
     // Legend.
     if (legend == LegendPosition::None || entries.empty()) return tf;
-    const float row = std::round(fs * 1.6f), sample = kLegendSample, pad = kLegendPad;
+    const float row = lg.row, sample = lg.sample, pad = lg.pad;
     if (legend == LegendPosition::Above) {
         const AboveLayout above = above_layout(canvas, series_, entries, fs, A.width());
         const float above_row = std::round(fs * kAboveRow);
@@ -558,8 +724,10 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
         }
         return n;
     };
-    // Below the axes: where it fits (a third of the plot's height), else inside.
-    const bool below_fits = legend_below && w <= bounds_.width() && h + kLegendGap <= bounds_.height() / 3;
+    // Below the axes: where it fits (a third of the plot's height; 45% for text below 13 units, on small
+    // pages), else inside.
+    const bool below_fits = legend_below && below_geom.size.x <= bounds_.width() &&
+                            below_geom.size.y + kLegendGap <= bounds_.height() * (fs < 13 ? 0.45f : 1.0f / 3);
     if (outside) {
         const float x0 = A.x1 + (heatmap_ ? kColorBarSpace : 0.0f) + kLegendGap;
         box = {x0, A.y0, x0 + w, A.y0 + h};
@@ -593,23 +761,32 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     lt.size = fs, lt.valign = VAlign::Middle;
     // Samples first, labels after (fewer draw batches; they do not overlap).
     const float y_first = box.y0 + pad * 0.75f + 0.5f * row;
-    float y = y_first;
-    for (std::size_t i : entries) {
-        const Series& s = series_[i];
-        const Color c = series_color(s, i);
-        const float x0 = box.x0 + pad, cy = std::floor(y) + 0.5f;
+    auto entry_at = [&](std::size_t n) {
+        const int c = static_cast<int>(n) % lg.cols, r = static_cast<int>(n) / lg.cols;
+        return Vec2{box.x0 + pad + static_cast<float>(c) * (lg.col_w + lg.col_gap),
+                    lg.cols == 1 ? box.y0 + lg.middle[n] : y_first + static_cast<float>(r) * row};
+    };
+    for (std::size_t n = 0; n < entries.size(); ++n) {
+        const Series& s = series_[entries[n]];
+        const Color c = series_color(s, entries[n]);
+        const Vec2 at = entry_at(n);
+        const float x0 = at.x, cy = std::floor(at.y) + 0.5f;
+        const float bar = std::min(6.0f, 0.45f * row);
         if (s.style.draw_line)
             canvas.line({x0, cy}, {x0 + sample, cy}, {c, s.style.line_width, s.style.line});
         if (!s.y_err.empty() && !s.style.draw_line)
-            canvas.line({x0 + 0.5f * sample, cy - 6}, {x0 + 0.5f * sample, cy + 6},
+            canvas.line({x0 + 0.5f * sample, cy - bar}, {x0 + 0.5f * sample, cy + bar},
                         {c, 1.2f, LineStyle::Solid});
         if (s.style.marker != MarkerShape::None) canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
-        y += row;
     }
-    y = y_first;
-    for (std::size_t i : entries) {
-        canvas.text({box.x0 + pad + sample + 8, y}, series_[i].label, lt);
-        y += row;
+    for (std::size_t n = 0; n < entries.size(); ++n) {
+        const Vec2 at = entry_at(n);
+        if (lg.second[n].empty()) {
+            canvas.text({at.x + sample + lg.sep, at.y}, series_[entries[n]].label, lt);
+        } else {
+            canvas.text({at.x + sample + lg.sep, at.y - 0.5f * kTitleLeading * fs}, lg.first[n], lt);
+            canvas.text({at.x + sample + lg.sep, at.y + 0.5f * kTitleLeading * fs}, lg.second[n], lt);
+        }
     }
     canvas.add_region("legend", box, legend_start);
     return tf;

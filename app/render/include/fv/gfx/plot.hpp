@@ -84,9 +84,14 @@ class Plot {
     LegendPosition legend = LegendPosition::Best;
     /// Where the legend's place inside the axes covers data and it cannot go right of them (a third of the
     /// plot's width at most): below the axes, under the x axis title, the plot shorter, instead of the place
-    /// covering least. Only where its height fits a third of the plot's; for a fixed corner too.
+    /// covering least. Only where its height fits a third of the plot's (45% with text below 13 units: small
+    /// pages); for a fixed corner too. There it takes as many columns as fit the plot's width; one column too
+    /// wide for it has its long entries on two lines.
     bool legend_below = false;
-    float font_size = 13; ///< Tick labels; titles are a little larger.
+    /// Tick labels; titles are a little larger. Below 13 (small pages) the legend's spacing and the ticks'
+    /// spacing shrink with it. Titles too long for the plot shrink (down to font_size), then wrap to two
+    /// lines; tick labels too close to a neighbour are left out.
+    float font_size = 13;
 
     Series& add_series(std::string label, std::vector<double> x, std::vector<double> y,
                        SeriesStyle style = {});
