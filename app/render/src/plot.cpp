@@ -80,8 +80,9 @@ Range fit_range(const std::vector<Series>& series, bool is_x, const Axis& axis) 
 }
 
 // A title within `avail` units: at `size` where it fits, else smaller (steps of 0.5) down to `floor`, else
-// (when `may_wrap`) on two lines broken at the space that balances them best, outside markup braces, as large
-// as both fit down to `floor`. Too long even so: at `floor`, and its centre kept on the page by the caller.
+// (when `may_wrap`) on two lines broken at the space that balances them best, outside markup braces and
+// parentheses ("F / F_c =" over "(P − T) / z_ss", not "(P" over "− T) / z_ss"), as large as both fit down to
+// `floor`. Too long even so: at `floor`, and its centre kept on the page by the caller.
 struct FittedText {
     float size = 0;
     std::string first, second; ///< second empty: one line
@@ -104,7 +105,7 @@ FittedText fit_text(const Canvas& c, const std::string& s, float size, float flo
     std::string a, b;
     int depth = 0;
     for (std::size_t k = 0; k < s.size(); ++k) {
-        depth += s[k] == '{' ? 1 : (s[k] == '}' ? -1 : 0);
+        depth += s[k] == '{' || s[k] == '(' ? 1 : (s[k] == '}' || s[k] == ')' ? -1 : 0);
         if (depth != 0 || s[k] != ' ' || k == 0 || k + 1 == s.size()) continue;
         const std::string l = s.substr(0, k), r = s.substr(k + 1);
         const float w = std::max(width(l, size), width(r, size));
