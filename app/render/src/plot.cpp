@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 
 namespace fv::gfx {
 
@@ -494,9 +495,13 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     redraw = LegendPlace::Inside;
     const bool outside = place == LegendPlace::Right;
     const std::vector<std::size_t> entries = legend_entries(series_);
-    const LegendGeom below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
+    // The geometry below the axes only where the legend may go there: it measures every label for each
+    // column count, and the app draws its plots every frame.
+    std::optional<LegendGeom> below_geom;
+    if (place == LegendPlace::Below || legend_below)
+        below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
     const LegendGeom lg =
-        place == LegendPlace::Below ? below_geom : legend_geom(canvas, series_, entries, font_size);
+        place == LegendPlace::Below ? *below_geom : legend_geom(canvas, series_, entries, font_size);
     const Vec2 lsize = lg.size;
     const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
     const float band = legend_band(canvas);
@@ -727,8 +732,9 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     };
     // Below the axes: where it fits (a third of the plot's height; 45% for text below 13 units, on small
     // pages), else inside.
-    const bool below_fits = legend_below && below_geom.size.x <= bounds_.width() &&
-                            below_geom.size.y + kLegendGap <= bounds_.height() * (fs < 13 ? 0.45f : 1.0f / 3);
+    const bool below_fits =
+        legend_below && below_geom->size.x <= bounds_.width() &&
+        below_geom->size.y + kLegendGap <= bounds_.height() * (fs < 13 ? 0.45f : 1.0f / 3);
     if (outside) {
         const float x0 = A.x1 + (heatmap_ ? kColorBarSpace : 0.0f) + kLegendGap;
         box = {x0, A.y0, x0 + w, A.y0 + h};

@@ -183,6 +183,8 @@ RadauStep<Pb> radau_step(const Pb& pb, double tau0, const typename RadauStep<Pb>
                 st.solved = true;
                 break;
             }
+            double js[3];
+            for (int j = 0; j < 3; ++j) js[j] = pb.jac(st.pz[j])(0, 0);
             Eigen::Matrix3d M;
             Eigen::Vector3d res;
             for (int i = 0; i < 3; ++i) {
@@ -190,7 +192,7 @@ RadauStep<Pb> radau_step(const Pb& pb, double tau0, const typename RadauStep<Pb>
                 for (int j = 0; j < 3; ++j) {
                     const double hA = h * A[i][j];
                     res[i] -= hA * st.pz[j].f[0];
-                    M(i, j) = (i == j ? 1.0 : 0.0) - hA * pb.jac(st.pz[j])(0, 0);
+                    M(i, j) = (i == j ? 1.0 : 0.0) - hA * js[j];
                 }
             }
             const Eigen::Vector3d dz = SmallLU<double, 3>(M).solve(Eigen::Vector3d(-res));
