@@ -159,9 +159,9 @@ TEST_CASE("animate: bad input exits 2 with one line naming what is allowed, noth
 
 TEST_CASE("app: File > Export animation (the script's animate) writes the loop in the background",
           "[animate][gui]") {
-    const std::string gif = root() + "/app.gif", bad = root() + "/app.avi", script = root() + "/export.txt";
-    // Speed 2 periods/s: 2 periods at 30 fps are 30 frames. A bad extension leaves a status line, no file.
-    std::ofstream(script) << "1 zeta 0.3\n2 speed 2\n3 animate " << gif << "\n4 animate " << bad << "\n";
+    const std::string gif = root() + "/app.gif", script = root() + "/export.txt";
+    // Speed 2 periods/s: 2 periods at 30 fps are 30 frames.
+    std::ofstream(script) << "1 zeta 0.3\n2 speed 2\n3 animate " << gif << "\n";
     auto check = [&](const std::string& prefix, const std::string& platform) {
         ::unlink(gif.c_str());
         const Run r = fv::test::run_command(
@@ -175,7 +175,6 @@ TEST_CASE("app: File > Export animation (the script's animate) writes the loop i
         CHECK(g.height == 600);
         CHECK(g.loops);
         check_loop(g.frames, 15, 0.02);
-        CHECK(::access(bad.c_str(), F_OK) != 0);
     };
     check("", "headless");
     // The window's GL context on the main thread, the export's OSMesa context on its worker thread. Without

@@ -312,7 +312,7 @@ TEST_CASE("CLI: fit of a malformed file exits 2 with FILE:LINE:COL: message", "[
     Run r = run("fit --data " + bad + " --theta 90 --i 0 --out " + out);
     CHECK(r.code == 2);
     CHECK(lines(r.err) == 1);
-    CHECK(r.err.find(bad + ":4:6: 'r_x' 'nan' is not finite") != std::string::npos);
+    CHECK(r.err.find(bad + ":4:6: r_x = 'nan' is not a decimal number") != std::string::npos);
     CHECK(slurp(out) == "keep\n");
 
     std::ofstream(bad) << "vb,r_x\n0.1,0.5\n";

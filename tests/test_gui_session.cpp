@@ -138,7 +138,7 @@ TEST_CASE("gui --session/--link: a bad file or link exits 2 with one line naming
     for (const Case& c : {
              Case{"--session syntax.json", "--session: syntax.json:4:9: not valid JSON: syntax error"},
              Case{"--session range.json",
-                  "--session: range.json:3:12: rdisp = 20000; allowed: rdisp in (0, 10000]"},
+                  "--session: range.json:3:12: rdisp = 20000 is out of range; allowed: rdisp in (0, 10000]"},
              Case{"--session type.json", "--session: type.json:3:12: speed: expected a number, got a string"},
              Case{"--session model.json",
                   "--session: model.json:3:12: model = \"coulomb\"; allowed: dahl, rigid"},

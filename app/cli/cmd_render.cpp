@@ -19,6 +19,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -161,6 +162,15 @@ FigureInputs over(FigureInputs example, const FigureInputs& given) {
     return example;
 }
 
+// Every file render writes for `spec`: ID.png/.svg/.pdf as asked, the CSV tables and ID.json.
+std::vector<std::string> figure_files(const FigureSpec& spec, const OutputArgs& output) {
+    std::vector<std::string> names;
+    for (const std::string& ext : output.extensions()) names.push_back(spec.id + "." + ext);
+    for (const std::string& suffix : table_suffixes(spec)) names.push_back(spec.id + suffix + ".csv");
+    names.push_back(spec.id + ".json");
+    return names;
+}
+
 // ID.json beside the image: what it shows and everything it depends on.
 std::string caption_json(const FigureSpec& spec, const std::vector<std::string>& files,
                          const std::string& status) {
@@ -272,9 +282,6 @@ Command add_render_command(CLI::App& root) {
                 check_out_dir(a->out);
                 std::string dir = a->out;
                 while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
-                // Each image's own name too (say a directory or a socket called fig8.png is in the way).
-                for (const std::string& ext : a->output.extensions())
-                    for (const auto& [e, ignored] : chosen) check_out(dir + "/" + e->id + "." + ext);
                 // The figures' definitions: fig19 reads and fits its data here, before any rendering, so
                 // that a malformed file is a usage error with nothing written.
                 std::vector<FigureSpec> specs;
@@ -287,6 +294,10 @@ Command add_render_command(CLI::App& root) {
                         throw UsageError(std::string("--data: ") + err.what());
                     }
                 }
+                // Every file of every figure, before anything is computed (say a directory called
+                // fig8.csv, or a socket called fig8.png, is in the way): a usage error with nothing written.
+                for (const FigureSpec& spec : specs)
+                    for (const std::string& name : figure_files(spec, a->output)) check_out(dir + "/" + name);
                 gfx::ContextOptions co;
                 co.backend = gfx::Backend::Headless;
                 co.width = sz.w;
@@ -311,28 +322,44 @@ Command add_render_command(CLI::App& root) {
                     std::vector<std::pair<std::string, std::string>> files; // beside the PNG: name, content
                 };
                 const OutputArgs& output = a->output;
-                // Owns the frame and the display list, and frees them as soon as they are written.
-                auto write = [dir, &output](Output o) {
+                // Owns the frame and the display list, and frees them as soon as they are written. After a
+                // failed write nothing more is written (a full disk, a directory gone): `stop` is set by the
+                // first failure, and jobs still queued find it.
+                auto stop = std::make_shared<std::atomic<bool>>(false);
+                // nullopt: not written (an earlier write failed); "": written; else the failure.
+                auto write = [dir, &output, stop](Output o) -> std::optional<std::string> {
+                    if (*stop) return std::nullopt;
                     std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
                     std::vector<std::uint8_t>().swap(o.image.rgba);
                     o.list = {};
                     for (const auto& [file, content] : o.files)
                         if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
+                    if (!err.empty()) *stop = true;
                     return err;
                 };
                 const std::size_t encoders = encoders_for(sz.w, sz.h);
-                std::deque<std::pair<std::future<std::string>, std::string>> pending; // jobs, "wrote" lines
+                // jobs, "wrote" lines
+                std::deque<std::pair<std::future<std::optional<std::string>>, std::string>> pending;
+                std::string first_error;
                 auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
-                    std::string err = pending.front().first.get(), line = std::move(pending.front().second);
+                    const std::optional<std::string> err = pending.front().first.get();
+                    const std::string line = std::move(pending.front().second);
                     pending.pop_front();
-                    if (!err.empty()) throw RuntimeFailure(err);
-                    std::printf("%s\n", line.c_str());
+                    if (err && err->empty()) std::printf("%s\n", line.c_str());
+                    if (err && !err->empty() && first_error.empty()) first_error = *err;
+                };
+                // After the first failed write: the jobs in flight end, and nothing else is computed.
+                auto stop_if_failed = [&] {
+                    if (!*stop) return;
+                    while (!pending.empty()) finish_oldest();
+                    throw RuntimeFailure(first_error + " (stopped there: the figures after it were not written)");
                 };
                 // Every figure is written; those with failed points make the exit status 3.
                 const std::size_t nfigures = specs.size();
                 std::string failed;
                 int nfailed = 0;
                 for (FigureSpec& spec : specs) {
+                    stop_if_failed();
                     FigureData data = compute_figure(spec);
                     for (TableData& t : data.tables) apply_test_hook(t);
                     std::optional<FitResult> fit;
@@ -349,6 +376,8 @@ Command add_render_command(CLI::App& root) {
                     for (const TableData& t : data.tables) {
                         names.push_back(data.id + t.suffix + ".csv");
                         o.files.push_back({names.back(), csv_of(t)});
+                        // table_suffixes should have named it: check it now if it did not.
+                        check_out(dir + "/" + names.back());
                     }
                     names.push_back(data.id + ".json");
                     const std::string w = check_figure(data, fit ? &*fit : nullptr);
@@ -368,6 +397,7 @@ Command add_render_command(CLI::App& root) {
                     pending.emplace_back(std::move(job), std::move(line));
                 }
                 while (!pending.empty()) finish_oldest();
+                stop_if_failed();
                 std::fflush(stdout);
                 if (nfailed > 0)
                     throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(nfigures) +

@@ -5,11 +5,57 @@
 #include "output.hpp"
 #include "test_hook.hpp"
 
+#include "fv/atomic_file.hpp"
 #include "fv/sweep.hpp"
+
+#include <climits>
+#include <cstdint>
+#include <cstdio>
 
 #include <memory>
 
 namespace fv::cli {
+namespace {
+
+// "zeta 100000 x theta 181 x rdisp 2 x i 1 = 36200000 rows" (the rigid model: zeta x theta).
+std::string grid_text(Model model, std::size_t nz, std::size_t nt, std::size_t nr, std::size_t ni) {
+    std::string s = "zeta " + std::to_string(nz) + " x theta " + std::to_string(nt);
+    if (model == Model::dahl) s += " x rdisp " + std::to_string(nr) + " x i " + std::to_string(ni);
+    const std::size_t n = sweep_size(model, nz, nt, nr, ni);
+    return s + " = " + (n == SIZE_MAX ? std::string("more than 1.8e19") : std::to_string(n)) + " rows";
+}
+
+// Where a sweep's rows go: standard output ("-") or a file by the output-path policy. Text is written in
+// pieces of whole rows of at most PIPE_BUF bytes, each one write(2) (atomic on a pipe), so a reader of an
+// interrupted run sees whole rows only.
+class RowSink {
+  public:
+    explicit RowSink(const std::string& out) {
+        std::fflush(stdout);
+        if (const std::string why = stream_.open(out == "-" ? "/dev/stdout" : out); !why.empty())
+            throw RuntimeFailure(why);
+    }
+    void write(const std::string& text) {
+        for (std::size_t from = 0; from < text.size();) {
+            std::size_t to = text.size();
+            if (to - from > PIPE_BUF) {
+                const std::size_t nl = text.rfind('\n', from + PIPE_BUF - 1);
+                to = nl != std::string::npos && nl >= from ? nl + 1 : from + PIPE_BUF;
+            }
+            if (const std::string why = stream_.write(std::string_view(text).substr(from, to - from)); !why.empty())
+                throw RuntimeFailure(why);
+            from = to;
+        }
+    }
+    void commit() {
+        if (const std::string why = stream_.commit(); !why.empty()) throw RuntimeFailure(why);
+    }
+
+  private:
+    OutputStream stream_;
+};
+
+} // namespace
 
 Command add_sweep_command(CLI::App& root) {
     struct Args {
@@ -58,15 +104,33 @@ Command add_sweep_command(CLI::App& root) {
                 check_out(a->out);
                 std::vector<double> thetas;
                 for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
-                const SteadyOptions o = solver_options(a->solver);
-                auto rows =
-                    sweep(model, linspace(z.from, z.to, z.count), thetas, rdisps, a->i, o, a->threads);
-                apply_test_hook(rows);
-                deliver(ratio_table(rows, parse_format(a->format), v), a->out);
+                const std::vector<double> zetas = linspace(z.from, z.to, z.count);
+                const std::size_t total = sweep_size(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size());
+                if (total > static_cast<std::size_t>(kMaxSweepRows))
+                    throw UsageError(grid_text(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size()) +
+                                     "; allowed: at most " + std::to_string(kMaxSweepRows) +
+                                     " rows in one sweep (split the grid into several runs)");
+                // Rows stream out block by block in grid order as they are computed: memory does not grow
+                // with the grid, and an interrupted run to standard output leaves whole rows (a file target
+                // is replaced only when the last row is written).
+                RowSink sink(a->out);
+                RatioTableStream table(parse_format(a->format), v, total);
+                FailureLog failures;
+                sink.write(table.head());
+                sweep_blocks(model, zetas, thetas, rdisps, a->i, solver_options(a->solver), a->threads, 256,
+                             [&](const std::vector<SweepPoint>& block) {
+                                 std::vector<SweepPoint> rows = block;
+                                 apply_test_hook(rows);
+                                 failures.add(rows);
+                                 sink.write(table.rows(rows));
+                                 return true;
+                             });
+                sink.write(table.tail());
+                sink.commit();
                 // Every row is written, failed ones with their reason in the status column; then exit 3.
-                if (const Failures f = failures_of(rows); f.count > 0) {
-                    print_failures(rows);
-                    throw NumericalFailure(std::to_string(f.count) + " of " + std::to_string(rows.size()) +
+                if (const Failures f = failures.failures(); f.count > 0) {
+                    failures.print();
+                    throw NumericalFailure(std::to_string(f.count) + " of " + std::to_string(total) +
                                            " rows failed (" + f.by_reason +
                                            "); all rows are in the output, each with its status");
                 }

@@ -112,30 +112,52 @@ Format parse_format(const std::string& s) {
     return Format::text;
 }
 
-std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& vib,
-                        bool statuses_known) {
-    if (f == Format::json) {
-        nlohmann::json arr = nlohmann::json::array();
-        for (const auto& r : rows) {
-            nlohmann::json j = json_of(r, statuses_known);
-            if (has_vb(vib)) j["vb_m_s"] = jnum(vb_of(r, vib));
-            if (vib.amplitude_um) j["zss_um"] = jnum(zss_of(r, vib));
-            arr.push_back(j);
-        }
-        return (rows.size() == 1 ? arr[0] : arr).dump(2) + "\n";
-    }
-    std::string s = "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status";
-    s += std::string(has_vb(vib) ? ",vb_m_s" : "") + (vib.amplitude_um ? ",zss_um" : "") + "\n";
+std::string RatioTableStream::head() const {
+    if (f_ == Format::json) return total_ == 1 ? "" : "[\n";
+    return "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status" +
+           std::string(has_vb(v_) ? ",vb_m_s" : "") + (v_.amplitude_um ? ",zss_um" : "") + "\n";
+}
+
+std::string RatioTableStream::rows(const std::vector<SweepPoint>& rows) {
+    std::string s;
     for (const auto& r : rows) {
+        if (f_ == Format::json) {
+            nlohmann::json j = json_of(r, statuses_known_);
+            if (has_vb(v_)) j["vb_m_s"] = jnum(vb_of(r, v_));
+            if (v_.amplitude_um) j["zss_um"] = jnum(zss_of(r, v_));
+            if (total_ == 1) {
+                s += j.dump(2);
+                continue;
+            }
+            // As nlohmann's dump(2) of the whole array: each item indented by two more spaces.
+            std::string item = j.dump(2);
+            for (std::size_t k = 0; (k = item.find('\n', k)) != std::string::npos; k += 3) item.insert(k + 1, "  ");
+            s += (done_ == 0 ? "  " : ",\n  ") + item;
+            ++done_;
+            continue;
+        }
         s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
              num(r.params.rdisp) + "," + num(r.params.zeta) + "," + ratio_num(r.result.rx) + "," +
              ratio_num(r.result.ry) + "," + std::to_string(r.result.periods) + "," +
-             num(r.result.error_estimate) + "," + (statuses_known ? to_string(status_of(r)) : "");
-        if (has_vb(vib)) s += "," + num(vb_of(r, vib));
-        if (vib.amplitude_um) s += "," + num(zss_of(r, vib));
+             num(r.result.error_estimate) + "," + (statuses_known_ ? to_string(status_of(r)) : "");
+        if (has_vb(v_)) s += "," + num(vb_of(r, v_));
+        if (v_.amplitude_um) s += "," + num(zss_of(r, v_));
         s += "\n";
     }
     return s;
+}
+
+std::string RatioTableStream::tail() const {
+    if (f_ != Format::json) return "";
+    return total_ == 1 ? "\n" : "\n]\n";
+}
+
+std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& vib,
+                        bool statuses_known) {
+    RatioTableStream t(f, vib, rows.size(), statuses_known);
+    std::string s = t.head();
+    s += t.rows(rows);
+    return s + t.tail();
 }
 
 std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
@@ -286,32 +308,53 @@ std::string describe_failure(const SweepPoint& r) {
     return s + " (" + reason_of(r) + ")";
 }
 
-Failures failures_of(const std::vector<SweepPoint>& rows) {
+namespace {
+constexpr SteadyStatus kFailureKinds[] = {SteadyStatus::not_converged, SteadyStatus::integration_failed,
+                                          SteadyStatus::non_finite};
+} // namespace
+
+void FailureLog::add(const std::vector<SweepPoint>& rows) {
+    for (const auto& r : rows) {
+        const SteadyStatus st = status_of(r);
+        if (ok(st)) continue;
+        for (int k = 0; k < 3; ++k) counts_[k] += kFailureKinds[k] == st;
+        ++total_;
+        if (first_.size() < 10) first_.push_back(r);
+    }
+}
+
+Failures FailureLog::failures() const {
     Failures f;
-    for (const SteadyStatus st :
-         {SteadyStatus::not_converged, SteadyStatus::integration_failed, SteadyStatus::non_finite}) {
-        int n = 0;
-        for (const auto& r : rows) n += status_of(r) == st;
-        if (n == 0) continue;
-        f.count += n;
-        f.by_reason +=
-            (f.by_reason.empty() ? "" : ", ") + std::string(to_string(st)) + " " + std::to_string(n);
+    for (int k = 0; k < 3; ++k) {
+        if (counts_[k] == 0) continue;
+        f.count += counts_[k];
+        f.by_reason += (f.by_reason.empty() ? "" : ", ") + std::string(to_string(kFailureKinds[k])) + " " +
+                       std::to_string(counts_[k]);
     }
     return f;
 }
 
-void print_failures(const std::vector<SweepPoint>& rows, const std::string& prefix, int max_lines) {
-    int shown = 0, more = 0;
-    for (const auto& r : rows) {
-        if (ok(status_of(r))) continue;
+void FailureLog::print(const std::string& prefix, int max_lines) const {
+    int shown = 0;
+    for (const auto& r : first_)
         if (shown < max_lines) {
             std::fprintf(stderr, "frictionviz: %sfailed: %s\n", prefix.c_str(), describe_failure(r).c_str());
             ++shown;
-        } else {
-            ++more;
         }
-    }
-    if (more > 0) std::fprintf(stderr, "frictionviz: %s... and %d more failed\n", prefix.c_str(), more);
+    if (total_ > shown)
+        std::fprintf(stderr, "frictionviz: %s... and %lld more failed\n", prefix.c_str(), total_ - shown);
+}
+
+Failures failures_of(const std::vector<SweepPoint>& rows) {
+    FailureLog log;
+    log.add(rows);
+    return log.failures();
+}
+
+void print_failures(const std::vector<SweepPoint>& rows, const std::string& prefix, int max_lines) {
+    FailureLog log;
+    log.add(rows);
+    log.print(prefix, max_lines);
 }
 
 } // namespace fv::cli

@@ -34,6 +34,23 @@ SteadyStatus status_of(const SweepPoint& row);
 // statuses_known = false (rows whose producer did not keep the solver's status): the status is empty/null.
 std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vibration& v = {},
                         bool statuses_known = true);
+// ratio_table in pieces, for rows that arrive block by block (sweep streams them): head(), then rows() for
+// each block in order, then tail(); the pieces joined are ratio_table of all the rows (`total` of them).
+class RatioTableStream {
+  public:
+    RatioTableStream(Format f, const Vibration& v, std::size_t total, bool statuses_known = true)
+        : f_(f), v_(v), total_(total), statuses_known_(statuses_known) {}
+    std::string head() const;
+    std::string rows(const std::vector<SweepPoint>& rows);
+    std::string tail() const;
+
+  private:
+    Format f_;
+    Vibration v_;
+    std::size_t total_, done_ = 0;
+    bool statuses_known_;
+};
+
 // Human-readable report of one point (with amplitude, frequency, v_v, v_b, z_ss as far as `v` gives them),
 // ending with "status        ok" or the reason and what it means.
 std::string ratio_text(const SweepPoint& row, const Vibration& v = {});
@@ -67,8 +84,21 @@ std::string describe_failure(const SweepPoint& row);
 
 // The failed rows (status_of not ok) of a table, counted per reason.
 struct Failures {
-    int count = 0;
+    long long count = 0;
     std::string by_reason; // "not_converged 3, non_finite 1"
+};
+
+// Failed rows seen block by block (a streamed sweep): counts per reason and the first few rows, for the
+// same report failures_of and print_failures give for a whole table.
+class FailureLog {
+  public:
+    void add(const std::vector<SweepPoint>& rows);
+    Failures failures() const;
+    void print(const std::string& prefix = "", int max_lines = 10) const;
+
+  private:
+    std::vector<SweepPoint> first_; // at most 10
+    long long counts_[3] = {0, 0, 0}, total_ = 0;
 };
 Failures failures_of(const std::vector<SweepPoint>& rows);
 

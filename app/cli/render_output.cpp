@@ -1,5 +1,8 @@
 #include "render_output.hpp"
 
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
+
 #include "errors.hpp"
 #include "validators.hpp"
 
@@ -53,26 +56,42 @@ std::string scale_range_text() {
     return "[" + pretty(kMinScale) + ", " + pretty(kMaxScale) + "]";
 }
 
+namespace {
+
+// "WxH" (or "WXH") read by the shared reader: each side a whole integer in its range, so that an overflow
+// (4294967616x240, which sscanf("%d") wrapped to 320) is refused, not wrapped.
+std::string read_size(const std::string& s, PixelSize& out) {
+    std::ostringstream allowed;
+    allowed << "allowed: WxH with W in [" << kMinSizeW << ", " << kMaxSizeW << "] and H in [" << kMinSizeH
+            << ", " << kMaxSizeH << "]";
+    const auto x = s.find_first_of("xX");
+    if (x == std::string::npos || s.find_first_of("xX", x + 1) != std::string::npos)
+        return quoted_text(s) + " is not a size; " + allowed.str();
+    long long w = 0, h = 0;
+    const std::string why_w = read_integer("", s.substr(0, x), kMinSizeW, kMaxSizeW, w);
+    const std::string why_h = read_integer("", s.substr(x + 1), kMinSizeH, kMaxSizeH, h);
+    for (const std::string* why : {&why_w, &why_h})
+        if (why->find("not an integer") != std::string::npos)
+            return quoted_text(s) + " is not a size; " + allowed.str();
+    if (!why_w.empty() || !why_h.empty()) return quoted_text(s) + " is out of range; " + allowed.str();
+    out = {static_cast<int>(w), static_cast<int>(h)};
+    return {};
+}
+
+} // namespace
+
 CLI::Validator size_spec() {
     return CLI::Validator(
         [](std::string& s) -> std::string {
-            int w = 0, h = 0;
-            char x = 0, extra = 0;
-            std::ostringstream allowed;
-            allowed << "allowed: WxH with W in [" << kMinSizeW << ", " << kMaxSizeW << "] and H in ["
-                    << kMinSizeH << ", " << kMaxSizeH << "]";
-            if (std::sscanf(s.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-                return "'" + s + "' is not a size; " + allowed.str();
-            if (w < kMinSizeW || w > kMaxSizeW || h < kMinSizeH || h > kMaxSizeH)
-                return "'" + s + "' is out of range; " + allowed.str();
-            return {};
+            PixelSize unused;
+            return read_size(s, unused);
         },
         "WxH");
 }
 
 PixelSize parse_size(const std::string& s) {
     PixelSize sz;
-    std::sscanf(s.c_str(), "%d%*c%d", &sz.w, &sz.h);
+    read_size(s, sz);
     return sz;
 }
 

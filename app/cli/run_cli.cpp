@@ -1,6 +1,8 @@
 // frictionviz's command line (see run_cli.hpp); main.cpp only calls run_cli().
 #include "run_cli.hpp"
 
+#include "fv/printable_text.hpp"
+
 #include "commands.hpp"
 #include "errors.hpp"
 
@@ -27,6 +29,13 @@ constexpr const char* kExitStatusHelp =
     "that is not finite). With 3 the output is still written, every result with its status (`ok` or the\n"
     "reason: not_converged, integration_failed, non_finite), and stderr names what failed.";
 
+// One line on stderr. Messages quote what the user gave (an argument, a link, a file's text): whatever
+// escaped a message's own quoting, control bytes and NUL are shown as \xNN here and the line is bounded, so
+// nothing a user or a file gives can drive the terminal or cut the line short.
+void say(const std::string& what) {
+    std::fprintf(stderr, "frictionviz: %s\n", printable_text(what, 4000).c_str());
+}
+
 } // namespace
 
 int run_cli(int argc, char** argv, const RunOptions& options) {
@@ -48,8 +57,7 @@ int run_cli(int argc, char** argv, const RunOptions& options) {
             names += (names.empty() ? "" : ", ") + c.app->get_name();
         }
         if (!known) {
-            std::fprintf(stderr, "frictionviz: unknown command '%s'; allowed: %s (see --help)\n", argv[1],
-                         names.c_str());
+            say("unknown command " + quoted_text(argv[1]) + "; allowed: " + names + " (see --help)");
             return kExitUsage;
         }
     }
@@ -66,7 +74,7 @@ int run_cli(int argc, char** argv, const RunOptions& options) {
         std::string what = e.what();
         for (char& c : what)
             if (c == '\n') c = ' ';
-        std::fprintf(stderr, "frictionviz: %s (see --help)\n", what.c_str());
+        say(what + " (see --help)");
         return kExitUsage;
     }
     if (options.parse_only) return 0;
@@ -79,14 +87,14 @@ int run_cli(int argc, char** argv, const RunOptions& options) {
             for (const auto& c : commands)
                 if (c.app->get_name() == "gui") c.run();
     } catch (const UsageError& e) {
-        std::fprintf(stderr, "frictionviz: %s\n", e.what());
+        say(e.what());
         return kExitUsage;
     } catch (const NumericalFailure& e) {
         // The output is written; this line says what in it is not to be trusted.
-        std::fprintf(stderr, "frictionviz: numerical failure: %s\n", e.what());
+        say(std::string("numerical failure: ") + e.what());
         return kExitNumerical;
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "frictionviz: error: %s\n", e.what());
+        say(std::string("error: ") + e.what());
         return kExitFailure;
     }
     return 0;

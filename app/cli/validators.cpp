@@ -1,49 +1,25 @@
 #include "validators.hpp"
 
-#include <cerrno>
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
+
+#include <limits>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
 
 namespace fv::cli {
 
-namespace {
-
-// Whether `s` is spelled as a decimal number: optional sign, digits with at most one point, optional
-// exponent. strtod alone would also take hex floats (0x10, 0x1p3), "inf", "nan" and leading blanks.
-bool decimal_syntax(const std::string& s) {
-    std::size_t k = 0;
-    const auto digits = [&] {
-        const std::size_t from = k;
-        while (k < s.size() && std::isdigit(static_cast<unsigned char>(s[k]))) ++k;
-        return k - from;
-    };
-    if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
-    std::size_t mantissa = digits();
-    if (k < s.size() && s[k] == '.') {
-        ++k;
-        mantissa += digits();
-    }
-    if (mantissa == 0) return false;
-    if (k < s.size() && (s[k] == 'e' || s[k] == 'E')) {
-        ++k;
-        if (k < s.size() && (s[k] == '+' || s[k] == '-')) ++k;
-        if (digits() == 0) return false;
-    }
-    return k == s.size();
-}
-
-} // namespace
-
 Parsed parse_decimal(const std::string& s, double& out) {
-    if (!decimal_syntax(s)) return Parsed::not_decimal;
-    errno = 0;
-    const double v = std::strtod(s.c_str(), nullptr);
-    // ERANGE: overflow to +-HUGE_VAL, or underflow. A subnormal result (5e-324) is still the number asked
-    // for; one that rounds to zero (1e-400) is not.
-    if (errno == ERANGE && (std::isinf(v) || v == 0)) return Parsed::unrepresentable;
-    out = v + 0.0; // -0 is read as 0: it is the same angle, ratio or exponent, and should print as one
-    return Parsed::ok;
+    switch (read_decimal(s, out)) {
+    case NumberVerdict::ok:
+        return Parsed::ok;
+    case NumberVerdict::beyond_double:
+        return Parsed::unrepresentable;
+    case NumberVerdict::not_decimal:
+        break;
+    }
+    return Parsed::not_decimal;
 }
 
 bool parse_finite(const std::string& s, double& out) {
@@ -52,18 +28,10 @@ bool parse_finite(const std::string& s, double& out) {
 
 namespace {
 
+// The shared reader's verdict and message (fv/read_number.hpp), as for links, sessions, scripts and data.
 std::string number_error(const std::string& s, Range r) {
     double v = 0;
-    switch (parse_decimal(s, v)) {
-    case Parsed::not_decimal:
-        return "'" + s + "' is not a decimal number; allowed: a number in " + describe(r);
-    case Parsed::unrepresentable:
-        return "'" + s + "' is out of range (beyond double precision); allowed: a number in " + describe(r);
-    case Parsed::ok:
-        break;
-    }
-    if (!inside(v, r)) return "'" + s + "' is out of range; allowed: a number in " + describe(r);
-    return {};
+    return read_number("", s, r, v);
 }
 
 // "a,b,c" split at every comma, empty items kept (so that "0,,30" can be refused rather than read as 0,30).
@@ -90,7 +58,7 @@ CLI::Validator number_list_in(Range r) {
             const std::vector<std::string> items = split_list(s);
             for (std::size_t k = 0; k < items.size(); ++k) {
                 if (items[k].empty())
-                    return "'" + s + "' has an empty item (number " + std::to_string(k + 1) +
+                    return quoted_text(s) + " has an empty item (number " + std::to_string(k + 1) +
                            "); allowed: comma-separated numbers in " + describe(r);
                 if (auto e = number_error(items[k], r); !e.empty()) return e;
             }
@@ -128,15 +96,8 @@ CLI::Validator file_name() {
 CLI::Validator integer_in(long lo, long hi) {
     return CLI::Validator(
         [lo, hi](std::string& s) -> std::string {
-            errno = 0;
-            char* end = nullptr;
-            const long v = s.empty() ? 0 : std::strtol(s.c_str(), &end, 10);
-            std::ostringstream os;
-            os << "an integer in [" << lo << ", " << hi << "]";
-            if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE)
-                return "'" + s + "' is not an integer; allowed: " + os.str();
-            if (v < lo || v > hi) return "'" + s + "' is out of range; allowed: " + os.str();
-            return {};
+            long long v = 0;
+            return read_integer("", s, lo, hi, v);
         },
         "INT");
 }
@@ -152,7 +113,9 @@ RangeSpec parse_range_spec(const std::string& s) {
     const auto b = s.find(':', a + 1);
     parse_finite(s.substr(0, a), rs.from);
     parse_finite(s.substr(a + 1, b - a - 1), rs.to);
-    rs.count = std::atoi(s.substr(b + 1).c_str());
+    long long count = 1;
+    read_integer("", s.substr(b + 1), 1, std::numeric_limits<int>::max(), count);
+    rs.count = static_cast<int>(count);
     return rs;
 }
 
@@ -165,26 +128,25 @@ CLI::Validator range_spec(Range r, int max_count) {
             const auto a = s.find(':');
             if (a == std::string::npos) {
                 const auto e = number_error(s, r);
-                return e.empty() ? e : "'" + s + "' is not a valid range; " + allowed.str();
+                return e.empty() ? e : quoted_text(s) + " is not a valid range; " + allowed.str();
             }
             const auto b = s.find(':', a + 1);
             if (b == std::string::npos || s.find(':', b + 1) != std::string::npos)
-                return "'" + s + "' is not FROM:TO:COUNT; " + allowed.str();
+                return quoted_text(s) + " is not FROM:TO:COUNT; " + allowed.str();
             double from = 0, to = 0;
             if (!parse_finite(s.substr(0, a), from) || !parse_finite(s.substr(a + 1, b - a - 1), to))
-                return "'" + s + "' has a FROM or TO that is not a finite number; " + allowed.str();
-            const std::string c = s.substr(b + 1);
-            char* end = nullptr;
-            errno = 0;
-            const long count = c.empty() ? -1 : std::strtol(c.c_str(), &end, 10);
-            if (c.empty() || end != c.c_str() + c.size() || errno == ERANGE)
-                return "'" + s + "' has a COUNT that is not an integer; " + allowed.str();
-            if (count < 1 || count > max_count) return "'" + s + "' has COUNT out of range; " + allowed.str();
+                return quoted_text(s) + " has a FROM or TO that is not a finite number; " + allowed.str();
+            long long count = 0;
+            if (const std::string why = read_integer("", s.substr(b + 1), 1, max_count, count); !why.empty())
+                return quoted_text(s) +
+                       (why.find("not an integer") != std::string::npos ? " has a COUNT that is not an integer; "
+                                                                         : " has COUNT out of range; ") +
+                       allowed.str();
             if (!inside(from, r) || !inside(to, r))
-                return "'" + s + "' leaves the allowed range; " + allowed.str();
-            if (from > to) return "'" + s + "' is reversed (FROM > TO); " + allowed.str();
+                return quoted_text(s) + " leaves the allowed range; " + allowed.str();
+            if (from > to) return quoted_text(s) + " is reversed (FROM > TO); " + allowed.str();
             if (from == to && count > 1)
-                return "'" + s + "' is empty (FROM == TO with COUNT > 1); " + allowed.str();
+                return quoted_text(s) + " is empty (FROM == TO with COUNT > 1); " + allowed.str();
             return {};
         },
         "FROM:TO:COUNT");

@@ -25,9 +25,13 @@ RenderSession::RenderSession(gfx::GpuContext& context, float pixel_ratio)
     : ctx_(&context), ratio_(pixel_ratio), fonts_(font_options(ratio_)), imgui_(ctx_->gl()),
       canvas_((imgui_.upload_font_atlas(fonts_.atlas()), ctx_->gl()), fonts_, imgui_) {}
 
+std::vector<unsigned char> RenderSession::encode_png() const {
+    return gfx::encode_png(ctx_->read_pixels());
+}
+
 std::string RenderSession::save_png(const std::string& path) const {
-    const auto png = gfx::encode_png(ctx_->read_pixels());
-    return write_file_atomic(path, std::string(reinterpret_cast<const char*>(png.data()), png.size()));
+    const auto png = encode_png();
+    return write_file_atomic(path, std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
 }
 
 gfx::Vec2 RenderSession::logical_page() const {

@@ -39,6 +39,8 @@ class RenderSession {
     // The screenshot: the frame drawn so far (before present) as a PNG at path, written atomically
     // (fv/atomic_file.hpp). Returns "" or a one-line error.
     std::string save_png(const std::string& path) const;
+    // The framebuffer as PNG bytes.
+    std::vector<unsigned char> encode_png() const;
 
   private:
     std::unique_ptr<gfx::GpuContext> owned_;

@@ -36,8 +36,12 @@ AnimationExportJob::~AnimationExportJob() {
 }
 
 std::string AnimationExportJob::start(const AnimationRequest& r) {
-    if (!exporter_) return "animation export is not available in this build";
+    if (!exporter_) {
+        failed_ = true;
+        return "animation export is not available in this build";
+    }
     if (running_) {
+        failed_ = true;
         return "an animation export is running (" + std::to_string(done_) + "/" + std::to_string(total_) +
                " frames); wait for it";
     }
@@ -85,7 +89,10 @@ std::optional<std::string> AnimationExportJob::poll() {
         finished_ = false;
         shown_ = -1;
         const int frames = total_;
-        if (!result_.empty()) return "animation not written: " + result_;
+        if (!result_.empty()) {
+            failed_ = true;
+            return "animation not written: " + result_;
+        }
         return "wrote " + path_ + " (" + std::to_string(frames) + " frames, a seamless loop)";
     }
     if (!running_ || done_ == shown_) return std::nullopt;

@@ -49,13 +49,16 @@ class AnimationExportJob {
     std::string start(const AnimationRequest& r);
     // The status line when it changed since the last call (progress, then the result).
     std::optional<std::string> poll();
+    // Whether an export failed or was refused since the last call (its reason is in the status line poll() or
+    // start() gave): a scripted run exits 1 for it.
+    bool take_failure() { return failed_.exchange(false); }
     // Blocks until the export is done (scripted runs want the file before the next frame).
     void wait();
 
   private:
     AnimationExporter exporter_;
     std::thread thread_;
-    std::atomic<bool> running_{false}, cancel_{false};
+    std::atomic<bool> running_{false}, cancel_{false}, failed_{false};
     std::atomic<int> done_{0}, total_{0};
     std::mutex mutex_;
     std::string path_, result_;

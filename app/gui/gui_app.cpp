@@ -79,28 +79,36 @@ class ImGuiScope {
     ImGuiContext* ctx_;
 };
 
-// The files a frame's actions ask for; the status line says what was written or why not.
-void write_requested_files(const AppState::Actions& act, const std::string& screenshot_path,
-                           const RenderSession& session, Platform& platform, AppState& app, int& shots,
-                           int& exports) {
+// The files a frame's actions ask for; the status line says what was written or why not. The S key and the
+// trail export take the next free number and never replace a file (this run's or an earlier one's); an
+// explicit path (--screenshot, a session) is replaced atomically. Returns false when a write failed.
+bool write_requested_files(const AppState::Actions& act, const std::string& screenshot_path,
+                           const RenderSession& session, Platform& platform, AppState& app) {
+    bool ok = true;
     auto report = [&](const std::string& path, const std::string& err, const char* what) {
         app.ui().status = err.empty() ? "wrote " + path + what : err;
         if (!err.empty()) std::fprintf(stderr, "frictionviz: %s\n", err.c_str());
         if (err.empty()) platform.file_written(path);
+        ok = ok && err.empty();
     };
-    if (act.screenshot || !screenshot_path.empty()) {
-        const std::string path = !screenshot_path.empty()
-                                     ? screenshot_path
-                                     : "frictionviz-screenshot-" + std::to_string(++shots) + ".png";
-        report(path, session.save_png(path), "");
+    if (!screenshot_path.empty()) report(screenshot_path, session.save_png(screenshot_path), "");
+    if (act.screenshot) {
+        const std::vector<unsigned char> png = session.encode_png();
+        std::string path;
+        const std::string err = write_numbered_file(
+            [](int n) { return "frictionviz-screenshot-" + std::to_string(n) + ".png"; },
+            std::string_view(reinterpret_cast<const char*>(png.data()), png.size()), path);
+        report(path, err, "");
     }
     if (act.export_csv) {
-        const std::string path = "frictionviz-trace-" + std::to_string(++exports) + ".csv";
-        report(path, write_file_atomic(path, trace_csv(app.sim())),
-               " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)");
+        std::string path;
+        const std::string err = write_numbered_file(
+            [](int n) { return "frictionviz-trace-" + std::to_string(n) + ".csv"; }, trace_csv(app.sim()), path);
+        report(path, err, " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)");
     }
     if (!act.save_session.empty())
         report(act.save_session, write_session(act.save_session, session_of(app.ui())), " (session)");
+    return ok;
 }
 
 // This thread's CPU time: with LP_NUM_THREADS=0 llvmpipe draws on it, and then it is the frame's cost with
@@ -141,7 +149,9 @@ class GuiLoop {
         }
         const gfx::Size fb = session_.context().framebuffer_size();
         stats_.print(fb.width, fb.height, session_.pixel_ratio(), session_.context().describe());
-        return 0;
+        // A scripted or headless run has nobody to read the status line: a failed write is its exit status
+        // (each reason is on stderr already). A person at the window has seen it in the status line.
+        return failed_writes_ > 0 && (scripted_ || !platform_->interactive()) ? 1 : 0;
     }
 
   private:
@@ -205,6 +215,10 @@ class GuiLoop {
             if (scripted_) animation_.wait(); // the file is there before the next frame
         }
         if (auto status = animation_.poll()) app_.ui().status = *status;
+        if (animation_.take_failure()) {
+            std::fprintf(stderr, "frictionviz: %s\n", app_.ui().status.c_str());
+            ++failed_writes_;
+        }
         return true;
     }
 
@@ -243,8 +257,8 @@ class GuiLoop {
     // 5. Files, then show the frame, then its times.
     void finish(int frame) {
         const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
-        write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_, app_,
-                              shots_, exports_);
+        if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_, app_))
+            ++failed_writes_;
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)
@@ -276,7 +290,7 @@ class GuiLoop {
     FrameStats stats_;
     FrameTimes times_;
     double cpu_start_ = 0;
-    int shots_ = 0, exports_ = 0;
+    int failed_writes_ = 0; // files asked for and not written (the exit status of a scripted run)
     Clock::time_point last_ = Clock::now();
 };
 

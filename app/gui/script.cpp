@@ -1,36 +1,162 @@
 #include "script.hpp"
 
+#include "app_state.hpp"
+#include "controls.hpp"
+
 #include "fv/atomic_file.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/input_file.hpp"
-#include "fv/units.hpp"
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 namespace fv::app {
+
+enum class ScriptArg { none, number, path, word };
+
+// What one entry does to the frame's edits.
+struct ScriptContext {
+    const UiState& ui;
+    UiEdits& edits;
+    Params& params; // the frame's parameter edits so far (set params_changed when touched)
+    bool& params_changed;
+};
+
+struct ScriptAction {
+    const char* name;
+    ScriptArg arg;
+    ParamRange range; // for ScriptArg::number
+    const char* help;
+    void (*apply)(const ScriptEntry&, ScriptContext&);
+};
+
 namespace {
 
-bool numeric(const std::string& a) {
-    return a == "zeta" || a == "theta" || a == "rdisp" || a == "i" || a == "speed" || a == "trail" ||
-           a == "amplitude" || a == "frequency" || a == "vb" || a == "zss" || a == "rewind";
+void set_param(ScriptContext& c, double Params::*field, double v) {
+    c.params.*field = v;
+    c.params_changed = true;
 }
-bool is_path(const std::string& a) {
-    return a == "load" || a == "save-session" || a == "open-session" || a == "animate";
+
+void show_panel(UiEdits& e, bool map, bool loop, bool why) {
+    e.show_map = map, e.show_loop = loop, e.show_mechanism = why;
 }
-bool needs_value(const std::string& a) {
-    return numeric(a) || is_path(a) || a == "model" || a == "preset";
+
+constexpr ParamRange kRewindRange{0, 1e6};
+
+// Every action, once: the parser, the help, the messages and the edits all read this table.
+const ScriptAction kActions[] = {
+    {"zeta", ScriptArg::number, kZetaRange, "speed ratio zeta",
+     [](const ScriptEntry& s, ScriptContext& c) { set_param(c, &Params::zeta, s.number); }},
+    {"theta", ScriptArg::number, kThetaRange, "vibration angle in degrees",
+     [](const ScriptEntry& s, ScriptContext& c) { set_param(c, &Params::theta, s.number * kPi / 180); }},
+    {"rdisp", ScriptArg::number, kRdispRange, "displacement ratio r_disp",
+     [](const ScriptEntry& s, ScriptContext& c) { set_param(c, &Params::rdisp, s.number); }},
+    {"i", ScriptArg::number, kIRange, "Dahl exponent i",
+     [](const ScriptEntry& s, ScriptContext& c) { set_param(c, &Params::i, s.number); }},
+    {"model", ScriptArg::word, {}, "dahl | rigid",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.model = *parse_model(s.text); }},
+    {"vb", ScriptArg::number, kVbRange, "v_b in m/s (with the A and f in effect, as the panel's input)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.vb_m_s = s.number; }},
+    {"zss", ScriptArg::number, kZssRange, "z_ss in um (with the A in effect)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.zss_um = s.number; }},
+    {"amplitude", ScriptArg::number, kAmplitudeRange, "vibration amplitude A in um",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.amplitude_um = s.number; }},
+    {"frequency", ScriptArg::number, kFrequencyRange, "vibration frequency f in kHz",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.frequency_khz = s.number; }},
+    {"preset", ScriptArg::word, {}, "a preset's id (the panel's preset buttons)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.preset = s.text; }},
+    {"play", ScriptArg::none, {}, "run the animation",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.playing = true; }},
+    {"pause", ScriptArg::none, {}, "pause it", [](const ScriptEntry&, ScriptContext& c) { c.edits.playing = false; }},
+    {"step", ScriptArg::none, {}, "one frame forward", [](const ScriptEntry&, ScriptContext& c) { c.edits.step = true; }},
+    {"back", ScriptArg::none, {}, "one frame back in time",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.step_back = true; }},
+    {"reset", ScriptArg::none, {}, "restart the simulation", [](const ScriptEntry&, ScriptContext& c) { c.edits.reset = true; }},
+    {"rewind", ScriptArg::number, kRewindRange, "show the state this many periods ago (pauses)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.rewind = s.number * 2 * kPi; }},
+    {"steady", ScriptArg::none, {}, "jump onto the periodic steady state",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.jump_steady = true; }},
+    {"speed", ScriptArg::number, kSpeedRange, "animation speed in periods per second",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.speed = s.number; }},
+    {"trail", ScriptArg::number, kTrailRange, "trail length in periods",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.trail_periods = s.number; }},
+    {"curves", ScriptArg::none, {}, "lower panel: the r_x(zeta) curves",
+     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, false, false); }},
+    {"map", ScriptArg::none, {}, "lower panel: the (zeta, theta) map",
+     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, true, false, false); }},
+    {"loop", ScriptArg::none, {}, "lower panel: the hysteresis loop",
+     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, true, false); }},
+    {"why", ScriptArg::none, {}, "lower panel: why friction drops (Fig. 4)",
+     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, false, true); }},
+    {"help", ScriptArg::none, {}, "show or hide the help overlay",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.show_help = !c.ui.show_help; }},
+    {"present", ScriptArg::none, {}, "presentation mode on or off",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.presentation = !c.ui.presentation; }},
+    {"pin", ScriptArg::none, {}, "pin the current r_x(zeta) curve (waits for it)",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.pin = true; }},
+    {"unpin", ScriptArg::none, {}, "remove every pinned curve",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.clear_pins = true; }},
+    {"load", ScriptArg::path, {}, "a measured-data CSV (as from the menu or a drop)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.load_data = s.text; }},
+    {"clear", ScriptArg::none, {}, "remove the data", [](const ScriptEntry&, ScriptContext& c) { c.edits.clear_data = true; }},
+    {"fit", ScriptArg::none, {}, "fit r_disp and i to the data (waits for it)",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.fit_data = true; }},
+    {"save-session", ScriptArg::path, {}, "save the state after this frame's edits (checked before the run)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.save_session = s.text; }},
+    {"open-session", ScriptArg::path, {}, "open a session (a bad file keeps the state, says why)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.open_session = s.text; }},
+    {"export", ScriptArg::none, {}, "open the Export animation dialog",
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.open_export_dialog = true; }},
+    {"animate", ScriptArg::path, {}, "write a GIF or MP4 of the current parameters (checked before the run)",
+     [](const ScriptEntry& s, ScriptContext& c) {
+         AnimationRequest r;
+         r.path = s.text;
+         r.speed = c.ui.speed;
+         c.edits.export_animation = r;
+     }},
+};
+
+std::string action_names() {
+    std::string s;
+    for (const ScriptAction& a : kActions) s += (s.empty() ? "" : " ") + std::string(a.name);
+    return s;
 }
-constexpr const char* kActions =
-    "zeta theta rdisp i model play pause step reset speed trail preset map curves "
-    "amplitude frequency vb zss load clear fit back rewind steady help loop why pin unpin present "
-    "save-session open-session animate export";
-// One list of the actions: the message's.
-bool known(const std::string& a) {
-    return !a.empty() && (" " + std::string(kActions) + " ").find(" " + a + " ") != std::string::npos;
+
+const ScriptAction* find_action(const std::string& name) {
+    for (const ScriptAction& a : kActions)
+        if (name == a.name) return &a;
+    return nullptr;
+}
+
+std::string preset_ids() {
+    std::string s;
+    for (const FigureSpec* f : presets()) s += (s.empty() ? "" : ", ") + f->id;
+    return s;
+}
+
+// The value of a word action, or why it is not one.
+std::string word_error(const ScriptAction& a, const std::string& v) {
+    if (std::string(a.name) == "model")
+        return parse_model(v) ? "" : "model = " + quoted_text(v) + "; allowed: dahl, rigid";
+    for (const FigureSpec* f : presets())
+        if (f->id == v) return "";
+    return "unknown preset " + quoted_text(v) + "; allowed: " + preset_ids();
+}
+
+// What a path action writes must be writable before the run (as --screenshot), and an animation needs a
+// format the exporter knows.
+std::string path_error(const ScriptAction& a, const std::string& path) {
+    const std::string name = a.name;
+    if (name == "animate" && !animation_format(path))
+        return "animate " + quoted_text(path, 200) + ": the file name must end in .gif or .mp4";
+    if (name == "save-session" || name == "animate")
+        if (const std::string why = check_writable(path); !why.empty())
+            return name + " " + printable_text(path, 200) + ": " + why;
+    return {};
 }
 
 } // namespace
@@ -46,41 +172,39 @@ Script load_script(const std::string& path) {
         ++no;
         if (const auto h = line.find('#'); h != std::string::npos) line.erase(h);
         std::istringstream ls(line);
-        int frame = 0;
-        std::string action, value, extra;
-        if (!(ls >> frame)) {
-            if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-            throw std::runtime_error(path + ":" + std::to_string(no) + ": expected 'FRAME ACTION [VALUE]'");
-        }
+        std::string frame_text, action, value, extra;
+        if (!(ls >> frame_text)) continue; // blank or comment
         const auto where = path + ":" + std::to_string(no) + ": ";
-        if (frame < 0) throw std::runtime_error(where + "frame must be >= 0");
-        if (!(ls >> action) || !known(action))
-            throw std::runtime_error(where + "unknown action '" + action + "'; allowed: " + kActions);
-        if (needs_value(action)) {
-            if (!(ls >> value)) throw std::runtime_error(where + "'" + action + "' needs a value");
-            if (action == "model" && value != "dahl" && value != "rigid")
-                throw std::runtime_error(where + "model must be dahl or rigid");
-            if (action == "preset" && !find_figure(value))
-                throw std::runtime_error(where + "unknown preset '" + value + "'; allowed: " + figure_ids());
-            if (numeric(action)) {
-                char* end = nullptr;
-                const double v = std::strtod(value.c_str(), &end);
-                if (*end != '\0' || !std::isfinite(v))
-                    throw std::runtime_error(where + "'" + value + "' is not a number");
-                if ((action == "amplitude" || action == "frequency" || action == "zss") && !(v > 0))
-                    throw std::runtime_error(where + "'" + action + "' must be > 0");
-                if (action == "vb" && v < 0) throw std::runtime_error(where + "'vb' must be >= 0");
-            }
+        const auto fail = [&](const std::string& why) { throw std::runtime_error(where + why); };
+        long long frame = 0;
+        if (std::string why = read_integer("frame", frame_text, 0, kMaxScriptFrame, frame); !why.empty())
+            fail(why + " (each line is 'FRAME ACTION [VALUE]')");
+        ls >> action;
+        const ScriptAction* a = find_action(action);
+        if (!a) fail("unknown action " + quoted_text(action) + "; allowed: " + action_names());
+        ScriptEntry e{a, {}, 0};
+        if (a->arg != ScriptArg::none) {
+            if (!(ls >> value)) fail("'" + action + "' needs a value");
+            e.text = value;
         }
-        if (ls >> extra) throw std::runtime_error(where + "unexpected '" + extra + "'");
-        // Files are found next to the script, wherever the script is run from.
-        if (is_path(action) && value.front() != '/')
-            value = (std::filesystem::path(path).parent_path() / value).lexically_normal().string();
-        // A session that cannot be written is refused before the run, like --screenshot.
-        if (action == "save-session")
-            if (const std::string why = check_writable(value); !why.empty())
-                throw std::runtime_error(where + "save-session " + value + ": " + why);
-        s.lines[frame].push_back(action + " " + value);
+        if (ls >> extra) fail("unexpected " + quoted_text(extra) + " after '" + action + "'");
+        switch (a->arg) {
+        case ScriptArg::none:
+            break;
+        case ScriptArg::number:
+            if (std::string why = read_number(a->name, value, a->range, e.number); !why.empty()) fail(why);
+            break;
+        case ScriptArg::word:
+            if (std::string why = word_error(*a, value); !why.empty()) fail(why);
+            break;
+        case ScriptArg::path:
+            // Files are found next to the script, wherever the script is run from.
+            if (value.front() != '/')
+                e.text = (std::filesystem::path(path).parent_path() / value).lexically_normal().string();
+            if (std::string why = path_error(*a, e.text); !why.empty()) fail(why);
+            break;
+        }
+        s.lines[static_cast<int>(frame)].push_back(std::move(e));
     }
     return s;
 }
@@ -91,93 +215,22 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
     if (it == s.lines.end()) return e;
     Params p = ui.params;
     bool params_changed = false;
-    for (const std::string& entry : it->second) {
-        std::istringstream ls(entry);
-        std::string a, v;
-        ls >> a >> v;
-        const double x = numeric(a) ? std::stod(v) : 0;
-        if (a == "zeta")
-            p.zeta = x, params_changed = true;
-        else if (a == "theta")
-            p.theta = x * kPi / 180, params_changed = true;
-        else if (a == "rdisp")
-            p.rdisp = x, params_changed = true;
-        else if (a == "i")
-            p.i = x, params_changed = true;
-        else if (a == "model")
-            e.model = v == "rigid" ? Model::rigid : Model::dahl;
-        else if (a == "play")
-            e.playing = true;
-        else if (a == "pause")
-            e.playing = false;
-        else if (a == "step")
-            e.step = true;
-        else if (a == "reset")
-            e.reset = true;
-        else if (a == "back")
-            e.step_back = true;
-        else if (a == "rewind")
-            e.rewind = x * 2 * kPi; // periods
-        else if (a == "steady")
-            e.jump_steady = true;
-        else if (a == "help")
-            e.show_help = !ui.show_help;
-        else if (a == "loop")
-            e.show_loop = true, e.show_map = false, e.show_mechanism = false;
-        else if (a == "why")
-            e.show_mechanism = true, e.show_loop = false, e.show_map = false;
-        else if (a == "pin")
-            e.pin = true;
-        else if (a == "unpin")
-            e.clear_pins = true;
-        else if (a == "present")
-            e.presentation = !ui.presentation;
-        else if (a == "map")
-            e.show_map = true, e.show_loop = false, e.show_mechanism = false;
-        else if (a == "curves")
-            e.show_map = false, e.show_loop = false, e.show_mechanism = false;
-        else if (a == "speed")
-            e.speed = x;
-        else if (a == "trail")
-            e.trail_periods = x;
-        else if (a == "preset")
-            e.preset = v;
-        else if (a == "amplitude")
-            e.amplitude_um = x;
-        else if (a == "frequency")
-            e.frequency_khz = x;
-        else if (a == "vb" || a == "zss") {
-            // With the A and f in effect before this frame's edits, like the panel's inputs. A value beyond
-            // the doubles gives NaN: the loop rejects it with a status line, like any inadmissible edit.
-            try {
-                if (a == "vb")
-                    p.zeta = units::zeta_from_vb(x, ui.amplitude_um, ui.frequency_khz);
-                else
-                    p.rdisp = units::rdisp_from_zss(ui.amplitude_um, x);
-            } catch (const units::UnitError&) {
-                (a == "vb" ? p.zeta : p.rdisp) = std::nan("");
-            }
-            params_changed = true;
-        } else if (a == "load")
-            e.load_data = v;
-        else if (a == "export") // File > Export animation…: the dialog (for screenshots of it)
-            e.open_export_dialog = true;
-        else if (a == "animate") { // a GIF or MP4 of the current parameters, the export dialog's defaults
-            AnimationRequest r;
-            r.path = v;
-            r.speed = ui.speed;
-            e.export_animation = r;
-        } else if (a == "clear")
-            e.clear_data = true;
-        else if (a == "fit")
-            e.fit_data = true;
-        else if (a == "save-session")
-            e.save_session = v;
-        else if (a == "open-session")
-            e.open_session = v;
-    }
+    ScriptContext c{ui, e, p, params_changed};
+    for (const ScriptEntry& entry : it->second) entry.action->apply(entry, c);
     if (params_changed) e.params = p;
     return e;
+}
+
+std::string script_help() {
+    std::string s;
+    for (const ScriptAction& a : kActions) {
+        std::string arg = a.arg == ScriptArg::number ? " NUMBER in " + describe(a.range)
+                          : a.arg == ScriptArg::path ? " PATH"
+                          : a.arg == ScriptArg::word ? " WORD"
+                                                     : "";
+        s += std::string(a.name) + arg + ": " + a.help + "\n";
+    }
+    return s;
 }
 
 Params bench_params(Params p, int frame) {

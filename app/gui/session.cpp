@@ -4,12 +4,15 @@
 
 #include "fv/atomic_file.hpp"
 #include "fv/input_file.hpp"
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
 #include "fv/share_link.hpp"
 #include "fv/units.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -34,6 +37,12 @@ class Positions {
     }
     std::size_t value_at(const std::string& ptr) const { return find(values_, ptr); }
     std::size_t key_at(const std::string& ptr) const { return find(keys_, ptr); }
+    // The pointer of the value that starts at `offset`, or "".
+    std::string pointer_at(std::size_t offset) const {
+        for (const auto& [ptr, at] : values_)
+            if (at == offset) return ptr;
+        return {};
+    }
     const std::string& duplicate() const { return duplicate_; } // pointer, or ""
 
   private:
@@ -52,6 +61,7 @@ class Positions {
     std::string string() { // at the opening quote; escapes kept as written
         const std::size_t from = ++k_;
         while (k_ < s_.size() && s_[k_] != '"') k_ += s_[k_] == '\\' ? 2 : 1;
+        k_ = std::min(k_, s_.size());
         return s_.substr(from, k_++ - from);
     }
     void skip_container() { // at '{' or '['
@@ -78,7 +88,9 @@ class Positions {
             ++k_;
             for (int index = 0;; ++index) {
                 blank();
-                if (s_[k_] == '}' || s_[k_] == ']') break;
+                // Text the JSON parser refused is scanned too (to place a number it could not hold): stop
+                // at its end, wherever that falls.
+                if (k_ >= s_.size() || s_[k_] == '}' || s_[k_] == ']') break;
                 std::string child = ptr + "/" + std::to_string(index);
                 if (open == '{') {
                     const std::size_t at = k_;
@@ -91,7 +103,7 @@ class Positions {
                 }
                 value(child, depth + 1);
                 blank();
-                if (s_[k_] == ',') ++k_;
+                if (k_ < s_.size() && s_[k_] == ',') ++k_;
             }
             ++k_;
         } else {
@@ -120,7 +132,41 @@ std::string where(const std::string& file, const std::string& text, std::size_t 
         1 + static_cast<std::size_t>(std::count(text.begin(), text.begin() + offset, '\n'));
     const std::size_t nl = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
     const std::size_t col = nl == std::string::npos ? offset + 1 : offset - nl;
-    return file + ":" + std::to_string(line) + ":" + std::to_string(col);
+    return printable_text(file, 4096) + ":" + std::to_string(line) + ":" + std::to_string(col);
+}
+
+// The raw text of the scalar value at `offset` (a number as written: "1e-400", not the 0 nlohmann made of it).
+std::string_view token_at(const std::string& text, std::size_t offset) {
+    std::size_t end = offset;
+    while (end < text.size() && std::string_view(",]} \t\r\n").find(text[end]) == std::string_view::npos) ++end;
+    return std::string_view(text).substr(offset, end - offset);
+}
+
+// A JSON value shown in a message: its text, printable and short whatever it holds.
+std::string shown(const Json& v) {
+    return printable_text(v.dump(), 40);
+}
+
+// How deep objects and arrays may nest (a session needs 4: {"pins": [{"zeta": [..]}]}). Checked before the
+// JSON parser sees the text, so that no input can make anything recurse deeply on it.
+constexpr int kMaxDepth = 16;
+
+// The byte offset of the first bracket nested deeper than kMaxDepth, or npos. Strings are skipped (a '['
+// inside one is text); the text need not be valid JSON (the parser judges that afterwards).
+std::size_t too_deep(const std::string& text) {
+    int depth = 0;
+    for (std::size_t k = 0; k < text.size(); ++k) {
+        const char c = text[k];
+        if (c == '"') {
+            for (++k; k < text.size() && text[k] != '"'; ++k)
+                if (text[k] == '\\') ++k;
+        } else if (c == '{' || c == '[') {
+            if (++depth > kMaxDepth) return k;
+        } else if (c == '}' || c == ']') {
+            --depth;
+        }
+    }
+    return std::string::npos;
 }
 
 std::string type_name(const Json& v) {
@@ -148,14 +194,29 @@ class Reader {
         for (const auto& [k, v] : obj.items())
             if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
                 if (first.empty()) first = ptr + "/" + k;
-                unknown += (unknown.empty() ? "\"" : ", \"") + k + "\"";
+                if (unknown.size() < 200) unknown += (unknown.empty() ? "" : ", ") + shown(Json(k));
             }
         for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
         if (!first.empty())
             fail_at(first,
                     "unknown key" + std::string(unknown.find(',') != std::string::npos ? "s " : " ") +
-                        unknown + (ptr.empty() ? "" : " in \"" + ptr.substr(1) + "\"") + "; allowed: " + list,
+                        unknown + (ptr.empty() ? "" : " in \"" + printable_text(ptr.substr(1)) + "\"") +
+                        "; allowed: " + list,
                     true);
+    }
+
+    // The number at `ptr` (given as one: `v`), read from its text by the shared reader (read_number.hpp), so
+    // that 1e-400 is refused as on the command line rather than taken as the 0 the JSON parser made of it.
+    double number(const Json& v, const std::string& ptr, const std::string& name, ParamRange r) const {
+        if (!v.is_number()) fail_at(ptr, name + ": expected a number, got " + type_name(v));
+        double x = 0;
+        if (std::string why = read_number(name, token_at(text_, pos_.value_at(ptr)), r, x); !why.empty())
+            fail_at(ptr, why);
+        return x;
+    }
+
+    void get(const Json& obj, const std::string& ptr, const char* key, double& out, ParamRange r) const {
+        if (obj.contains(key)) out = number(obj.at(key), ptr + "/" + key, key, r);
     }
 
     template <class T, class Check>
@@ -163,12 +224,7 @@ class Reader {
         if (!obj.contains(key)) return;
         const std::string p = ptr + "/" + key;
         const Json& v = obj.at(key);
-        if constexpr (std::is_same_v<T, double>) {
-            if (!v.is_number()) fail_at(p, std::string(key) + ": expected a number, got " + type_name(v));
-            const double x = v.get<double>();
-            if (const std::string why = check(x); !why.empty()) fail_at(p, why);
-            out = x;
-        } else if constexpr (std::is_same_v<T, bool>) {
+        if constexpr (std::is_same_v<T, bool>) {
             if (!v.is_boolean())
                 fail_at(p, std::string(key) + ": expected true or false, got " + type_name(v));
             out = v.get<bool>();
@@ -185,19 +241,12 @@ class Reader {
     const Positions& pos_;
 };
 
-auto in_range(const char* name, ParamRange r) {
-    return [name, r](double x) -> std::string {
-        if (inside(x, r)) return "";
-        return std::string(name) + " = " + shortest_decimal(x) + "; allowed: " + name + " in " + describe(r);
-    };
-}
-
 auto one_of(const char* name, std::vector<std::string> allowed) {
     return [name, allowed](const std::string& v) -> std::string {
         if (std::find(allowed.begin(), allowed.end(), v) != allowed.end()) return "";
         std::string list;
         for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
-        return std::string(name) + " = \"" + v + "\"; allowed: " + list;
+        return std::string(name) + " = " + shown(Json(v)) + "; allowed: " + list;
     };
 }
 
@@ -207,6 +256,22 @@ std::string parse_detail(const nlohmann::json::parse_error& e) {
     const auto col = w.find("column ");
     const auto colon = w.find(": ", col == std::string::npos ? 0 : col);
     return colon == std::string::npos ? w : w.substr(colon + 2);
+}
+
+// The name and range of the number at a JSON pointer, as the reader below checks it ("/view/pan/0" is
+// "pan x"); for messages about a number the JSON parser could not hold.
+std::pair<std::string, ParamRange> number_key(const std::string& ptr) {
+    static const std::pair<const char*, ParamRange> keys[] = {
+        {"zeta", kZetaRange},       {"theta", kThetaRange},         {"rdisp", kRdispRange},
+        {"i", kIRange},             {"amplitude_um", kAmplitudeRange}, {"frequency_khz", kFrequencyRange},
+        {"speed", kSpeedRange},     {"zoom", kZoomRange},           {"trail_periods", kTrailRange},
+        {"r_x", kRxDataRange}};
+    if (ptr == "/view/pan/0" || ptr == "/view/pan/1") return {ptr.back() == '0' ? "pan x" : "pan y", kPanRange};
+    for (const auto& [key, range] : keys)
+        if (ptr == std::string("/") + key || ptr == std::string("/view/") + key ||
+            ptr.find(std::string("/") + key + "/") != std::string::npos)
+            return {key, range};
+    return {"", ParamRange{-DBL_MAX, DBL_MAX}};
 }
 
 } // namespace
@@ -307,7 +372,10 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
         for (const char* key : {"label", "zeta", "r_x"})
             if (!c.contains(key)) r.fail_at(ptr, std::string("pin without \"") + key + "\"");
         PinnedCurve pin;
-        r.get(c, ptr, "label", pin.label, [](const std::string&) { return std::string(); });
+        r.get(c, ptr, "label", pin.label, [](const std::string& label) {
+            const std::string why = text_error(label, kMaxLabelBytes);
+            return why.empty() ? why : "label: " + why;
+        });
         const Json &zeta = c["zeta"], &rx = c["r_x"];
         for (const auto& [key, a] : {std::pair<const char*, const Json*>{"zeta", &zeta}, {"r_x", &rx}})
             if (!a->is_array() || a->empty() || a->size() > 100000)
@@ -319,15 +387,11 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
                                         std::to_string(zeta.size()) + " zeta values; allowed: one per zeta");
         for (std::size_t n = 0; n < zeta.size(); ++n) {
             const std::string at = "/" + std::to_string(n);
-            if (!zeta[n].is_number())
-                r.fail_at(ptr + "/zeta" + at, "zeta: expected a number, got " + type_name(zeta[n]));
-            if (const std::string why = in_range("zeta", kZetaRange)(zeta[n].get<double>()); !why.empty())
-                r.fail_at(ptr + "/zeta" + at, why);
+            pin.zeta.push_back(r.number(zeta[n], ptr + "/zeta" + at, "zeta", kZetaRange));
             if (!rx[n].is_number() && !rx[n].is_null())
                 r.fail_at(ptr + "/r_x" + at,
                           "r_x: expected a number or null (a gap), got " + type_name(rx[n]));
-            pin.zeta.push_back(zeta[n].get<double>());
-            pin.rx.push_back(rx[n].is_null() ? std::nan("") : rx[n].get<double>());
+            pin.rx.push_back(rx[n].is_null() ? std::nan("") : r.number(rx[n], ptr + "/r_x" + at, "r_x", kRxDataRange));
         }
         out.push_back(std::move(pin));
     }
@@ -337,19 +401,28 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
 } // namespace
 
 Session parse_session(const std::string& text, const std::string& file) {
+    // A session is text: a NUL would end it early for some readers and hide what follows from others.
+    if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+        fail_with(where(file, text, nul) + ": a NUL byte; a session file is JSON text");
+    if (const std::size_t deep = too_deep(text); deep != std::string::npos)
+        fail_with(where(file, text, deep) + ": objects and arrays nested deeper than " +
+                  std::to_string(kMaxDepth) + " levels; a session needs 4");
     Json j;
     try {
         j = Json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
         fail_with(where(file, text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON: " + parse_detail(e));
     } catch (const nlohmann::json::exception& e) {
-        // A number beyond the doubles ("number overflow parsing '1e400'"): no byte position, so look for it.
-        std::string w = e.what();
+        // A number beyond the doubles ("number overflow parsing '1e400'"): no byte position, so look for it,
+        // and say it as the shared reader does ("zeta = 1e400 is out of range (beyond double precision)").
+        const std::string w = e.what();
         const auto q = w.find('\'');
         const std::string token = q == std::string::npos ? "" : w.substr(q + 1, w.find('\'', q + 1) - q - 1);
-        const std::size_t at = token.empty() ? 0 : text.find(token);
-        fail_with(where(file, text, at == std::string::npos ? 0 : at) + ": " + w.substr(w.find(']') + 2) +
-                  " (beyond double precision)");
+        const std::size_t at = token.empty() ? std::string::npos : text.find(token);
+        if (at == std::string::npos) fail_with(where(file, text, 0) + ": " + printable_text(w, 200));
+        const auto [name, range] = number_key(Positions(text).pointer_at(at));
+        double unused = 0;
+        fail_with(where(file, text, at) + ": " + read_number(name, token, range, unused));
     }
     const Positions pos(text);
     const Reader r(file, text, pos);
@@ -366,7 +439,7 @@ Session parse_session(const std::string& text, const std::string& file) {
                           std::to_string(kSessionVersion) + ", ...}");
     const Json& version = j["version"];
     if (!version.is_number_integer() || version.get<long long>() != kSessionVersion)
-        r.fail_at("/version", "version " + version.dump() + " is not one this frictionviz reads; allowed: " +
+        r.fail_at("/version", "version " + shown(version) + " is not one this frictionviz reads; allowed: " +
                                   std::to_string(kSessionVersion));
 
     Session s;
@@ -374,19 +447,23 @@ Session parse_session(const std::string& text, const std::string& file) {
     r.get(j, "", "model", model, one_of("model", {"dahl", "rigid"}));
     s.model = *parse_model(model);
     double theta_deg = s.params.theta * 180 / kPi;
-    r.get(j, "", "zeta", s.params.zeta, in_range("zeta", kZetaRange));
-    r.get(j, "", "theta", theta_deg, in_range("theta", kThetaRange));
+    r.get(j, "", "zeta", s.params.zeta, kZetaRange);
+    r.get(j, "", "theta", theta_deg, kThetaRange);
     if (j.contains("theta")) s.params.theta = theta_deg * kPi / 180;
-    r.get(j, "", "rdisp", s.params.rdisp, in_range("rdisp", kRdispRange));
-    r.get(j, "", "i", s.params.i, in_range("i", kIRange));
-    r.get(j, "", "amplitude_um", s.amplitude_um, in_range("amplitude_um", kAmplitudeRange));
-    r.get(j, "", "frequency_khz", s.frequency_khz, in_range("frequency_khz", kFrequencyRange));
-    try {
-        units::vibration_velocity(s.amplitude_um, s.frequency_khz);
-    } catch (const units::UnitError& e) {
-        r.fail_at(j.contains("frequency_khz") ? "/frequency_khz" : "/amplitude_um", e.what());
+    r.get(j, "", "rdisp", s.params.rdisp, kRdispRange);
+    r.get(j, "", "i", s.params.i, kIRange);
+    r.get(j, "", "amplitude_um", s.amplitude_um, kAmplitudeRange);
+    r.get(j, "", "frequency_khz", s.frequency_khz, kFrequencyRange);
+    // The physical view the app shows (v_v, v_b, z_ss) must be finite, as for the command line's flags.
+    if (const std::string why = units::physical_view_error(s.params, s.amplitude_um, s.frequency_khz);
+        !why.empty()) {
+        const char* at = why.rfind("rdisp", 0) == 0   ? "/rdisp"
+                         : why.rfind("zeta", 0) == 0  ? "/zeta"
+                         : j.contains("frequency_khz") ? "/frequency_khz"
+                                                      : "/amplitude_um";
+        r.fail_at(j.contains(at + 1) ? at : "", why);
     }
-    r.get(j, "", "speed", s.speed, in_range("speed", kSpeedRange));
+    r.get(j, "", "speed", s.speed, kSpeedRange);
     r.get(j, "", "playing", s.playing, nullptr);
     r.get(j, "", "panel", panel, one_of("panel", {"curves", "map", "loop", "why"}));
     s.show_map = panel == "map";
@@ -399,21 +476,17 @@ Session parse_session(const std::string& text, const std::string& file) {
             r.fail_at("/view", "view: expected an object {\"zoom\": ..}, got " + type_name(v));
         r.only(v, "/view", {"zoom", "pan", "follow", "trail_periods", "presentation"});
         r.get(v, "/view", "presentation", s.presentation, nullptr);
-        r.get(v, "/view", "zoom", s.view.zoom, in_range("zoom", kZoomRange));
+        r.get(v, "/view", "zoom", s.view.zoom, kZoomRange);
         r.get(v, "/view", "follow", s.view.follow, nullptr);
-        r.get(v, "/view", "trail_periods", s.view.trail_periods, in_range("trail_periods", kTrailRange));
+        r.get(v, "/view", "trail_periods", s.view.trail_periods, kTrailRange);
         if (v.contains("pan")) {
             const Json& p = v["pan"];
             if (!p.is_array() || p.size() != 2)
                 r.fail_at("/view/pan",
-                          "pan: expected [x, y], got " + (p.is_array() ? p.dump() : type_name(p)));
+                          "pan: expected [x, y], got " + (p.is_array() ? shown(p) : type_name(p)));
             for (int k = 0; k < 2; ++k) {
                 const std::string ptr = "/view/pan/" + std::to_string(k);
-                if (!p[k].is_number()) r.fail_at(ptr, "pan: expected a number, got " + type_name(p[k]));
-                const double x = p[k].get<double>();
-                if (const std::string why = in_range(k == 0 ? "pan x" : "pan y", kPanRange)(x); !why.empty())
-                    r.fail_at(ptr, why);
-                s.view.pan[k] = x;
+                s.view.pan[k] = r.number(p[k], ptr, k == 0 ? "pan x" : "pan y", kPanRange);
             }
         }
     }

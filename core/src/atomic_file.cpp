@@ -1,6 +1,9 @@
 #include "fv/atomic_file.hpp"
 
+#include <atomic>
 #include <cerrno>
+#include <csignal>
+#include <pthread.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -47,6 +50,59 @@ int own_descriptor(const std::string& path) {
     return -1;
 }
 
+// The temporary files open right now, for the SIGINT/SIGTERM handler: fixed slots of plain bytes, since a
+// handler may not allocate or lock. A slot is 2 once its path is complete, so the handler never reads a
+// half-copied one.
+constexpr int kTempSlots = 64;
+struct TempSlot {
+    std::atomic<int> state{0}; // 0 free, 1 being filled, 2 a path to remove on a signal
+    char path[4096];
+};
+TempSlot g_temps[kTempSlots];
+
+int register_temp(const std::string& path) {
+    if (path.size() >= sizeof TempSlot::path) return -1;
+    for (int k = 0; k < kTempSlots; ++k) {
+        int expected = 0;
+        if (!g_temps[k].state.compare_exchange_strong(expected, 1)) continue;
+        std::memcpy(g_temps[k].path, path.c_str(), path.size() + 1);
+        g_temps[k].state = 2;
+        return k;
+    }
+    return -1; // more than 64 writes at once: that one is not cleaned up on a signal
+}
+
+void unregister_temp(int slot) {
+    if (slot >= 0) g_temps[slot].state = 0;
+}
+
+extern "C" void remove_temps_and_exit(int sig) {
+    for (TempSlot& t : g_temps)
+        if (t.state.load() == 2) ::unlink(t.path);
+    ::_exit(128 + sig);
+}
+
+// mkstemp in `dir` with the prefix, registered for removal on a signal; -1 and errno on failure.
+int make_temp(const std::string& dir, const char* prefix, std::string& path, int& slot) {
+    path = dir + "/" + prefix + "XXXXXX";
+    // Signals are held while the file exists but is not yet registered, so none can slip in between.
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &old);
+    const int fd = ::mkstemp(path.data());
+    slot = fd >= 0 ? register_temp(path) : -1;
+    const int saved = errno;
+    pthread_sigmask(SIG_SETMASK, &old, nullptr);
+    errno = saved;
+    return fd;
+}
+
+void remove_temp(const std::string& path, int& slot) {
+    ::unlink(path.c_str());
+    unregister_temp(slot);
+    slot = -1;
+}
+
 // Whether files can be created in `dir`. access() says yes to root everywhere; only creating a file there
 // tells for sure (read-only mounts, /proc, /sys).
 std::string check_creatable_in(const std::string& dir) {
@@ -57,11 +113,12 @@ std::string check_creatable_in(const std::string& dir) {
     }
     if (!S_ISDIR(st.st_mode)) return quoted(dir) + " is not a directory";
     if (::access(dir.c_str(), W_OK | X_OK) != 0) return "directory " + quoted(dir) + " is not writable";
-    std::string probe = dir + "/.fv-probe-XXXXXX";
-    const int fd = ::mkstemp(probe.data());
+    std::string probe;
+    int slot = -1;
+    const int fd = make_temp(dir, ".fv-probe-", probe, slot);
     if (fd < 0) return "cannot create files in directory " + quoted(dir) + ": " + errno_text();
     ::close(fd);
-    ::unlink(probe.c_str());
+    remove_temp(probe, slot);
     return {};
 }
 
@@ -89,54 +146,6 @@ std::string write_all(int fd, std::string_view data, const std::string& what) {
         left -= static_cast<std::size_t>(w);
     }
     return {};
-}
-
-std::string write_descriptor(int fd, std::string_view data, const std::string& path) {
-    // Whatever the program already printed to stdio goes first, as it would with `> file`.
-    std::fflush(nullptr);
-    return write_all(fd, data, quoted(path));
-}
-
-std::string write_special(const std::string& path, std::string_view data) {
-    // O_NONBLOCK: opening a FIFO for writing blocks until a reader opens it; non-blocking it fails with ENXIO
-    // instead, which is reported rather than waited for. No O_CREAT, no O_TRUNC: the file exists and is not
-    // a regular file.
-    const int fd = ::open(path.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
-    if (fd < 0) {
-        if (errno == ENXIO) return "FIFO " + quoted(path) + " has no reader";
-        return "cannot open " + quoted(path) + ": " + errno_text();
-    }
-    // Once open, write with ordinary blocking semantics (a full pipe waits for its reader).
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    std::string error = write_all(fd, data, quoted(path));
-    if (::close(fd) != 0 && error.empty()) error = "cannot close " + quoted(path) + ": " + errno_text();
-    return error;
-}
-
-std::string write_regular(const std::string& path, std::string_view data) {
-    const std::string dir = directory_of(path);
-    struct stat old {};
-    const bool exists = ::stat(path.c_str(), &old) == 0;
-    // The temporary file lives in the target's directory so that rename() stays on one file system.
-    std::string tmpl = dir + "/.fv-tmp-XXXXXX";
-    const int fd = ::mkstemp(tmpl.data());
-    if (fd < 0) return "cannot create a temporary file in " + quoted(dir) + ": " + errno_text();
-    std::string error = write_all(fd, data, quoted(path));
-    if (error.empty() && ::fsync(fd) != 0) error = "cannot flush " + quoted(path) + ": " + errno_text();
-    // mkstemp creates 0600. A replaced file keeps its mode and, where allowed (root), its owner; a new one
-    // gets what open() would have given it.
-    if (error.empty()) {
-        ::fchmod(fd, exists ? (old.st_mode & 07777) : new_file_mode());
-        // Only root may give a file away; anyone else keeps the new file as their own, which is no damage.
-        if (exists && (old.st_uid != ::geteuid() || old.st_gid != ::getegid()) &&
-            ::fchown(fd, old.st_uid, old.st_gid) != 0)
-            errno = 0;
-    }
-    if (::close(fd) != 0 && error.empty()) error = "cannot close " + quoted(path) + ": " + errno_text();
-    if (error.empty() && ::rename(tmpl.c_str(), path.c_str()) != 0)
-        error = "cannot replace " + quoted(path) + ": " + errno_text();
-    if (!error.empty()) ::unlink(tmpl.c_str());
-    return error;
 }
 
 } // namespace
@@ -201,17 +210,140 @@ std::string check_output_dir(const std::string& dir) {
 }
 
 std::string write_file_atomic(const std::string& path, std::string_view data) {
-    OutputTarget t;
-    if (auto why = resolve_output(path, t); !why.empty()) return why;
-    switch (t.kind) {
+    OutputStream out;
+    if (std::string why = out.open(path); !why.empty()) return why;
+    if (std::string why = out.write(data); !why.empty()) return why;
+    return out.commit();
+}
+
+std::string write_file_new(const std::string& path, std::string_view data) {
+    OutputStream out;
+    if (std::string why = out.open(path); !why.empty()) return why;
+    if (std::string why = out.write(data); !why.empty()) return why;
+    return out.commit(false);
+}
+
+std::string write_numbered_file(const std::function<std::string(int)>& name_of, std::string_view data,
+                                std::string& written, int max_tries) {
+    for (int n = 1; n <= max_tries; ++n) {
+        const std::string name = name_of(n);
+        struct stat st {};
+        if (::lstat(name.c_str(), &st) == 0) continue; // taken (a file, a link, anything): the next number
+        const std::string why = write_file_new(name, data);
+        if (why.empty()) {
+            written = name;
+            return {};
+        }
+        if (why.find(" already exists") == std::string::npos) return why; // else taken meanwhile: the next
+
+    }
+    return "no free name from " + quoted(name_of(1)) + " to " + quoted(name_of(max_tries)) +
+           "; remove some of those files";
+}
+
+OutputStream::~OutputStream() {
+    abort();
+}
+
+std::string OutputStream::open(const std::string& path) {
+    abort();
+    if (std::string why = resolve_output(path, target_); !why.empty()) return why;
+    switch (target_.kind) {
     case OutputTarget::Kind::descriptor:
-        return write_descriptor(t.fd, data, path);
+        // Whatever the program already printed to stdio goes first, as it would with `> file`.
+        std::fflush(nullptr);
+        fd_ = target_.fd;
+        return {};
     case OutputTarget::Kind::special:
-        return write_special(t.path, data);
+        // O_NONBLOCK: opening a FIFO for writing blocks until a reader opens it; non-blocking it fails with
+        // ENXIO instead, which is reported rather than waited for. No O_CREAT, no O_TRUNC: the file exists
+        // and is not a regular file.
+        fd_ = ::open(target_.path.c_str(), O_WRONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+        if (fd_ < 0) {
+            if (errno == ENXIO) return "FIFO " + quoted(target_.path) + " has no reader";
+            return "cannot open " + quoted(target_.path) + ": " + errno_text();
+        }
+        // Once open, write with ordinary blocking semantics (a full pipe waits for its reader).
+        ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+        return {};
     case OutputTarget::Kind::regular:
         break;
     }
-    return write_regular(t.path, data);
+    struct stat old {};
+    exists_ = ::stat(target_.path.c_str(), &old) == 0;
+    mode_ = old.st_mode & 07777, uid_ = old.st_uid, gid_ = old.st_gid;
+    // The temporary file lives in the target's directory so that rename() stays on one file system.
+    const std::string dir = directory_of(target_.path);
+    fd_ = make_temp(dir, ".fv-tmp-", temp_, slot_);
+    if (fd_ < 0) {
+        temp_.clear();
+        return "cannot create a temporary file in " + quoted(dir) + ": " + errno_text();
+    }
+    return {};
+}
+
+std::string OutputStream::write(std::string_view data) {
+    if (fd_ < 0) return "cannot write " + quoted(target_.path) + ": not open";
+    return write_all(fd_, data, quoted(target_.path));
+}
+
+std::string OutputStream::commit(bool replace) {
+    if (fd_ < 0) return "cannot write " + quoted(target_.path) + ": not open";
+    const std::string& path = target_.path;
+    std::string error;
+    if (target_.kind == OutputTarget::Kind::descriptor) {
+        fd_ = -1; // the process's own descriptor stays open
+        return {};
+    }
+    if (target_.kind == OutputTarget::Kind::special) {
+        if (::close(fd_) != 0) error = "cannot close " + quoted(path) + ": " + errno_text();
+        fd_ = -1;
+        return error;
+    }
+    if (::fsync(fd_) != 0) error = "cannot flush " + quoted(path) + ": " + errno_text();
+    // mkstemp creates 0600. A replaced file keeps its mode and, where allowed (root), its owner; a new one
+    // gets what open() would have given it.
+    if (error.empty()) {
+        ::fchmod(fd_, exists_ && replace ? mode_ : new_file_mode());
+        // Only root may give a file away; anyone else keeps the new file as their own, which is no damage.
+        if (exists_ && replace && (uid_ != ::geteuid() || gid_ != ::getegid()) && ::fchown(fd_, uid_, gid_) != 0)
+            errno = 0;
+    }
+    if (::close(fd_) != 0 && error.empty()) error = "cannot close " + quoted(path) + ": " + errno_text();
+    fd_ = -1;
+    int saved = 0;
+    if (error.empty()) {
+        if (replace) {
+            if (::rename(temp_.c_str(), path.c_str()) != 0)
+                error = "cannot replace " + quoted(path) + ": " + errno_text();
+            else
+                temp_.clear(); // it is the target now
+        } else if (::link(temp_.c_str(), path.c_str()) != 0) {
+            saved = errno;
+            error = errno == EEXIST ? quoted(path) + " already exists; not replaced"
+                                    : "cannot create " + quoted(path) + ": " + errno_text();
+        }
+    }
+    if (!temp_.empty()) remove_temp(temp_, slot_);
+    unregister_temp(slot_);
+    slot_ = -1;
+    temp_.clear();
+    errno = saved;
+    return error;
+}
+
+void OutputStream::abort() {
+    if (target_.kind != OutputTarget::Kind::descriptor && fd_ >= 0) ::close(fd_);
+    fd_ = -1;
+    if (!temp_.empty()) remove_temp(temp_, slot_);
+    temp_.clear();
+}
+
+void install_interrupt_cleanup() {
+    struct sigaction sa {};
+    sa.sa_handler = remove_temps_and_exit;
+    sigemptyset(&sa.sa_mask);
+    for (int sig : {SIGINT, SIGTERM}) ::sigaction(sig, &sa, nullptr);
 }
 
 } // namespace fv

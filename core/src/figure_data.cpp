@@ -509,4 +509,29 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
     return fig;
 }
 
+std::vector<std::string> table_suffixes(const FigureSpec& spec) {
+    switch (spec.kind) {
+    case FigureKind::measurements: {
+        std::vector<std::string> out;
+        if (spec.precomputed)
+            for (const TableData& t : spec.precomputed->tables) out.push_back(t.suffix);
+        return out;
+    }
+    case FigureKind::period_view:
+        if (!spec.panel_i.empty() && spec.only_panel < 0) { // as period_panels names them
+            std::vector<std::string> out;
+            for (std::size_t k = 0; k < spec.panel_i.size(); ++k)
+                out.push_back(k == 0 ? "" : "-" + std::string(1, static_cast<char>('a' + k)));
+            return out;
+        }
+        return {""};
+    case FigureKind::map:
+        return {"", "-best-angle"};
+    case FigureKind::scene:
+        return {"", "-ratio"};
+    default:
+        return {""};
+    }
+}
+
 } // namespace fv

@@ -1,7 +1,8 @@
 #include "fv/measurements.hpp"
 
 #include "fv/input_file.hpp"
-#include "fv/parse_number.hpp"
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
 
 #include "fv/units.hpp"
 
@@ -21,23 +22,9 @@ std::string where(const std::string& file, int line, int column) {
     return file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": ";
 }
 
-// Offending text as it may appear in a one-line message: shortened, control and non-ASCII bytes escaped
-// (the file may be binary junk).
+// Offending text as it may appear in a one-line message (the file may be binary junk).
 std::string quote(std::string_view s) {
-    constexpr std::size_t kMax = 32;
-    std::string out = "'";
-    for (std::size_t k = 0; k < s.size() && k < kMax; ++k) {
-        const auto c = static_cast<unsigned char>(s[k]);
-        if (c >= 0x20 && c < 0x7f && c != '\'') {
-            out += static_cast<char>(c);
-        } else {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\x%02X", c);
-            out += buf;
-        }
-    }
-    if (s.size() > kMax) out += "...";
-    return out + "'";
+    return quoted_text(s, 32);
 }
 
 enum class Col { zeta, vb, rx, theta, sigma, label, count };
@@ -84,7 +71,7 @@ class Parser {
     }
     void header(std::string_view line);
     void row(std::string_view line);
-    double number(const Field& f, Col c, double lo, double hi, bool lo_open, const char* allowed) const;
+    double number(const Field& f, Col c, ParamRange r) const;
 
     std::string_view text_;
     const std::string& name_;
@@ -133,21 +120,11 @@ void Parser::header(std::string_view line) {
     set_.has_sigma = has(Col::sigma);
 }
 
-double Parser::number(const Field& f, Col c, double lo, double hi, bool lo_open, const char* allowed) const {
-    const std::string what = std::string("'") + kNames[static_cast<std::size_t>(c)] + "' ";
-    if (f.text.empty()) fail(f.column, "empty " + what + "field; allowed: " + allowed);
-    // parse_number (std::from_chars' contract) takes no leading '+'; accept it, as people write it.
-    std::string_view s = f.text;
-    if (s.size() > 1 && s[0] == '+' && s[1] != '-' && s[1] != '+') s.remove_prefix(1);
+double Parser::number(const Field& f, Col c, ParamRange r) const {
     double v = 0;
-    const auto [ptr, ec] = parse_number(s.data(), s.data() + s.size(), v);
-    if (ec == std::errc::result_out_of_range)
-        fail(f.column, what + quote(f.text) + " is out of the double range; allowed: " + allowed);
-    if (ec != std::errc() || ptr != s.data() + s.size())
-        fail(f.column, what + quote(f.text) + " is not a number; allowed: " + allowed);
-    if (!std::isfinite(v)) fail(f.column, what + quote(f.text) + " is not finite; allowed: " + allowed);
-    if ((lo_open ? v <= lo : v < lo) || v > hi)
-        fail(f.column, what + quote(f.text) + " is out of range; allowed: " + allowed);
+    // The shared reader (fv/read_number.hpp): the verdicts and messages of the command line and the links.
+    if (std::string why = read_number(kNames[static_cast<std::size_t>(c)], f.text, r, v); !why.empty())
+        fail(f.column, why);
     return v;
 }
 
@@ -167,13 +144,12 @@ void Parser::row(std::string_view line) {
         const int k = index_[static_cast<std::size_t>(c)];
         return k == 0 ? nullptr : &fields[static_cast<std::size_t>(k - 1)];
     };
-    constexpr double inf = HUGE_VAL;
     Measurement m;
     m.line = line_no_;
     if (const Field* f = field(Col::zeta))
-        m.zeta = number(*f, Col::zeta, 0, kMaxZeta, false, "a number in [0, 100]");
+        m.zeta = number(*f, Col::zeta, kZetaRange);
     if (const Field* f = field(Col::vb)) {
-        const double vb = number(*f, Col::vb, 0, inf, false, "a finite number >= 0 (m/s)");
+        const double vb = number(*f, Col::vb, kVbRange);
         m.vb = vb;
         try {
             m.zeta = units::zeta_from_vb(vb, *opt_.amplitude_um, *opt_.frequency_khz);
@@ -181,15 +157,18 @@ void Parser::row(std::string_view line) {
             m.zeta = HUGE_VAL; // vb / v_v beyond the doubles: reported as out of the zeta range below
         }
         if (!(m.zeta <= kMaxZeta)) // also NaN
-            fail(f->column, "'vb' " + quote(f->text) + " gives zeta = " + std::to_string(m.zeta) +
-                                "; allowed: zeta in [0, 100]");
+            fail(f->column, "vb = " + printable_text(f->text) + " gives zeta = " + shortest_decimal(m.zeta) +
+                                "; allowed: zeta in " + describe(kZetaRange));
     }
-    m.rx = number(*field(Col::rx), Col::rx, kMinRx, kMaxRx, false, "a number in [-0.5, 1.5]");
+    m.rx = number(*field(Col::rx), Col::rx, kRxDataRange);
     if (const Field* f = field(Col::theta))
-        m.theta_deg = number(*f, Col::theta, kThetaRange.lo, kThetaRange.hi, false, "a number in [0, 180]");
+        m.theta_deg = number(*f, Col::theta, kThetaRange);
     if (const Field* f = field(Col::sigma))
-        m.sigma = number(*f, Col::sigma, 0, inf, true, "a finite number > 0");
-    if (const Field* f = field(Col::label)) m.label = std::string(f->text);
+        m.sigma = number(*f, Col::sigma, kSigmaRange);
+    if (const Field* f = field(Col::label)) {
+        if (std::string why = text_error(f->text, kMaxLabelBytes); !why.empty()) fail(f->column, "label: " + why);
+        m.label = std::string(f->text);
+    }
     set_.points.push_back(std::move(m));
 }
 

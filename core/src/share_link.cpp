@@ -1,7 +1,8 @@
 #include "fv/share_link.hpp"
 
 #include "fv/param_ranges.hpp"
-#include "fv/parse_number.hpp"
+#include "fv/printable_text.hpp"
+#include "fv/read_number.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -15,10 +16,9 @@
 namespace fv {
 namespace {
 
-// One line whatever the link holds (%0A decodes to a line break).
-[[noreturn]] void fail(std::size_t offset, std::string what) {
-    for (std::size_t k = 0; (k = what.find_first_of("\r\n", k)) != std::string::npos; k += 2)
-        what.replace(k, 1, what[k] == '\n' ? "\\n" : "\\r");
+// `what` quotes the link's text through printable_text, so the message is one line of printable text
+// whatever the link holds (%0A, %1B and %00 decode to control bytes).
+[[noreturn]] void fail(std::size_t offset, const std::string& what) {
     throw LinkError("column " + std::to_string(offset + 1) + ": " + what);
 }
 
@@ -46,22 +46,10 @@ std::string decode(std::string_view s, std::size_t offset) {
     return out;
 }
 
-// A decimal number (no hex, inf, nan, blanks or '+' sign), finite, -0 read as 0.
+// A number by the shared reader (fv/read_number.hpp): the same verdict and message as on the command line.
 double number(const std::string& key, const std::string& v, std::size_t offset, ParamRange r) {
-    const std::string allowed = "; allowed: " + key + " in " + describe(r);
     double x = 0;
-    const char* first = v.data();
-    const char* last = first + v.size();
-    const char* digits = first + (!v.empty() && v[0] == '-' ? 1 : 0);
-    const ParseNumberResult res = parse_number(first, last, x);
-    if (v.empty() || digits == last ||
-        !(std::isdigit(static_cast<unsigned char>(*digits)) || *digits == '.') ||
-        res.ec == std::errc::invalid_argument || res.ptr != last)
-        fail(offset, key + " = '" + v + "' is not a decimal number" + allowed);
-    if (res.ec == std::errc::result_out_of_range)
-        fail(offset, key + " = " + v + " is out of range (beyond double precision)" + allowed);
-    x += 0.0;
-    if (!inside(x, r)) fail(offset, key + " = " + v + " is out of range" + allowed);
+    if (std::string why = read_number(key, v, r, x); !why.empty()) fail(offset, why);
     return x;
 }
 
@@ -79,12 +67,17 @@ constexpr NumberKey kNumberKeys[] = {{"zeta", &ShareLink::zeta, kZetaRange},
 } // namespace
 
 ShareLink parse_share_link(std::string_view text) {
+    // A browser ignores everything from the first '#' (the fragment) and reads the query before it; so
+    // does the link: "#?zeta=0.5" sets nothing in a browser, and is no link here either.
     std::size_t from = 0, to = text.size();
-    if (const auto q = text.find('?'); q != std::string_view::npos) from = q + 1;
-    if (const auto h = text.find('#', from); h != std::string_view::npos) to = h;
+    if (const auto h = text.find('#'); h != std::string_view::npos) to = h;
+    if (const auto q = text.substr(0, to).find('?'); q != std::string_view::npos) from = q + 1;
     if (from == to)
-        fail(from, "no parameters; expected KEY=VALUE pairs joined by '&', e.g. "
-                   "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl (keys: " +
+        fail(from, "no parameters" +
+                       std::string(to < text.size() ? " before the '#' (a fragment, which a browser ignores)"
+                                                     : "") +
+                       "; expected KEY=VALUE pairs joined by '&', e.g. "
+                       "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl (keys: " +
                        std::string(kLinkKeys) + ")");
     ShareLink link;
     for (std::size_t at = from; at <= to;) {
@@ -94,11 +87,11 @@ ShareLink parse_share_link(std::string_view text) {
         if (item.empty()) fail(at, "empty item (a stray '&'); expected KEY=VALUE");
         const std::size_t eq = item.find('=');
         const std::string key = decode(item.substr(0, eq), at);
-        if (eq == std::string_view::npos) fail(at, "'" + key + "' has no value; expected KEY=VALUE");
+        if (eq == std::string_view::npos) fail(at, quoted_text(key) + " has no value; expected KEY=VALUE");
         const std::size_t vat = at + eq + 1;
         const std::string value = decode(item.substr(eq + 1), vat);
         const auto once = [&](bool given) {
-            if (given) fail(at, "'" + key + "' is given twice; each key at most once");
+            if (given) fail(at, quoted_text(key) + " is given twice; each key at most once");
         };
         const NumberKey* nk = std::find_if(std::begin(kNumberKeys), std::end(kNumberKeys),
                                            [&](const NumberKey& n) { return key == n.key; });
@@ -108,9 +101,9 @@ ShareLink parse_share_link(std::string_view text) {
         } else if (key == "model") {
             once(link.model.has_value());
             link.model = parse_model(value);
-            if (!link.model) fail(vat, "model = '" + value + "'; allowed: dahl, rigid");
+            if (!link.model) fail(vat, "model = " + quoted_text(value) + "; allowed: dahl, rigid");
         } else {
-            fail(at, "unknown key '" + key + "'; allowed: " + kLinkKeys);
+            fail(at, "unknown key " + quoted_text(key) + "; allowed: " + kLinkKeys);
         }
         at = end + 1;
     }
@@ -123,27 +116,6 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params) {
     if (link.rdisp) params.rdisp = *link.rdisp;
     if (link.i) params.i = *link.i;
     if (link.model) model = *link.model;
-}
-
-std::string shortest_decimal(double v) {
-    if (v == 0) v = 0; // -0
-    char buf[48];
-    int digits = 1;
-    for (; digits < 17; ++digits) {
-        std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
-        if (std::strtod(buf, nullptr) == v) break;
-    }
-    // Those significant digits without an exponent where that is short (60, not 6e+01; 0.0001), else
-    // with one (1e-07, 1e20).
-    std::snprintf(buf, sizeof buf, "%.*e", digits - 1, v);
-    const int exponent = std::atoi(std::strchr(buf, 'e') + 1);
-    if (exponent >= -5 && exponent < 17)
-        std::snprintf(buf, sizeof buf, "%.*f", std::max(0, digits - 1 - exponent), v);
-    else
-        std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    std::string s = buf;
-    if (const auto plus = s.find("e+"); plus != std::string::npos) s.erase(plus + 1, 1);
-    return s;
 }
 
 double theta_degrees(double theta_rad) {

@@ -1,6 +1,8 @@
 #include "fv/units.hpp"
 
+#include "fv/param_ranges.hpp"
 #include "fv/params.hpp"
+#include "fv/read_number.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -57,6 +59,28 @@ double zss_from_rdisp(double rdisp, double amplitude_um) {
     require("rdisp", rdisp, false);
     require("amplitude (um)", amplitude_um, false);
     return checked("z_ss (um)", amplitude_um / rdisp, false);
+}
+
+std::string physical_view_error(const Params& p, double amplitude_um, double frequency_khz) {
+    const auto num = [](double v) { return shortest_decimal(v); };
+    if (std::string why = range_message("amplitude_um", amplitude_um, kAmplitudeRange); !why.empty()) return why;
+    if (std::string why = range_message("frequency_khz", frequency_khz, kFrequencyRange); !why.empty())
+        return why;
+    const double vv = 2 * kPi * frequency_khz * amplitude_um * kKhzUmToMps;
+    const std::string at = " with amplitude " + num(amplitude_um) + " um";
+    if (!(std::isfinite(vv) && vv > 0))
+        return "amplitude " + num(amplitude_um) + " um at " + num(frequency_khz) +
+               " kHz gives v_v = 2 pi f A = " + num(vv) + " m/s; allowed: a finite v_v > 0";
+    const double vb = p.zeta * vv;
+    if (!inside(vb, kVbRange))
+        return "zeta = " + num(p.zeta) + at + " at " + num(frequency_khz) + " kHz gives v_b = zeta v_v = " +
+               num(vb) + " m/s; allowed: v_b in " + describe(kVbRange) + " m/s";
+    const double zss = amplitude_um / p.rdisp;
+    if (!inside(zss, kZssRange))
+        return "rdisp = " + num(p.rdisp) + at + " gives z_ss = A / rdisp = " + num(zss) +
+               " um; allowed: z_ss in " + describe(kZssRange) + " um, so rdisp >= " +
+               num(amplitude_um / kZssRange.hi) + " at this amplitude";
+    return {};
 }
 
 } // namespace fv::units

@@ -19,6 +19,7 @@
 // docs/reliability.md explains the choices; tests/reliability checks them.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -52,5 +53,50 @@ std::string check_output_dir(const std::string& dir);
 // Writes `data` to `path` by the policy above. Returns an empty string on success, else a one-line reason;
 // on failure a regular target is untouched and no temporary file is left behind.
 std::string write_file_atomic(const std::string& path, std::string_view data);
+
+// The same, but an existing file (or a link to one) at `path` is never replaced: "… already exists" instead.
+// The check and the creation are one step (link(2) of the finished temporary file), so two writers racing for
+// one name cannot both succeed.
+std::string write_file_new(const std::string& path, std::string_view data);
+
+// Writes `data` to the first free name `name_of(1)`, `name_of(2)`, … (at most `max_tries`) in the current
+// or given directory, never replacing a file; `written` is the name taken. For the app's screenshots and
+// trail exports ("frictionviz-screenshot-3.png" when 1 and 2 exist, from this or an earlier run).
+std::string write_numbered_file(const std::function<std::string(int)>& name_of, std::string_view data,
+                                std::string& written,
+                                int max_tries = 100000);
+
+// An output written in pieces (sweep's rows, as they are computed), by the same policy: a regular target is
+// written to a temporary file beside it and renamed over the target by commit(); until then the target is
+// untouched, and the temporary file is removed by abort(), the destructor, or a SIGINT/SIGTERM (see
+// install_interrupt_cleanup).
+class OutputStream {
+  public:
+    OutputStream() = default;
+    ~OutputStream(); // abort() unless committed
+    OutputStream(const OutputStream&) = delete;
+    OutputStream& operator=(const OutputStream&) = delete;
+
+    std::string open(const std::string& path); // "" or a one-line reason (nothing created then)
+    std::string write(std::string_view data);
+    // Regular target: fsync, the replaced file's mode and owner, rename (replace = false: link(2), refused
+    // with "… already exists" if the name is taken). Special or descriptor: close.
+    std::string commit(bool replace = true);
+    void abort();
+    const std::string& target() const { return target_.path; }
+
+  private:
+    OutputTarget target_;
+    std::string temp_; // regular targets: the temporary file
+    int fd_ = -1, slot_ = -1;
+    bool exists_ = false;
+    unsigned mode_ = 0, uid_ = 0, gid_ = 0;
+};
+
+// Installs handlers for SIGINT and SIGTERM that remove every temporary file an OutputStream has open (and
+// a probe file check_writable may have), then end the process with status 128 + signal (130, 143), as a shell
+// reports a job it interrupted. The targets are untouched: they are replaced only by commit(). Call once,
+// early in main.
+void install_interrupt_cleanup();
 
 } // namespace fv

@@ -120,6 +120,10 @@ struct FigureData {
 // Computes everything a figure shows. Ratio curves are spread over all cores.
 FigureData compute_figure(const FigureSpec& spec, int threads = 0);
 
+// The suffixes of the tables compute_figure(spec) will give ("" for ID.csv, "-ratio", "-best-angle", "-b"),
+// known without computing anything, so that `render` can check every file it will write before it starts.
+std::vector<std::string> table_suffixes(const FigureSpec& spec);
+
 // The map figure's panel in steps, for a caller that spreads the work over time (the browser's ratio worker
 // computes a few cells per frame): the grid's points, not yet computed (sweep_grid order: theta, then zeta
 // fastest), each to be computed in order with map_cell(spec, points, k) (a cell may start from the cells

@@ -7,9 +7,12 @@
 //     `label` (free text, no commas; there is no quoting)
 //   - any column order; spaces and tabs around fields are trimmed; lines whose first non-blank character is
 //     '#' and blank lines are skipped; LF or CRLF line ends; a UTF-8 byte-order mark is skipped
-//   - every numeric field must be present and finite: zeta in [0, 100] (the CLI's range), vb >= 0,
+//   - every numeric field must be present and read by the shared number reader (read_number.hpp, as on the
+//     command line) inside the shared ranges (param_ranges.hpp): zeta in [0, 100], vb in [0, 1e6],
 //     r_x in [-0.5, 1.5] (the model gives [0, 1]; the margin admits noise and calibration offsets, anything
-//     further off is a unit or column mix-up such as percent), theta_deg in [0, 180], sigma > 0
+//     further off is a unit or column mix-up such as percent), theta_deg in [0, 180], sigma in [1e-6, 10]
+//     (kSigmaRange says why)
+//   - label: printable UTF-8 of at most 80 bytes (kMaxLabelBytes)
 //   - limits: at most ReadOptions::max_rows data rows, max_line_bytes bytes per line, max_file_bytes bytes.
 #pragma once
 
@@ -62,7 +65,7 @@ struct ReadOptions {
     std::size_t max_file_bytes = 16u << 20;
 };
 
-inline constexpr double kMinRx = -0.5, kMaxRx = 1.5, kMaxZeta = kZetaRange.hi;
+inline constexpr double kMinRx = kRxDataRange.lo, kMaxRx = kRxDataRange.hi, kMaxZeta = kZetaRange.hi;
 
 // Parses `text` as the contents of a file called `name` (used in errors only).
 MeasurementSet parse_measurements(std::string_view text, const std::string& name,

@@ -26,6 +26,15 @@ inline constexpr ParamRange kAmplitudeRange{0, 1e6, true};
 inline constexpr ParamRange kFrequencyRange{0, 1e6, true};
 inline constexpr ParamRange kZssRange{0, 1e6, true};
 
+// Measured data (measurements.hpp). r_x: the model gives [0, 1]; the margin admits noise and calibration
+// offsets, anything further off is a unit or column mix-up such as percent. sigma, the standard uncertainty
+// of r_x: the fit weighs each point by 1/sigma^2, so sigma must keep that weight a finite, usable number
+// (1e-200 squared underflows to 0 and the weight to infinity; the fit then had NaN). Below 1e-6 it is also
+// far below what the model itself can vouch for (its error estimate, ~1e-8, and the data's own scatter), so
+// such a sigma is a unit mistake, refused at load rather than clamped.
+inline constexpr ParamRange kRxDataRange{-0.5, 1.5};
+inline constexpr ParamRange kSigmaRange{1e-6, 10};
+
 // The part of each range the app's sliders span (values beyond them are typed, scripted or given on the
 // command line); each lies inside the range above.
 inline constexpr ParamRange kZetaSlider{0, 3};

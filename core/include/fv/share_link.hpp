@@ -6,14 +6,16 @@
 // it, and the browser build reads the same keys from its page address; so this parser has no GUI in it and
 // lives in core, which both builds compile.
 //
-// Accepted: the query alone ("zeta=0.3&theta=60"), with its '?' or a whole URL (the query is what follows the
-// first '?', up to a '#'). Keys are zeta, theta, rdisp, i, model, each at most once, any subset (the rest
-// keeps its value); values are decimal numbers (as on the command line: no hex, inf or nan) inside the
+// Accepted: the query alone ("zeta=0.3&theta=60"), with its '?' or a whole URL. As in a browser, everything
+// from the first '#' on is a fragment and ignored; the query is what follows the first '?' before it
+// ("#?zeta=0.5" has no query). Keys are zeta, theta, rdisp, i, model, each at most once, any subset (the rest
+// keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the command line) inside the
 // shared range table (param_ranges.hpp), or dahl|rigid; %XX escapes are decoded ('+' stays a plus sign, so
 // "1e+3" is a number). Anything else is a LinkError naming the column, what was wrong and what is allowed.
 #pragma once
 
 #include "fv/params.hpp"
+#include "fv/read_number.hpp" // shortest_decimal
 
 #include <optional>
 #include <stdexcept>
@@ -42,10 +44,6 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params);
 // "?zeta=Z&theta=DEG&rdisp=R&i=I&model=M" for the state given, every number the shortest decimal that reads
 // back as the same double (theta: see theta_degrees), so parsing the link gives the same parameters.
 std::string share_link(Model model, const Params& params);
-
-// The shortest decimal text that strtod reads back as v (up to 17 significant digits; exponent without '+';
-// -0 as "0").
-std::string shortest_decimal(double v);
 
 // theta in degrees such that degrees * kPi / 180 gives theta_rad back bit for bit where a nearby double does
 // (the nicest of them: 60, not 60.00000000000001), else theta_rad * 180 / kPi.

@@ -3,6 +3,8 @@
 
 #include "fv/steady_state.hpp"
 
+#include <cstddef>
+#include <functional>
 #include <vector>
 
 namespace fv {
@@ -27,6 +29,17 @@ std::vector<SweepPoint> sweep_grid(Model model, const std::vector<double>& zetas
 std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
                               const std::vector<double>& thetas, const std::vector<double>& rdisps,
                               const std::vector<double>& is, const SteadyOptions& opt = {}, int threads = 0);
+
+// The number of points sweep_grid would make (computed without making them; saturates at SIZE_MAX).
+std::size_t sweep_size(Model model, std::size_t zetas, std::size_t thetas, std::size_t rdisps, std::size_t is);
+
+// The same points as sweep(), computed block by block in grid order: `emit` gets the rows of each block of
+// at most `block` points, in order, and may return false to stop. Memory holds one block, whatever the grid
+// (the CLI's sweep streams its rows this way). Returns the number of points computed.
+std::size_t sweep_blocks(Model model, const std::vector<double>& zetas, const std::vector<double>& thetas,
+                         const std::vector<double>& rdisps, const std::vector<double>& is,
+                         const SteadyOptions& opt, int threads, std::size_t block,
+                         const std::function<bool(const std::vector<SweepPoint>&)>& emit);
 
 // Runs f(k) for k in [0, count) on `threads` threads (0: hardware concurrency). Work is handed out one
 // index at a time, so uneven costs (slow steady states) balance out.

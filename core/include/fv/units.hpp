@@ -7,7 +7,10 @@
 // v_v = 2 pi * 60e3 * 0.7e-6 m/s = 0.2639 m/s.
 #pragma once
 
+#include "fv/params.hpp"
+
 #include <stdexcept>
+#include <string>
 
 namespace fv::units {
 
@@ -31,5 +34,12 @@ double vb_from_zeta(double zeta, double amplitude_um, double frequency_khz);
 double rdisp_from_zss(double amplitude_um, double zss_um);
 // z_ss = A / rdisp in um; rdisp > 0.
 double zss_from_rdisp(double rdisp, double amplitude_um);
+
+// The physical view of a state, checked as one: v_v = 2 pi f A, v_b = zeta v_v and z_ss = A / rdisp must
+// each be a finite number inside its range of param_ranges.hpp (kVbRange, kZssRange), so that no door
+// (a session, a link with the app's default A, an edit) can leave the app showing NaN or infinity. "" or one
+// line naming the values, e.g. "rdisp = 5e-324 with amplitude 0.7 um gives z_ss = A / rdisp = inf um;
+// allowed: z_ss in (0, 1e+06] um, so rdisp >= 7e-07 at this amplitude".
+std::string physical_view_error(const Params& p, double amplitude_um, double frequency_khz);
 
 } // namespace fv::units
