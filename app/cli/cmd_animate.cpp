@@ -52,12 +52,12 @@ Command add_animate_command(CLI::App& root) {
         ->check(integer_in(anim::kMinPeriods, anim::kMaxPeriods))
         ->capture_default_str();
     cmd->add_option("--fps", a->fps, "frames per second, in [1, 60] (GIF: [1, 50])")
-        ->check(number_in({anim::kMinFps, anim::kMaxFps}))
+        ->transform(number_in({anim::kMinFps, anim::kMaxFps}))
         ->capture_default_str();
     cmd->add_option("--speed", a->speed,
                     "vibration periods per second of the animation, in [0.05, 10] (slow motion; the app's "
                     "speed slider); a period takes fps/speed frames")
-        ->check(number_in({anim::kMinSpeed, anim::kMaxSpeed}))
+        ->transform(number_in({anim::kMinSpeed, anim::kMaxSpeed}))
         ->capture_default_str();
     cmd->add_option("--size", a->size, "frame size WxH in pixels (MP4: rounded up to even numbers)")
         ->check(size_spec())
@@ -65,7 +65,7 @@ Command add_animate_command(CLI::App& root) {
     cmd->add_option("--scale", a->scale,
                     "pixels per logical unit, in " + scale_range_text() +
                         ": --size 1920x1200 --scale 2 is the 960x600 picture at twice the resolution")
-        ->check(number_in({kMinScale, kMaxScale}))
+        ->transform(number_in({kMinScale, kMaxScale}))
         ->capture_default_str();
     cmd->add_option("--view", a->view,
                     "scene: the top view alone, full frame; dashboard: the app's picture without its control "

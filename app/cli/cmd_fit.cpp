@@ -128,7 +128,7 @@ Command add_fit_command(CLI::App& root) {
     a->theta_opt =
         cmd->add_option("--theta", a->theta,
                         "vibration angle in degrees (for rows without theta_deg), " + describe(kThetaRange))
-            ->check(number_in(kThetaRange));
+            ->transform(number_in(kThetaRange));
     cmd->add_option("--i", a->shape, "Dahl exponent: 0, 1, or auto (both, smaller AIC)")
         ->check(CLI::IsMember({"0", "1", "auto"}))
         ->capture_default_str();

@@ -13,6 +13,7 @@
 
 #include "fv/measurements.hpp"
 #include "fv/share_link.hpp"
+#include "fv/units.hpp"
 
 #include <memory>
 
@@ -45,8 +46,11 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     }
     if (*u.amplitude_opt) s.amplitude_um = u.amplitude;
     if (*u.frequency_opt) s.frequency_khz = u.frequency;
-    // The window combines a given amplitude or frequency with the default of the other one.
-    check_vibration({s.amplitude_um, s.frequency_khz}, {s.params.rdisp});
+    // The window combines a given amplitude or frequency with the default of the other one; the message
+    // names the values as they are (a default the user never typed is not blamed on a flag).
+    if (const std::string why = units::physical_view_error(s.params, s.amplitude_um, s.frequency_khz);
+        !why.empty())
+        throw UsageError(why + (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
     // A malformed data file is a usage error before any window opens.
     if (!a.data.empty()) {
         ReadOptions ro;
@@ -75,12 +79,12 @@ Command add_gui_command(CLI::App& root) {
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
     a->model.zeta_opt = cmd->add_option("--zeta", a->model.zeta, "initial velocity ratio (or --vb)")
-                            ->check(number_in(kZetaRange));
+                            ->transform(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg, "initial vibration angle in degrees")
-        ->check(number_in(kThetaRange));
+        ->transform(number_in(kThetaRange));
     a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp, "initial displacement ratio (or --zss)")
-                             ->check(number_in(kRdispRange));
-    cmd->add_option("--i", a->model.i, "initial Dahl exponent")->check(number_in(kIRange));
+                             ->transform(number_in(kRdispRange));
+    cmd->add_option("--i", a->model.i, "initial Dahl exponent")->transform(number_in(kIRange));
     cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
     add_unit_options(*cmd, a->model.units, UnitShape::single,
                      "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
@@ -120,7 +124,7 @@ Command add_gui_command(CLI::App& root) {
                     "UI and drawing scale, pixels per logical unit, in " + scale_range_text() +
                         " (default: the monitor's content scale; 1 headless); --size 2560x1600 --scale 2 is "
                         "the 1280x800 screen at twice the resolution")
-        ->check(number_in({kMinScale, kMaxScale}));
+        ->transform(number_in({kMinScale, kMaxScale}));
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
         ->check(integer_in(1, 1000000));
     cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)")

@@ -221,15 +221,15 @@ Command add_render_command(CLI::App& root) {
     add_output_options(*cmd, a->output);
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
     a->model.zeta_opt = cmd->add_option("--zeta", a->model.zeta, takers("--zeta") + ": velocity ratio")
-                            ->check(number_in(kZetaRange));
+                            ->transform(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg,
                     takers("--theta") + ": vibration angle in degrees (fig19: of points without theta_deg)")
-        ->check(number_in(kThetaRange));
+        ->transform(number_in(kThetaRange));
     a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp,
                                          takers("--rdisp") + ": displacement ratio (map: default 2)")
-                             ->check(number_in(kRdispRange));
+                             ->transform(number_in(kRdispRange));
     a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
-                         ->check(number_in(kIRange));
+                         ->transform(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
     return {cmd, [a, cmd] {
                 if (cmd->get_option("--list")->count() > 0) {

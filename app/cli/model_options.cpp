@@ -6,16 +6,16 @@ namespace fv::cli {
 
 void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
     a.zeta_opt = cmd.add_option("--zeta", a.zeta, "velocity ratio zeta = v_b/v_v, Eq. (6) (or --vb)")
-                     ->check(number_in(kZetaRange));
+                     ->transform(number_in(kZetaRange));
     cmd.add_option("--theta", a.theta_deg, "vibration angle to v_b in degrees, Eq. (1)")
         ->required()
-        ->check(number_in(kThetaRange));
+        ->transform(number_in(kThetaRange));
     a.rdisp_opt = cmd.add_option("--rdisp", a.rdisp,
                                  "displacement ratio r_disp = x_v/z_ss, Eq. (34) (or --zss; Dahl model only)")
-                      ->check(number_in(kRdispRange));
+                      ->transform(number_in(kRdispRange));
     a.i_opt =
         cmd.add_option("--i", a.i, "Dahl shape exponent i, Eq. (12); 0 = stiction, Eq. (27) (Dahl only)")
-            ->check(number_in(kIRange));
+            ->transform(number_in(kIRange));
     if (with_model_choice)
         cmd.add_option("--model", a.model, "friction model")
             ->check(CLI::IsMember({"dahl", "rigid"}))
@@ -55,7 +55,7 @@ void add_solver_options(CLI::App& cmd, SolverArgs& s) {
     cmd.add_option("--tolerance", s.tolerance,
                    "ode scheme: the target for |r - r(dtau -> 0)| of r_x and r_y (default 1e-8; the (zeta, "
                    "theta) map uses 1e-6, so `--tolerance 1e-6` gives its cells)")
-        ->check(number_in(kToleranceRange));
+        ->transform(number_in(kToleranceRange));
 }
 
 SteadyOptions solver_options(const SolverArgs& s) {

@@ -115,7 +115,7 @@ void add_output_options(CLI::App& cmd, OutputArgs& args) {
                    "device pixel ratio: image pixels per logical unit, in " + scale_range_text() +
                        "; lengths are logical, the page is --size / --scale (--size 2560x1600 --scale 2 is "
                        "the 1280x800 picture at twice the resolution)")
-        ->check(number_in({kMinScale, kMaxScale}))
+        ->transform(number_in({kMinScale, kMaxScale}))
         ->capture_default_str();
 }
 

@@ -90,11 +90,11 @@ void add_vb_zss_options(CLI::App& cmd, UnitArgs& u, UnitShape shape) {
         u.vb_opt = cmd.add_option("--vb", u.vb,
                                   "sliding velocity v_b in m/s instead of --zeta: zeta = v_b/(2 pi f A) with "
                                   "--amplitude A and --frequency f")
-                       ->check(number_in(kVbRange));
+                       ->transform(number_in(kVbRange));
         u.zss_opt = cmd.add_option("--zss", u.zss,
                                    "steady-state asperity deflection z_ss in um instead of --rdisp: r_disp = "
                                    "A/z_ss with --amplitude A (Dahl model only)")
-                        ->check(number_in(kZssRange));
+                        ->transform(number_in(kZssRange));
     } else {
         u.vb_opt = cmd.add_option("--vb", u.vb_range,
                                   "sliding velocities v_b in m/s, FROM:TO:COUNT, instead of --zeta: zeta = "
@@ -114,10 +114,10 @@ void add_vibration_options(CLI::App& cmd, UnitArgs& u, const std::string& use) {
     u.amplitude_opt =
         cmd.add_option("--amplitude", u.amplitude,
                        "vibration amplitude A = x_v in um: v_v = 2 pi f A, r_disp = A/z_ss" + more)
-            ->check(number_in(kAmplitudeRange));
+            ->transform(number_in(kAmplitudeRange));
     u.frequency_opt =
         cmd.add_option("--frequency", u.frequency, "vibration frequency f in kHz: v_v = 2 pi f A" + more)
-            ->check(number_in(kFrequencyRange));
+            ->transform(number_in(kFrequencyRange));
 }
 
 void add_unit_options(CLI::App& cmd, UnitArgs& u, UnitShape shape, const std::string& use) {

@@ -49,7 +49,16 @@ std::vector<std::string> split_list(const std::string& s) {
 } // namespace
 
 CLI::Validator number_in(Range r) {
-    return CLI::Validator([r](std::string& s) { return number_error(s, r); }, "NUMBER in " + describe(r));
+    // A transform: the text CLI11 converts is the shortest decimal of the value the shared reader took, so
+    // the option holds exactly that value ("-0" becomes 0, "+1" 1, as at every other door).
+    return CLI::Validator(
+        [r](std::string& s) {
+            double v = 0;
+            std::string why = read_number("", s, r, v);
+            if (why.empty()) s = shortest_decimal(v);
+            return why;
+        },
+        "NUMBER in " + describe(r));
 }
 
 CLI::Validator number_list_in(Range r) {

@@ -22,7 +22,8 @@ Parsed parse_decimal(const std::string& s, double& out);
 // parse_decimal(s, out) == Parsed::ok.
 bool parse_finite(const std::string& s, double& out);
 
-// A finite number inside `r`; the message quotes the value and the range.
+// A finite number inside `r`, read by the shared reader (fv/read_number.hpp); the message quotes the value
+// and the range. Add it with ->transform(): it rewrites the text to the value read (-0 as 0).
 CLI::Validator number_in(Range r);
 
 // Comma-separated numbers, each inside `r`; an empty item ("0,,30", "0,") is an error, not skipped.

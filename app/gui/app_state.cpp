@@ -58,13 +58,18 @@ RatioRequest AppState::ratio_request() const {
 }
 
 void AppState::refresh_units() {
-    try {
-        ui_.vv_m_s = units::vibration_velocity(ui_.amplitude_um, ui_.frequency_khz);
-        ui_.vb_m_s = vb_of(ui_);
-        ui_.zss_um = zss_of(ui_);
-    } catch (const units::UnitError&) {
-        ui_.vv_m_s = ui_.vb_m_s = ui_.zss_um = std::nan(""); // A and f are checked on every edit
-    }
+    // Each on its own: one quantity out of the doubles must not blank the others (every door checks the
+    // physical view, units::physical_view_error, so none is expected to be).
+    const auto value = [](auto f) {
+        try {
+            return f();
+        } catch (const units::UnitError&) {
+            return std::nan("");
+        }
+    };
+    ui_.vv_m_s = value([&] { return units::vibration_velocity(ui_.amplitude_um, ui_.frequency_khz); });
+    ui_.vb_m_s = value([&] { return vb_of(ui_); });
+    ui_.zss_um = value([&] { return zss_of(ui_); });
 }
 
 AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
@@ -102,6 +107,8 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
             err = x.what();
         }
         if (err.empty()) err = range_error(p);
+        // What the panel shows in physical units must stay finite (rdisp 5e-324 would give z_ss = inf).
+        if (err.empty()) err = units::physical_view_error(p, ui_.amplitude_um, ui_.frequency_khz);
         if (err.empty())
             ui_.params = p, model_changed = true;
         else

@@ -57,10 +57,12 @@ std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
     } catch (const units::UnitError& e) {
         return e.what();
     }
-    if (const std::string why = range_error(next.params); !why.empty())
+    std::string bad = range_error(next.params);
+    if (bad.empty()) bad = units::physical_view_error(next.params, next.amplitude_um, next.frequency_khz);
+    if (!bad.empty())
         return "A = " + format_number("%g", next.amplitude_um) +
                " µm, f = " + format_number("%g", next.frequency_khz) +
-               " kHz at the same v_b and z_ss: " + why;
+               " kHz at the same v_b and z_ss: " + bad;
     if (next.data && next.data->from_vb)
         if (std::string why = convert_vb(*next.data, next.amplitude_um, next.frequency_khz); !why.empty())
             return why;

@@ -131,7 +131,7 @@ double theta_degrees(double theta_rad) {
         const std::size_t len = shortest_decimal(d).size();
         if (best_len == 0 || len < best_len) best = d, best_len = len;
     }
-    return best;
+    return best + 0.0; // -0.0 maps back to 0 as well: never print -0
 }
 
 std::string share_link(Model model, const Params& p) {
