@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Fuzzes the measurements CSV reader, the command-line parser and the output-path policy with libFuzzer
+# Fuzzes the measurements CSV reader, the command-line parser, the output-path policy, the session reader and
+# the script parser with libFuzzer
 # (clang, ASan + UBSan):
 # builds the fuzz targets into build-fuzz/ and runs each for SECONDS (default 60), starting from the seed
 # corpus tests/fuzz/corpus/TARGET/. New inputs go to build-fuzz/corpus/TARGET/ (the seeds are not touched);
@@ -11,12 +12,12 @@ seconds=${1:-60}
 bash scripts/setup.sh
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ -DFV_FUZZ=ON \
   -DBUILD_TESTING=OFF >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target fuzz_measurements fuzz_cli fuzz_output_path
+cmake --build build-fuzz -j"$(nproc)" --target fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script
 # intercept_tls_get_addr=0: see scripts/test-sanitize.sh (LeakSanitizer tracer crash at exit with GCC <= 13).
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:intercept_tls_get_addr=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 status=0
-for target in fuzz_measurements fuzz_cli fuzz_output_path; do
+for target in fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script; do
   corpus=build-fuzz/corpus/$target
   artifacts=build-fuzz/artifacts/$target
   mkdir -p "$corpus" "$artifacts"

@@ -164,6 +164,33 @@ TEST_CASE("Legends: the app's live force plot covers none of its curves as they 
     CHECK(legends == 43);
 }
 
+TEST_CASE("Legends: a label too long for the axes is elided, the box stays inside them", "[layout][legend]") {
+    // A pinned curve's label from a hand-written session may be 80 bytes of wide letters (issue: a 1 MB label
+    // ran off the plot). The ratio panel at the app's 1280x800 layout.
+    fv::app::AppState a(fv::Model::dahl, fv::Params{0.3, fv::kPi / 3, 2, 0}, 0.7, 60);
+    a.worker().wait_idle();
+    const std::vector<fv::app::PinnedCurve> pins{{std::string(40, 'W') + std::string(40, 'M'), {0.1, 1, 2}, {0.9, 0.5, 0.4}}};
+    const Rect ratio = fv::app::layout_dashboard({346, 4, 1276, 796}).ratio;
+    fv::gfx::Canvas& canvas = session().canvas();
+    canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
+    const fv::gfx::PlotTransform tf =
+        fv::app::paint_panel(canvas, fv::app::ratio_panel_live(a.worker().latest(), false, {nullptr, 0, &pins}), ratio);
+    canvas.end_recording();
+    int legends = 0;
+    bool elided = false;
+    for (const fv::gfx::Region& r : canvas.display_list().regions) {
+        if (r.role != "legend") continue;
+        ++legends;
+        CHECK(r.rect.x0 >= tf.area.x0);
+        CHECK(r.rect.x1 <= tf.area.x1); // inside the axes
+        for (std::size_t k = r.first; k < r.last; ++k)
+            if (const auto* t = std::get_if<fv::gfx::dl::Text>(&canvas.display_list().commands[k]))
+                elided = elided || t->text.find("WWW…") != std::string::npos;
+    }
+    CHECK(legends == 1);
+    CHECK(elided);
+}
+
 TEST_CASE("Legends: the check sees a legend over a curve", "[layout][legend]") {
     // The same check on a box put over the first plotted sample of Fig. 5 reports it.
     const auto fig5 = std::find_if(figures().begin(), figures().end(),

@@ -8,6 +8,7 @@
 #include "gui/gui_app.hpp"
 
 #include "fv/share_link.hpp"
+#include "fv/units.hpp"
 
 #include <emscripten.h>
 #include <sys/stat.h>
@@ -54,6 +55,11 @@ int main() {
         if (!query.empty()) {
             try {
                 fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params);
+                // As gui --link does: the physical view (with the page's default A and f) must be finite.
+                if (const std::string why = fv::units::physical_view_error(o.start.params, o.start.amplitude_um,
+                                                                           o.start.frequency_khz);
+                    !why.empty())
+                    throw fv::LinkError(why + " (the app's default amplitude and frequency)");
             } catch (const fv::LinkError& e) {
                 o.start = fv::app::Session{}; // the defaults, whatever the link had set before its error
                 const std::string msg =

@@ -49,8 +49,13 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     // The window combines a given amplitude or frequency with the default of the other one; the message
     // names the values as they are (a default the user never typed is not blamed on a flag).
     if (const std::string why = units::physical_view_error(s.params, s.amplitude_um, s.frequency_khz);
-        !why.empty())
-        throw UsageError(why + (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
+        !why.empty()) {
+        std::string given;
+        if (*u.amplitude_opt) given += "--amplitude " + shortest_decimal(u.amplitude);
+        if (*u.frequency_opt) given += (given.empty() ? "" : " ") + ("--frequency " + shortest_decimal(u.frequency));
+        throw UsageError((given.empty() ? "" : given + ": ") + why +
+                         (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
+    }
     // A malformed data file is a usage error before any window opens.
     if (!a.data.empty()) {
         ReadOptions ro;

@@ -1,4 +1,5 @@
 #include "dashboard.hpp"
+
 #include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"

@@ -24,6 +24,15 @@ using fv::test::Scratch;
 using fv::test::slurp;
 
 namespace {
+// The executable under test: FV_TEST_EXE when set (to run these cases against another build, say the one
+// before a fix, to see them fail), else this build's.
+const char* exe() {
+    const char* e = std::getenv("FV_TEST_EXE");
+    return e && *e ? e : FV_EXE;
+}
+} // namespace
+
+namespace {
 
 enum class Why { ok, not_decimal, beyond_double, out_of_range };
 
@@ -86,7 +95,7 @@ struct Verdict {
 Verdict cli_door(const Scratch& s, const std::string& text) {
     const std::string out = s / "out.json", err = s / "err.txt";
     std::ofstream(s / "arg") << text;
-    const std::string cmd = std::string(FV_EXE) + " ratio --model rigid --theta 30 --format json --zeta \"$(cat '" +
+    const std::string cmd = std::string(exe()) + " ratio --model rigid --theta 30 --format json --zeta \"$(cat '" +
                             (s / "arg") + "')\" >'" + out + "' 2>'" + err + "'";
     const int status = std::system(cmd.c_str());
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -177,7 +186,7 @@ TEST_CASE("Every door reads numbers one way: CLI, link, session, script and data
     }
 }
 
-TEST_CASE("--size is read by the shared integer reader: an overflow is refused, never wrapped",
+TEST_CASE("Sizes: --size is read by the shared integer reader: an overflow is refused, never wrapped",
           "[reliability][numbers]") {
     Scratch s;
     s.mkdir("out");
@@ -186,7 +195,7 @@ TEST_CASE("--size is read by the shared integer reader: an overflow is refused, 
           std::string("gui --headless --frames 1 --size ")}) {
         for (const char* size : {"4294967616x240", "320x4294967536", "18446744073709551936x240", "0x10x240", "+320x240x"}) {
             const std::string err = s / "err.txt";
-            const int status = std::system(("cd '" + s.dir() + "' && " + FV_EXE + " " + cmd + size + " >/dev/null 2>'" + err + "'").c_str());
+            const int status = std::system(("cd '" + s.dir() + "' && " + exe() + " " + cmd + size + " >/dev/null 2>'" + err + "'").c_str());
             CAPTURE(cmd, size, slurp(err));
             CHECK(WEXITSTATUS(status) == 2);
             CHECK_THAT(slurp(err), Catch::Contains("--size") && Catch::Contains("allowed: WxH"));

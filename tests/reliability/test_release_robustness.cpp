@@ -23,6 +23,15 @@ using fv::test::Scratch;
 using fv::test::slurp;
 
 namespace {
+// The executable under test: FV_TEST_EXE when set (to run these cases against another build, say the one
+// before a fix, to see them fail), else this build's.
+const char* exe() {
+    const char* e = std::getenv("FV_TEST_EXE");
+    return e && *e ? e : FV_EXE;
+}
+} // namespace
+
+namespace {
 
 struct Run {
     int code;
@@ -32,7 +41,7 @@ struct Run {
 // `frictionviz ARGS` through sh in the scratch directory, stdout and stderr captured.
 Run run(const Scratch& s, const std::string& args) {
     const std::string o = s / ".out", e = s / ".err";
-    const int status = std::system(("cd '" + s.dir() + "' && " + FV_EXE + " " + args + " >'" + o + "' 2>'" + e +
+    const int status = std::system(("cd '" + s.dir() + "' && " + exe() + " " + args + " >'" + o + "' 2>'" + e +
                                     "' </dev/null")
                                        .c_str());
     Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1000 - WTERMSIG(status), slurp(o), slurp(e)};
@@ -173,7 +182,7 @@ TEST_CASE("6. sweep: the grid's size is checked as a whole; rows stream, so memo
     // Memory: the rigid model's rows are cheap, so 100x the rows shows what grows with them.
     auto peak = [&](int count) {
         const fv::testing::ChildRun c = fv::testing::run_child(
-            {FV_EXE, "sweep", "--model", "rigid", "--zeta", "0:2:" + std::to_string(count), "--theta", "0,45,90"});
+            {exe(), "sweep", "--model", "rigid", "--zeta", "0:2:" + std::to_string(count), "--theta", "0,45,90"});
         REQUIRE(c.exit_code == 0);
         return c.peak_rss_kb;
     };
@@ -193,10 +202,10 @@ int interrupted(const Scratch& s, const std::vector<std::string>& args, const st
         if (::chdir(s.dir().c_str()) != 0) ::_exit(126);
         const int out = ::open(stdout_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(out, 1);
-        std::vector<char*> argv{const_cast<char*>(FV_EXE)};
+        std::vector<char*> argv{const_cast<char*>(exe())};
         for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
         argv.push_back(nullptr);
-        ::execv(FV_EXE, argv.data());
+        ::execv(exe(), argv.data());
         ::_exit(127);
     }
     std::this_thread::sleep_for(after);

@@ -371,24 +371,51 @@ struct LegendGeom {
     std::vector<float> middle;              ///< Per entry in one column: its middle below the box's top.
 };
 
+// `label` cut at a character boundary and ended with "…" so that it is at most `width` wide (labels from
+// users' files, say a pinned curve's, can be any length; the figures' own always fit and are kept whole).
+std::string elided(const Canvas& canvas, const std::string& label, float fs, float width) {
+    if (width <= 0 || canvas.measure_text(label, fs).x <= width) return label;
+    // The ends of its characters (UTF-8 lead bytes start them) outside any markup group ("r_{disp}").
+    std::vector<std::size_t> ends;
+    int depth = 0;
+    for (std::size_t k = 1; k <= label.size(); ++k) {
+        depth += label[k - 1] == '{' ? 1 : label[k - 1] == '}' ? -1 : 0;
+        const bool lead = k == label.size() || (static_cast<unsigned char>(label[k]) & 0xC0) != 0x80;
+        if (lead && depth <= 0 && label[k - 1] != '_' && label[k - 1] != '^') ends.push_back(k);
+    }
+    std::size_t lo = 0, hi = ends.size(); // the longest prefix of `lo` characters that fits
+    while (lo < hi) {
+        const std::size_t mid = (lo + hi + 1) / 2;
+        if (canvas.measure_text(label.substr(0, ends[mid - 1]) + "…", fs).x <= width)
+            lo = mid;
+        else
+            hi = mid - 1;
+    }
+    return (lo == 0 ? std::string() : label.substr(0, ends[lo - 1])) + "…";
+}
+
+// `max_width` > 0: the box at most that wide, labels too long for it elided.
 LegendGeom legend_geom(const Canvas& canvas, const std::vector<Series>& series,
                        const std::vector<std::size_t>& entries, float fs, int cols = 1,
-                       float wrap_width = 0) {
+                       float wrap_width = 0, float max_width = 0) {
     const float k = std::min(1.0f, fs / 13.0f);
     LegendGeom g{};
     g.pad = std::round(kLegendPad * k), g.sample = std::round(kLegendSample * k), g.sep = std::round(8 * k);
     g.row = std::round(fs * 1.6f), g.col_gap = std::round(kLegendGap * k);
     g.cols = std::max(1, std::min(cols, static_cast<int>(entries.size())));
+    const float max_label = max_width > 0 ? max_width - 2 * g.pad - g.sample - g.sep : 0;
+    std::vector<std::string> labels;
+    for (std::size_t i : entries) labels.push_back(elided(canvas, series[i].label, fs, max_label));
     float label_w = 0;
-    for (std::size_t i : entries) label_w = std::max(label_w, canvas.measure_text(series[i].label, fs).x);
+    for (const std::string& l : labels) label_w = std::max(label_w, canvas.measure_text(l, fs).x);
     const float label_avail = wrap_width - 2 * g.pad - g.sample - g.sep;
     const bool wrap = g.cols == 1 && wrap_width > 0 && 2 * g.pad + g.sample + g.sep + label_w > wrap_width;
     float y = g.pad * 0.75f;
     if (wrap) label_w = 0;
-    for (std::size_t i : entries) {
-        FittedText f{fs, series[i].label, "", 0};
+    for (std::size_t n = 0; n < entries.size(); ++n) {
+        FittedText f{fs, labels[n], "", 0};
         if (wrap) {
-            f = fit_text(canvas, series[i].label, fs, fs, label_avail, true);
+            f = fit_text(canvas, labels[n], fs, fs, label_avail, true);
             label_w = std::max(label_w, f.width);
         }
         const float h = f.second.empty() ? g.row : g.row + kTitleLeading * fs;
@@ -500,7 +527,7 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     std::optional<LegendGeom> below_geom;
     if (place == LegendPlace::Below || legend_below)
         below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
-    const LegendGeom lg =
+    LegendGeom lg =
         place == LegendPlace::Below ? *below_geom : legend_geom(canvas, series_, entries, font_size);
     const Vec2 lsize = lg.size;
     const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
@@ -683,8 +710,12 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
                           legend_start);
         return tf;
     }
-    const float w = lsize.x, h = lsize.y;
     const float m = kLegendMargin;
+    // Inside the axes, the box no wider than they are: labels too long for that (a user's, say a pinned
+    // curve's from a session file) are elided. The figures' own labels always fit, so nothing else changes.
+    if (!outside && place != LegendPlace::Below && lg.size.x > A.width() - 2 * m)
+        lg = legend_geom(canvas, series_, entries, font_size, 1, 0, A.width() - 2 * m);
+    const float w = lg.size.x, h = lg.size.y;
     // Inside the axes: corners, then the middles of the edges.
     auto box_at = [&](int k) {
         const float left = A.x0 + m, right = A.x1 - m - w, cx = std::round(0.5f * (A.x0 + A.x1 - w));
@@ -789,7 +820,7 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     for (std::size_t n = 0; n < entries.size(); ++n) {
         const Vec2 at = entry_at(n);
         if (lg.second[n].empty()) {
-            canvas.text({at.x + sample + lg.sep, at.y}, series_[entries[n]].label, lt);
+            canvas.text({at.x + sample + lg.sep, at.y}, lg.first[n], lt);
         } else {
             canvas.text({at.x + sample + lg.sep, at.y - 0.5f * kTitleLeading * fs}, lg.first[n], lt);
             canvas.text({at.x + sample + lg.sep, at.y + 0.5f * kTitleLeading * fs}, lg.second[n], lt);
