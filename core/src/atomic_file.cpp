@@ -320,8 +320,23 @@ std::string OutputStream::commit(bool replace) {
                 temp_.clear(); // it is the target now
         } else if (::link(temp_.c_str(), path.c_str()) != 0) {
             saved = errno;
-            error = errno == EEXIST ? quoted(path) + " already exists; not replaced"
-                                    : "cannot create " + quoted(path) + ": " + errno_text();
+            // A file system without hard links (FAT, some FUSE mounts, the browser's MEMFS): look, then rename;
+            // a name taken between the two is the only race left, and only there.
+            struct stat st {};
+            const bool no_links = saved == EMLINK || saved == EPERM || saved == ENOSYS || saved == EOPNOTSUPP;
+            if (no_links && ::lstat(path.c_str(), &st) != 0 && errno == ENOENT) {
+                saved = 0;
+                if (::rename(temp_.c_str(), path.c_str()) != 0)
+                    saved = errno, error = "cannot create " + quoted(path) + ": " + errno_text();
+                else
+                    temp_.clear();
+            } else if (saved == EEXIST || no_links) {
+                saved = EEXIST;
+                error = quoted(path) + " already exists; not replaced";
+            } else {
+                errno = saved;
+                error = "cannot create " + quoted(path) + ": " + errno_text();
+            }
         }
     }
     if (!temp_.empty()) remove_temp(temp_, slot_);
