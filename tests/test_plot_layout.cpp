@@ -111,6 +111,21 @@ const Vec2 kPages[] = {{1280, 800}, {960, 600}, {640, 400}, {480, 320}, {320, 24
 
 } // namespace
 
+TEST_CASE("table_suffixes names every table compute_figure makes, for every registered figure",
+          "[figures][render]") {
+    // render checks each file it will write before computing anything (docs/reliability.md): the names must
+    // be known from the definition alone.
+    std::size_t k = 0;
+    for (const fv::FigureEntry& e : fv::figure_registry()) {
+        fv::FigureInputs in = e.example;
+        if (!in.data.empty() && in.data.front() != '/') in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
+        std::vector<std::string> computed;
+        for (const fv::TableData& t : figures().at(k++).tables) computed.push_back(t.suffix);
+        CAPTURE(e.id);
+        CHECK(fv::table_suffixes(e.make(in)) == computed);
+    }
+}
+
 TEST_CASE("Legends: no legend box covers a plotted sample, in any registered figure", "[layout][legend]") {
     // On render's default page, the snapshots', narrow ones where panels are too small for a legend inside
     // (fig19's (b) covered its curves at 960x600; at 640x400 fig4's and fig19's go below the axes), down to
@@ -169,12 +184,13 @@ TEST_CASE("Legends: a label too long for the axes is elided, the box stays insid
     // ran off the plot). The ratio panel at the app's 1280x800 layout.
     fv::app::AppState a(fv::Model::dahl, fv::Params{0.3, fv::kPi / 3, 2, 0}, 0.7, 60);
     a.worker().wait_idle();
-    const std::vector<fv::app::PinnedCurve> pins{{std::string(40, 'W') + std::string(40, 'M'), {0.1, 1, 2}, {0.9, 0.5, 0.4}}};
+    const std::vector<fv::app::PinnedCurve> pins{
+        {std::string(40, 'W') + std::string(40, 'M'), {0.1, 1, 2}, {0.9, 0.5, 0.4}}};
     const Rect ratio = fv::app::layout_dashboard({346, 4, 1276, 796}).ratio;
     fv::gfx::Canvas& canvas = session().canvas();
     canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
-    const fv::gfx::PlotTransform tf =
-        fv::app::paint_panel(canvas, fv::app::ratio_panel_live(a.worker().latest(), false, {nullptr, 0, &pins}), ratio);
+    const fv::gfx::PlotTransform tf = fv::app::paint_panel(
+        canvas, fv::app::ratio_panel_live(a.worker().latest(), false, {nullptr, 0, &pins}), ratio);
     canvas.end_recording();
     int legends = 0;
     bool elided = false;

@@ -194,13 +194,16 @@ TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offendi
              Case{"{\n  \"version\": 1,\n  \"zeta\": 0.2,\n}", "s.json:4:1: not valid JSON: syntax error"},
              Case{"",
                   "s.json:1:1: not valid JSON: syntax error while parsing value - unexpected end of input"},
-             Case{"{\"version\": 1, \"rdisp\": 1e400}", "s.json:1:25: rdisp = 1e400 is out of range (beyond double precision); allowed: rdisp in (0, 10000]"},
+             Case{"{\"version\": 1, \"rdisp\": 1e400}", "s.json:1:25: rdisp = 1e400 is out of range (beyond "
+                                                        "double precision); allowed: rdisp in (0, 10000]"},
              Case{"{\n  \"version\": 1,\n  \"zeta\": 200\n}",
                   "s.json:3:11: zeta = 200 is out of range; allowed: zeta in [0, 100]"},
-             Case{"{\"version\": 1,\n \"rdisp\": 0}", "s.json:2:11: rdisp = 0 is out of range; allowed: rdisp in (0, 10000]"},
+             Case{"{\"version\": 1,\n \"rdisp\": 0}",
+                  "s.json:2:11: rdisp = 0 is out of range; allowed: rdisp in (0, 10000]"},
              Case{"{\"version\": 1,\n \"theta\": 270}",
                   "s.json:2:11: theta = 270 is out of range; allowed: theta in [0, 180]"},
-             Case{"{\"version\": 1,\n \"i\": -1}", "s.json:2:7: i = -1 is out of range; allowed: i in [0, 10]"},
+             Case{"{\"version\": 1,\n \"i\": -1}",
+                  "s.json:2:7: i = -1 is out of range; allowed: i in [0, 10]"},
              Case{"{\"version\": 1,\n \"speed\": 100}",
                   "s.json:2:11: speed = 100 is out of range; allowed: speed in [0.05, 10]"},
              Case{"{\"version\": 1,\n \"amplitude_um\": 0}",
@@ -420,4 +423,18 @@ TEST_CASE("session JSON: damaged files are refused with one line, never anything
         }
     }
     CHECK(refused > 15000); // most damage is caught
+}
+
+TEST_CASE("docs/app.md names every script action", "[gui][script][docs]") {
+    const std::string doc = read(std::string(FV_TEST_DATA_DIR) + "/../../docs/app.md");
+    const auto section = doc.find("## Scripts");
+    REQUIRE(section != std::string::npos);
+    std::string actions = script_actions() + ",";
+    for (std::size_t from = 0, comma; (comma = actions.find(',', from)) != std::string::npos;
+         from = comma + 2) {
+        const std::string item = actions.substr(from, comma - from);
+        const std::string name = item.substr(0, item.find(' '));
+        CAPTURE(name);
+        CHECK(doc.find("`" + name + "`", section) != std::string::npos);
+    }
 }

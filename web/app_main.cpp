@@ -56,8 +56,8 @@ int main() {
             try {
                 fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params);
                 // As gui --link does: the physical view (with the page's default A and f) must be finite.
-                if (const std::string why = fv::units::physical_view_error(o.start.params, o.start.amplitude_um,
-                                                                           o.start.frequency_khz);
+                if (const std::string why = fv::units::physical_view_error(
+                        o.start.params, o.start.amplitude_um, o.start.frequency_khz);
                     !why.empty())
                     throw fv::LinkError(why + " (the app's default amplitude and frequency)");
             } catch (const fv::LinkError& e) {

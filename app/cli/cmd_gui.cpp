@@ -10,6 +10,7 @@
 #include "anim/animation.hpp"
 #include "gui/gui_app.hpp"
 #include "gui/platform.hpp"
+#include "gui/script.hpp"
 
 #include "fv/measurements.hpp"
 #include "fv/share_link.hpp"
@@ -52,7 +53,8 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
         !why.empty()) {
         std::string given;
         if (*u.amplitude_opt) given += "--amplitude " + shortest_decimal(u.amplitude);
-        if (*u.frequency_opt) given += (given.empty() ? "" : " ") + ("--frequency " + shortest_decimal(u.frequency));
+        if (*u.frequency_opt)
+            given += (given.empty() ? "" : " ") + ("--frequency " + shortest_decimal(u.frequency));
         throw UsageError((given.empty() ? "" : given + ": ") + why +
                          (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
     }
@@ -132,7 +134,9 @@ Command add_gui_command(CLI::App& root) {
         ->transform(number_in({kMinScale, kMaxScale}));
     cmd->add_option("--frames", a->frames, "stop after N frames (fixed 1/60 s per frame)")
         ->check(integer_in(1, 1000000));
-    cmd->add_option("--script", a->script, "scripted edits: lines 'FRAME ACTION [VALUE]' (see README)")
+    cmd->add_option("--script", a->script,
+                    "scripted edits: lines 'FRAME ACTION [VALUE]', ACTION one of: " + app::script_actions() +
+                        " (docs/app.md)")
         ->check(file_name());
     cmd->add_option("--screenshot", a->screenshot, "write the last frame to this PNG (with --frames)")
         ->check(file_name());

@@ -231,179 +231,179 @@ Command add_render_command(CLI::App& root) {
     a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
                          ->transform(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
-    return {cmd, [a, cmd] {
-                if (cmd->get_option("--list")->count() > 0) {
-                    std::fputs((a->list == "markdown" ? figure_table_markdown() : figure_list_tsv()).c_str(),
-                               stdout);
-                    return;
-                }
-                if (a->figure.empty())
-                    throw UsageError("--figure is required (or --list); allowed: " + figure_names());
-                if (a->out.empty() && cmd->get_option("--out")->count() == 0)
-                    throw UsageError("--out is required: the directory to write the figures into");
-                // The inputs of the figures that take flags (--vb and --zss converted).
-                const UnitArgs& u = a->model.units;
-                FigureInputs in;
-                in.zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false);
-                if (cmd->get_option("--theta")->count()) in.theta_deg = a->model.theta_deg;
-                in.rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false);
-                if (a->model.i_opt->count()) in.i = a->model.i;
-                in.data = a->data;
-                if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
-                if (*u.frequency_opt) in.frequency_khz = u.frequency;
-                // Resolve the list of figures first (an unknown id lists the valid ones), each with its
-                // inputs.
-                std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
-                std::stringstream ids(a->figure);
-                std::string id;
-                while (std::getline(ids, id, ',')) {
-                    if (id == "all") {
-                        for (const FigureEntry& e : figure_registry()) {
-                            if (missing_flag(e, cmd).empty())
-                                chosen.emplace_back(&e, in);
-                            else if (!e.all_needs_flags)
-                                chosen.emplace_back(&e, over(e.example, in));
-                            else
-                                std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",
-                                             e.id.c_str(), missing_flag(e, cmd).c_str());
-                        }
-                    } else if (const FigureEntry* e = find_registered(id)) {
-                        if (const std::string m = missing_flag(*e, cmd); !m.empty())
-                            throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) +
-                                             ")");
-                        chosen.emplace_back(e, in);
-                    } else {
-                        throw UsageError("--figure: unknown figure '" + id + "'; allowed: " + figure_names());
+    return {
+        cmd, [a, cmd] {
+            if (cmd->get_option("--list")->count() > 0) {
+                std::fputs((a->list == "markdown" ? figure_table_markdown() : figure_list_tsv()).c_str(),
+                           stdout);
+                return;
+            }
+            if (a->figure.empty())
+                throw UsageError("--figure is required (or --list); allowed: " + figure_names());
+            if (a->out.empty() && cmd->get_option("--out")->count() == 0)
+                throw UsageError("--out is required: the directory to write the figures into");
+            // The inputs of the figures that take flags (--vb and --zss converted).
+            const UnitArgs& u = a->model.units;
+            FigureInputs in;
+            in.zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false);
+            if (cmd->get_option("--theta")->count()) in.theta_deg = a->model.theta_deg;
+            in.rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false);
+            if (a->model.i_opt->count()) in.i = a->model.i;
+            in.data = a->data;
+            if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
+            if (*u.frequency_opt) in.frequency_khz = u.frequency;
+            // Resolve the list of figures first (an unknown id lists the valid ones), each with its
+            // inputs.
+            std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
+            std::stringstream ids(a->figure);
+            std::string id;
+            while (std::getline(ids, id, ',')) {
+                if (id == "all") {
+                    for (const FigureEntry& e : figure_registry()) {
+                        if (missing_flag(e, cmd).empty())
+                            chosen.emplace_back(&e, in);
+                        else if (!e.all_needs_flags)
+                            chosen.emplace_back(&e, over(e.example, in));
+                        else
+                            std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",
+                                         e.id.c_str(), missing_flag(e, cmd).c_str());
                     }
+                } else if (const FigureEntry* e = find_registered(id)) {
+                    if (const std::string m = missing_flag(*e, cmd); !m.empty())
+                        throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) + ")");
+                    chosen.emplace_back(e, in);
+                } else {
+                    throw UsageError("--figure: unknown figure '" + id + "'; allowed: " + figure_names());
                 }
-                if (chosen.empty()) throw UsageError("--figure: no figure named; allowed: " + figure_names());
-                const PixelSize sz = parse_size(a->size);
-                check_output_args(a->output, sz.w, sz.h);
-                check_out_dir(a->out);
-                std::string dir = a->out;
-                while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
-                // The figures' definitions: fig19 reads and fits its data here, before any rendering, so
-                // that a malformed file is a usage error with nothing written.
-                std::vector<FigureSpec> specs;
-                for (const auto& [e, inputs] : chosen) {
-                    try {
-                        specs.push_back(e->make(inputs));
-                    } catch (const DataError& err) {
-                        throw UsageError(err.what());
-                    } catch (const FitError& err) {
-                        throw UsageError(std::string("--data: ") + err.what());
-                    }
-                }
-                // Every file of every figure, before anything is computed (say a directory called
-                // fig8.csv, or a socket called fig8.png, is in the way): a usage error with nothing written.
-                for (const FigureSpec& spec : specs)
-                    for (const std::string& name : figure_files(spec, a->output)) check_out(dir + "/" + name);
-                gfx::ContextOptions co;
-                co.backend = gfx::Backend::Headless;
-                co.width = sz.w;
-                co.height = sz.h;
-                co.scale = static_cast<float>(a->output.scale);
-                std::unique_ptr<app::RenderSession> session;
+            }
+            if (chosen.empty()) throw UsageError("--figure: no figure named; allowed: " + figure_names());
+            const PixelSize sz = parse_size(a->size);
+            check_output_args(a->output, sz.w, sz.h);
+            check_out_dir(a->out);
+            std::string dir = a->out;
+            while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
+            // The figures' definitions: fig19 reads and fits its data here, before any rendering, so
+            // that a malformed file is a usage error with nothing written.
+            std::vector<FigureSpec> specs;
+            for (const auto& [e, inputs] : chosen) {
                 try {
-                    session = std::make_unique<app::RenderSession>(co);
-                } catch (const std::exception& e) {
-                    throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
+                    specs.push_back(e->make(inputs));
+                } catch (const DataError& err) {
+                    throw UsageError(err.what());
+                } catch (const FitError& err) {
+                    throw UsageError(std::string("--data: ") + err.what());
                 }
-                check_gl_limits(*session, a->output);
-                // One figure at a time, so that memory does not grow with the number of figures: figure k is
-                // computed and drawn (GL is single-threaded) while the frames before it are PNG-encoded (the
-                // slow part) and written on other threads; it is handed over when fewer than `encoders` are
-                // in flight, and the frame is freed once encoded. Alive at any time: the context's
-                // framebuffer, the frame being drawn, the encoders' frames, the data of one figure.
-                struct Output {
-                    std::string id;
-                    gfx::Image image;
-                    gfx::DisplayList list;                                  // for SVG and PDF
-                    std::vector<std::pair<std::string, std::string>> files; // beside the PNG: name, content
-                };
-                const OutputArgs& output = a->output;
-                // Owns the frame and the display list, and frees them as soon as they are written. After a
-                // failed write nothing more is written (a full disk, a directory gone): `stop` is set by the
-                // first failure, and jobs still queued find it.
-                auto stop = std::make_shared<std::atomic<bool>>(false);
-                // nullopt: not written (an earlier write failed); "": written; else the failure.
-                auto write = [dir, &output, stop](Output o) -> std::optional<std::string> {
-                    if (*stop) return std::nullopt;
-                    std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
-                    std::vector<std::uint8_t>().swap(o.image.rgba);
-                    o.list = {};
-                    for (const auto& [file, content] : o.files)
-                        if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
-                    if (!err.empty()) *stop = true;
-                    return err;
-                };
-                const std::size_t encoders = encoders_for(sz.w, sz.h);
-                // jobs, "wrote" lines
-                std::deque<std::pair<std::future<std::optional<std::string>>, std::string>> pending;
-                std::string first_error;
-                auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
-                    const std::optional<std::string> err = pending.front().first.get();
-                    const std::string line = std::move(pending.front().second);
-                    pending.pop_front();
-                    if (err && err->empty()) std::printf("%s\n", line.c_str());
-                    if (err && !err->empty() && first_error.empty()) first_error = *err;
-                };
-                // After the first failed write: the jobs in flight end, and nothing else is computed.
-                auto stop_if_failed = [&] {
-                    if (!*stop) return;
-                    while (!pending.empty()) finish_oldest();
-                    throw RuntimeFailure(first_error + " (stopped there: the figures after it were not written)");
-                };
-                // Every figure is written; those with failed points make the exit status 3.
-                const std::size_t nfigures = specs.size();
-                std::string failed;
-                int nfailed = 0;
-                for (FigureSpec& spec : specs) {
-                    stop_if_failed();
-                    FigureData data = compute_figure(spec);
-                    for (TableData& t : data.tables) apply_test_hook(t);
-                    std::optional<FitResult> fit;
-                    if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
-                    Output o{data.id, {}, {}, {}};
-                    if (output.png) {
-                        o.image = session->render_figure(data);
-                        if (output.svg || output.pdf) o.list = session->canvas().display_list();
-                    } else {
-                        o.list = session->record_figure(data);
-                    }
-                    std::vector<std::string> names;
-                    for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
-                    for (const TableData& t : data.tables) {
-                        names.push_back(data.id + t.suffix + ".csv");
-                        o.files.push_back({names.back(), csv_of(t)});
-                        // table_suffixes should have named it: check it now if it did not.
-                        check_out(dir + "/" + names.back());
-                    }
-                    names.push_back(data.id + ".json");
-                    const std::string w = check_figure(data, fit ? &*fit : nullptr);
-                    o.files.push_back({names.back(), caption_json(spec, names, w)});
-                    if (!w.empty()) {
-                        ++nfailed;
-                        failed += (failed.empty() ? "" : "; ") + w;
-                    }
-                    spec = FigureSpec{}; // its data (fig19's figure) are not needed any more
-                    while (pending.size() >= encoders) finish_oldest();
-                    std::string line = "wrote " + dir + "/" + o.id + ".";
-                    for (const std::string& ext : output.extensions())
-                        line += (ext == output.extensions().front() ? "" : ", .") + ext;
-                    line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + "), its CSV and " +
-                            o.id + ".json";
-                    auto job = std::async(std::launch::async, write, std::move(o));
-                    pending.emplace_back(std::move(job), std::move(line));
-                }
+            }
+            // Every file of every figure, before anything is computed (say a directory called
+            // fig8.csv, or a socket called fig8.png, is in the way): a usage error with nothing written.
+            for (const FigureSpec& spec : specs)
+                for (const std::string& name : figure_files(spec, a->output)) check_out(dir + "/" + name);
+            gfx::ContextOptions co;
+            co.backend = gfx::Backend::Headless;
+            co.width = sz.w;
+            co.height = sz.h;
+            co.scale = static_cast<float>(a->output.scale);
+            std::unique_ptr<app::RenderSession> session;
+            try {
+                session = std::make_unique<app::RenderSession>(co);
+            } catch (const std::exception& e) {
+                throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
+            }
+            check_gl_limits(*session, a->output);
+            // One figure at a time, so that memory does not grow with the number of figures: figure k is
+            // computed and drawn (GL is single-threaded) while the frames before it are PNG-encoded (the
+            // slow part) and written on other threads; it is handed over when fewer than `encoders` are
+            // in flight, and the frame is freed once encoded. Alive at any time: the context's
+            // framebuffer, the frame being drawn, the encoders' frames, the data of one figure.
+            struct Output {
+                std::string id;
+                gfx::Image image;
+                gfx::DisplayList list;                                  // for SVG and PDF
+                std::vector<std::pair<std::string, std::string>> files; // beside the PNG: name, content
+            };
+            const OutputArgs& output = a->output;
+            // Owns the frame and the display list, and frees them as soon as they are written. After a
+            // failed write nothing more is written (a full disk, a directory gone): `stop` is set by the
+            // first failure, and jobs still queued find it.
+            auto stop = std::make_shared<std::atomic<bool>>(false);
+            // nullopt: not written (an earlier write failed); "": written; else the failure.
+            auto write = [dir, &output, stop](Output o) -> std::optional<std::string> {
+                if (*stop) return std::nullopt;
+                std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
+                std::vector<std::uint8_t>().swap(o.image.rgba);
+                o.list = {};
+                for (const auto& [file, content] : o.files)
+                    if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
+                if (!err.empty()) *stop = true;
+                return err;
+            };
+            const std::size_t encoders = encoders_for(sz.w, sz.h);
+            // jobs, "wrote" lines
+            std::deque<std::pair<std::future<std::optional<std::string>>, std::string>> pending;
+            std::string first_error;
+            auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
+                const std::optional<std::string> err = pending.front().first.get();
+                const std::string line = std::move(pending.front().second);
+                pending.pop_front();
+                if (err && err->empty()) std::printf("%s\n", line.c_str());
+                if (err && !err->empty() && first_error.empty()) first_error = *err;
+            };
+            // After the first failed write: the jobs in flight end, and nothing else is computed.
+            auto stop_if_failed = [&] {
+                if (!*stop) return;
                 while (!pending.empty()) finish_oldest();
+                throw RuntimeFailure(first_error + " (stopped there: the figures after it were not written)");
+            };
+            // Every figure is written; those with failed points make the exit status 3.
+            const std::size_t nfigures = specs.size();
+            std::string failed;
+            int nfailed = 0;
+            for (FigureSpec& spec : specs) {
                 stop_if_failed();
-                std::fflush(stdout);
-                if (nfailed > 0)
-                    throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(nfigures) +
-                                           " figures have failed points (" + failed +
-                                           "); all figures are written");
-            }};
+                FigureData data = compute_figure(spec);
+                for (TableData& t : data.tables) apply_test_hook(t);
+                std::optional<FitResult> fit;
+                if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
+                Output o{data.id, {}, {}, {}};
+                if (output.png) {
+                    o.image = session->render_figure(data);
+                    if (output.svg || output.pdf) o.list = session->canvas().display_list();
+                } else {
+                    o.list = session->record_figure(data);
+                }
+                std::vector<std::string> names;
+                for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
+                for (const TableData& t : data.tables) {
+                    names.push_back(data.id + t.suffix + ".csv");
+                    o.files.push_back({names.back(), csv_of(t)});
+                    // table_suffixes should have named it: check it now if it did not.
+                    check_out(dir + "/" + names.back());
+                }
+                names.push_back(data.id + ".json");
+                const std::string w = check_figure(data, fit ? &*fit : nullptr);
+                o.files.push_back({names.back(), caption_json(spec, names, w)});
+                if (!w.empty()) {
+                    ++nfailed;
+                    failed += (failed.empty() ? "" : "; ") + w;
+                }
+                spec = FigureSpec{}; // its data (fig19's figure) are not needed any more
+                while (pending.size() >= encoders) finish_oldest();
+                std::string line = "wrote " + dir + "/" + o.id + ".";
+                for (const std::string& ext : output.extensions())
+                    line += (ext == output.extensions().front() ? "" : ", .") + ext;
+                line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + "), its CSV and " + o.id +
+                        ".json";
+                auto job = std::async(std::launch::async, write, std::move(o));
+                pending.emplace_back(std::move(job), std::move(line));
+            }
+            while (!pending.empty()) finish_oldest();
+            stop_if_failed();
+            std::fflush(stdout);
+            if (nfailed > 0)
+                throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(nfigures) +
+                                       " figures have failed points (" + failed +
+                                       "); all figures are written");
+        }};
 }
 
 } // namespace fv::cli

@@ -42,7 +42,8 @@ class RowSink {
                 const std::size_t nl = text.rfind('\n', from + PIPE_BUF - 1);
                 to = nl != std::string::npos && nl >= from ? nl + 1 : from + PIPE_BUF;
             }
-            if (const std::string why = stream_.write(std::string_view(text).substr(from, to - from)); !why.empty())
+            if (const std::string why = stream_.write(std::string_view(text).substr(from, to - from));
+                !why.empty())
                 throw RuntimeFailure(why);
             from = to;
         }
@@ -91,50 +92,51 @@ Command add_sweep_command(CLI::App& root) {
         ->check(CLI::IsMember({"csv", "json"}))
         ->capture_default_str();
     add_out_option(*cmd, a->out);
-    return {cmd, [a, zo, rd, ii] {
-                const Model model = a->model == "rigid" ? Model::rigid : Model::dahl;
-                const RangeSpec z = zeta_range_of(zo, a->zeta, a->units);
-                // The rigid model ignores r_disp, but a given --zss is still checked like a given --rdisp.
-                const std::vector<double> rdisps = rdisps_of(rd, a->rdisp, a->units, model == Model::dahl);
-                if (model == Model::dahl && ii->count() == 0)
-                    throw UsageError("--i is required for the Dahl model; allowed: numbers in " +
-                                     describe(kIRange));
-                const Vibration v =
-                    vibration_of(a->units, model == Model::dahl ? rdisps : std::vector<double>{});
-                check_out(a->out);
-                std::vector<double> thetas;
-                for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
-                const std::vector<double> zetas = linspace(z.from, z.to, z.count);
-                const std::size_t total = sweep_size(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size());
-                if (total > static_cast<std::size_t>(kMaxSweepRows))
-                    throw UsageError(grid_text(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size()) +
-                                     "; allowed: at most " + std::to_string(kMaxSweepRows) +
-                                     " rows in one sweep (split the grid into several runs)");
-                // Rows stream out block by block in grid order as they are computed: memory does not grow
-                // with the grid, and an interrupted run to standard output leaves whole rows (a file target
-                // is replaced only when the last row is written).
-                RowSink sink(a->out);
-                RatioTableStream table(parse_format(a->format), v, total);
-                FailureLog failures;
-                sink.write(table.head());
-                sweep_blocks(model, zetas, thetas, rdisps, a->i, solver_options(a->solver), a->threads, 256,
-                             [&](const std::vector<SweepPoint>& block) {
-                                 std::vector<SweepPoint> rows = block;
-                                 apply_test_hook(rows);
-                                 failures.add(rows);
-                                 sink.write(table.rows(rows));
-                                 return true;
-                             });
-                sink.write(table.tail());
-                sink.commit();
-                // Every row is written, failed ones with their reason in the status column; then exit 3.
-                if (const Failures f = failures.failures(); f.count > 0) {
-                    failures.print();
-                    throw NumericalFailure(std::to_string(f.count) + " of " + std::to_string(total) +
-                                           " rows failed (" + f.by_reason +
-                                           "); all rows are in the output, each with its status");
-                }
-            }};
+    return {
+        cmd, [a, zo, rd, ii] {
+            const Model model = a->model == "rigid" ? Model::rigid : Model::dahl;
+            const RangeSpec z = zeta_range_of(zo, a->zeta, a->units);
+            // The rigid model ignores r_disp, but a given --zss is still checked like a given --rdisp.
+            const std::vector<double> rdisps = rdisps_of(rd, a->rdisp, a->units, model == Model::dahl);
+            if (model == Model::dahl && ii->count() == 0)
+                throw UsageError("--i is required for the Dahl model; allowed: numbers in " +
+                                 describe(kIRange));
+            const Vibration v = vibration_of(a->units, model == Model::dahl ? rdisps : std::vector<double>{});
+            check_out(a->out);
+            std::vector<double> thetas;
+            for (double t : a->theta_deg) thetas.push_back(t * kPi / 180);
+            const std::vector<double> zetas = linspace(z.from, z.to, z.count);
+            const std::size_t total =
+                sweep_size(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size());
+            if (total > static_cast<std::size_t>(kMaxSweepRows))
+                throw UsageError(grid_text(model, zetas.size(), thetas.size(), rdisps.size(), a->i.size()) +
+                                 "; allowed: at most " + std::to_string(kMaxSweepRows) +
+                                 " rows in one sweep (split the grid into several runs)");
+            // Rows stream out block by block in grid order as they are computed: memory does not grow
+            // with the grid, and an interrupted run to standard output leaves whole rows (a file target
+            // is replaced only when the last row is written).
+            RowSink sink(a->out);
+            RatioTableStream table(parse_format(a->format), v, total);
+            FailureLog failures;
+            sink.write(table.head());
+            sweep_blocks(model, zetas, thetas, rdisps, a->i, solver_options(a->solver), a->threads, 256,
+                         [&](const std::vector<SweepPoint>& block) {
+                             std::vector<SweepPoint> rows = block;
+                             apply_test_hook(rows);
+                             failures.add(rows);
+                             sink.write(table.rows(rows));
+                             return true;
+                         });
+            sink.write(table.tail());
+            sink.commit();
+            // Every row is written, failed ones with their reason in the status column; then exit 3.
+            if (const Failures f = failures.failures(); f.count > 0) {
+                failures.print();
+                throw NumericalFailure(std::to_string(f.count) + " of " + std::to_string(total) +
+                                       " rows failed (" + f.by_reason +
+                                       "); all rows are in the output, each with its status");
+            }
+        }};
 }
 
 } // namespace fv::cli

@@ -16,7 +16,7 @@ namespace fv::cli {
 // The parameters' ranges (kZetaRange, kThetaRange, kRdispRange, kIRange) are core's table,
 // fv/param_ranges.hpp, shared with the data reader and the app.
 inline constexpr long kMinSteps = 8, kMaxSteps = 1L << 24;
-inline constexpr int kMaxSweepPoints = 100000;       // COUNT of a sweep's FROM:TO:COUNT
+inline constexpr int kMaxSweepPoints = 100000; // COUNT of a sweep's FROM:TO:COUNT
 // The rows of one sweep (the product of its axes). Rows stream out as they are computed, so memory does not
 // grow with the grid; the limit bounds the time and the file: 1e7 rows are ~1.3 GB of CSV and, at the
 // domain's median 0.03 ms a point on 2 cores, minutes; at the slow i = 10 bands, hours.

@@ -131,7 +131,8 @@ std::string RatioTableStream::rows(const std::vector<SweepPoint>& rows) {
             }
             // As nlohmann's dump(2) of the whole array: each item indented by two more spaces.
             std::string item = j.dump(2);
-            for (std::size_t k = 0; (k = item.find('\n', k)) != std::string::npos; k += 3) item.insert(k + 1, "  ");
+            for (std::size_t k = 0; (k = item.find('\n', k)) != std::string::npos; k += 3)
+                item.insert(k + 1, "  ");
             s += (done_ == 0 ? "  " : ",\n  ") + item;
             ++done_;
             continue;

@@ -3,9 +3,9 @@
 #include "fv/printable_text.hpp"
 #include "fv/read_number.hpp"
 
-#include <limits>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 
 namespace fv::cli {
@@ -148,8 +148,9 @@ CLI::Validator range_spec(Range r, int max_count) {
             long long count = 0;
             if (const std::string why = read_integer("", s.substr(b + 1), 1, max_count, count); !why.empty())
                 return quoted_text(s) +
-                       (why.find("not an integer") != std::string::npos ? " has a COUNT that is not an integer; "
-                                                                         : " has COUNT out of range; ") +
+                       (why.find("not an integer") != std::string::npos
+                            ? " has a COUNT that is not an integer; "
+                            : " has COUNT out of range; ") +
                        allowed.str();
             if (!inside(from, r) || !inside(to, r))
                 return quoted_text(s) + " leaves the allowed range; " + allowed.str();

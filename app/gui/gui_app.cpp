@@ -102,8 +102,9 @@ bool write_requested_files(const AppState::Actions& act, const std::string& scre
     }
     if (act.export_csv) {
         std::string path;
-        const std::string err = write_numbered_file(
-            [](int n) { return "frictionviz-trace-" + std::to_string(n) + ".csv"; }, trace_csv(app.sim()), path);
+        const std::string err =
+            write_numbered_file([](int n) { return "frictionviz-trace-" + std::to_string(n) + ".csv"; },
+                                trace_csv(app.sim()), path);
         report(path, err, " (the trail shown: tau,Px,Py,Tx,Ty,z,Fx,Fy)");
     }
     if (!act.save_session.empty())
@@ -257,7 +258,8 @@ class GuiLoop {
     // 5. Files, then show the frame, then its times.
     void finish(int frame) {
         const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
-        if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_, app_))
+        if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_,
+                                   app_))
             ++failed_writes_;
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();

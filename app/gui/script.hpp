@@ -4,7 +4,7 @@
 // are read by the shared reader (fv/read_number.hpp) inside the shared ranges, so a script refuses at load
 // what the command line refuses (1e-400, 0x10, zeta 200), with the same message. Paths are relative to the
 // script's directory; files a script writes (save-session, animate) are checked before the run, like
-// --screenshot. script_help() lists every action.
+// --screenshot. script_actions() lists them for gui --help.
 #pragma once
 
 #include "ui_state.hpp"
@@ -37,8 +37,8 @@ Script load_script(const std::string& path);
 // The edits of `frame`, given the state they modify.
 UiEdits script_edits(const Script& s, int frame, const UiState& ui);
 
-// Every action with its argument and what it does, one a line (for messages and docs/app.md).
-std::string script_help();
+// Every action with its argument: "zeta NUMBER, theta NUMBER, …, animate PATH" (gui --help).
+std::string script_actions();
 
 // The benchmark's edit (gui --bench): zeta dragged back and forth every frame, the worst case for the UI
 // thread (the simulation restarts, the r_x curves are asked for again).

@@ -56,7 +56,11 @@ class Positions {
     }
     // A key as nlohmann gives it: escapes (\n, \u00e9) decoded.
     static std::string decoded(const std::string& raw) {
-        return Json::parse("\"" + raw + "\"").get<std::string>();
+        try {
+            return Json::parse("\"" + raw + "\"").get<std::string>();
+        } catch (const nlohmann::json::exception&) {
+            return raw; // text the parser refused is scanned too (to place a number it could not hold)
+        }
     }
     std::string string() { // at the opening quote; escapes kept as written
         const std::size_t from = ++k_;
@@ -119,10 +123,10 @@ class Positions {
 };
 
 // A message on one line whatever the file holds (keys, values and paths may contain line breaks).
-[[noreturn]] void fail_with(std::string what) {
-    for (std::size_t k = 0; (k = what.find_first_of("\r\n", k)) != std::string::npos; k += 2)
-        what.replace(k, 1, what[k] == '\n' ? "\\n" : "\\r");
-    throw SessionError(what);
+[[noreturn]] void fail_with(const std::string& what) {
+    // Values are quoted printable where they are put in; this is for what escaped that (the JSON parser's
+    // own message quotes the byte it stopped at, raw), and keeps the message one bounded line.
+    throw SessionError(printable_text(what, 1000));
 }
 
 // "FILE:LINE:COL" of a byte offset (line and column from 1, the column in bytes).
@@ -135,10 +139,12 @@ std::string where(const std::string& file, const std::string& text, std::size_t 
     return printable_text(file, 4096) + ":" + std::to_string(line) + ":" + std::to_string(col);
 }
 
-// The raw text of the scalar value at `offset` (a number as written: "1e-400", not the 0 nlohmann made of it).
+// The raw text of the scalar value at `offset` (a number as written: "1e-400", not the 0 nlohmann made of
+// it).
 std::string_view token_at(const std::string& text, std::size_t offset) {
     std::size_t end = offset;
-    while (end < text.size() && std::string_view(",]} \t\r\n").find(text[end]) == std::string_view::npos) ++end;
+    while (end < text.size() && std::string_view(",]} \t\r\n").find(text[end]) == std::string_view::npos)
+        ++end;
     return std::string_view(text).substr(offset, end - offset);
 }
 
@@ -261,12 +267,18 @@ std::string parse_detail(const nlohmann::json::parse_error& e) {
 // The name and range of the number at a JSON pointer, as the reader below checks it ("/view/pan/0" is
 // "pan x"); for messages about a number the JSON parser could not hold.
 std::pair<std::string, ParamRange> number_key(const std::string& ptr) {
-    static const std::pair<const char*, ParamRange> keys[] = {
-        {"zeta", kZetaRange},       {"theta", kThetaRange},         {"rdisp", kRdispRange},
-        {"i", kIRange},             {"amplitude_um", kAmplitudeRange}, {"frequency_khz", kFrequencyRange},
-        {"speed", kSpeedRange},     {"zoom", kZoomRange},           {"trail_periods", kTrailRange},
-        {"r_x", kRxDataRange}};
-    if (ptr == "/view/pan/0" || ptr == "/view/pan/1") return {ptr.back() == '0' ? "pan x" : "pan y", kPanRange};
+    static const std::pair<const char*, ParamRange> keys[] = {{"zeta", kZetaRange},
+                                                              {"theta", kThetaRange},
+                                                              {"rdisp", kRdispRange},
+                                                              {"i", kIRange},
+                                                              {"amplitude_um", kAmplitudeRange},
+                                                              {"frequency_khz", kFrequencyRange},
+                                                              {"speed", kSpeedRange},
+                                                              {"zoom", kZoomRange},
+                                                              {"trail_periods", kTrailRange},
+                                                              {"r_x", kRxDataRange}};
+    if (ptr == "/view/pan/0" || ptr == "/view/pan/1")
+        return {ptr.back() == '0' ? "pan x" : "pan y", kPanRange};
     for (const auto& [key, range] : keys)
         if (ptr == std::string("/") + key || ptr == std::string("/view/") + key ||
             ptr.find(std::string("/") + key + "/") != std::string::npos)
@@ -391,7 +403,8 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
             if (!rx[n].is_number() && !rx[n].is_null())
                 r.fail_at(ptr + "/r_x" + at,
                           "r_x: expected a number or null (a gap), got " + type_name(rx[n]));
-            pin.rx.push_back(rx[n].is_null() ? std::nan("") : r.number(rx[n], ptr + "/r_x" + at, "r_x", kRxDataRange));
+            pin.rx.push_back(rx[n].is_null() ? std::nan("")
+                                             : r.number(rx[n], ptr + "/r_x" + at, "r_x", kRxDataRange));
         }
         out.push_back(std::move(pin));
     }
@@ -411,7 +424,8 @@ Session parse_session(const std::string& text, const std::string& file) {
     try {
         j = Json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
-        fail_with(where(file, text, e.byte > 0 ? e.byte - 1 : 0) + ": not valid JSON: " + parse_detail(e));
+        fail_with(where(file, text, e.byte > 0 ? e.byte - 1 : 0) +
+                  ": not valid JSON: " + printable_text(parse_detail(e), 120));
     } catch (const nlohmann::json::exception& e) {
         // A number beyond the doubles ("number overflow parsing '1e400'"): no byte position, so look for it,
         // and say it as the shared reader does ("zeta = 1e400 is out of range (beyond double precision)").
@@ -457,10 +471,10 @@ Session parse_session(const std::string& text, const std::string& file) {
     // The physical view the app shows (v_v, v_b, z_ss) must be finite, as for the command line's flags.
     if (const std::string why = units::physical_view_error(s.params, s.amplitude_um, s.frequency_khz);
         !why.empty()) {
-        const char* at = why.rfind("rdisp", 0) == 0   ? "/rdisp"
-                         : why.rfind("zeta", 0) == 0  ? "/zeta"
+        const char* at = why.rfind("rdisp", 0) == 0    ? "/rdisp"
+                         : why.rfind("zeta", 0) == 0   ? "/zeta"
                          : j.contains("frequency_khz") ? "/frequency_khz"
-                                                      : "/amplitude_um";
+                                                       : "/amplitude_um";
         r.fail_at(j.contains(at + 1) ? at : "", why);
     }
     r.get(j, "", "speed", s.speed, kSpeedRange);

@@ -1,13 +1,15 @@
 #include "fv/atomic_file.hpp"
 
+#include "fv/printable_text.hpp"
+
 #include <atomic>
 #include <cerrno>
 #include <csignal>
-#include <pthread.h>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <pthread.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -28,8 +30,9 @@ std::string errno_text() {
     return std::strerror(errno);
 }
 
+// A path in a message: quoted, printable and bounded whatever bytes it holds.
 std::string quoted(const std::string& path) {
-    return "'" + path + "'";
+    return quoted_text(path, 400);
 }
 
 // The descriptor a path names when it is one of the process's own open files, else -1. These are "magic"
@@ -235,7 +238,6 @@ std::string write_numbered_file(const std::function<std::string(int)>& name_of, 
             return {};
         }
         if (why.find(" already exists") == std::string::npos) return why; // else taken meanwhile: the next
-
     }
     return "no free name from " + quoted(name_of(1)) + " to " + quoted(name_of(max_tries)) +
            "; remove some of those files";
@@ -306,7 +308,8 @@ std::string OutputStream::commit(bool replace) {
     if (error.empty()) {
         ::fchmod(fd_, exists_ && replace ? mode_ : new_file_mode());
         // Only root may give a file away; anyone else keeps the new file as their own, which is no damage.
-        if (exists_ && replace && (uid_ != ::geteuid() || gid_ != ::getegid()) && ::fchown(fd_, uid_, gid_) != 0)
+        if (exists_ && replace && (uid_ != ::geteuid() || gid_ != ::getegid()) &&
+            ::fchown(fd_, uid_, gid_) != 0)
             errno = 0;
     }
     if (::close(fd_) != 0 && error.empty()) error = "cannot close " + quoted(path) + ": " + errno_text();
@@ -320,8 +323,8 @@ std::string OutputStream::commit(bool replace) {
                 temp_.clear(); // it is the target now
         } else if (::link(temp_.c_str(), path.c_str()) != 0) {
             saved = errno;
-            // A file system without hard links (FAT, some FUSE mounts, the browser's MEMFS): look, then rename;
-            // a name taken between the two is the only race left, and only there.
+            // A file system without hard links (FAT, some FUSE mounts, the browser's MEMFS): look, then
+            // rename; a name taken between the two is the only race left, and only there.
             struct stat st {};
             const bool no_links = saved == EMLINK || saved == EPERM || saved == ENOSYS || saved == EOPNOTSUPP;
             if (no_links && ::lstat(path.c_str(), &st) != 0 && errno == ENOENT) {

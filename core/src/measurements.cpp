@@ -146,8 +146,7 @@ void Parser::row(std::string_view line) {
     };
     Measurement m;
     m.line = line_no_;
-    if (const Field* f = field(Col::zeta))
-        m.zeta = number(*f, Col::zeta, kZetaRange);
+    if (const Field* f = field(Col::zeta)) m.zeta = number(*f, Col::zeta, kZetaRange);
     if (const Field* f = field(Col::vb)) {
         const double vb = number(*f, Col::vb, kVbRange);
         m.vb = vb;
@@ -161,12 +160,11 @@ void Parser::row(std::string_view line) {
                                 "; allowed: zeta in " + describe(kZetaRange));
     }
     m.rx = number(*field(Col::rx), Col::rx, kRxDataRange);
-    if (const Field* f = field(Col::theta))
-        m.theta_deg = number(*f, Col::theta, kThetaRange);
-    if (const Field* f = field(Col::sigma))
-        m.sigma = number(*f, Col::sigma, kSigmaRange);
+    if (const Field* f = field(Col::theta)) m.theta_deg = number(*f, Col::theta, kThetaRange);
+    if (const Field* f = field(Col::sigma)) m.sigma = number(*f, Col::sigma, kSigmaRange);
     if (const Field* f = field(Col::label)) {
-        if (std::string why = text_error(f->text, kMaxLabelBytes); !why.empty()) fail(f->column, "label: " + why);
+        if (std::string why = text_error(f->text, kMaxLabelBytes); !why.empty())
+            fail(f->column, "label: " + why);
         m.label = std::string(f->text);
     }
     set_.points.push_back(std::move(m));

@@ -13,10 +13,14 @@ std::size_t utf8_char(std::string_view s, std::size_t k) {
     std::size_t len = 0;
     unsigned cp = 0;
     if (c >= 0x20 && c < 0x7f) return 1;
-    if (c >= 0xC2 && c <= 0xDF) len = 2, cp = c & 0x1Fu;
-    else if (c >= 0xE0 && c <= 0xEF) len = 3, cp = c & 0x0Fu;
-    else if (c >= 0xF0 && c <= 0xF4) len = 4, cp = c & 0x07u;
-    else return 0;
+    if (c >= 0xC2 && c <= 0xDF)
+        len = 2, cp = c & 0x1Fu;
+    else if (c >= 0xE0 && c <= 0xEF)
+        len = 3, cp = c & 0x0Fu;
+    else if (c >= 0xF0 && c <= 0xF4)
+        len = 4, cp = c & 0x07u;
+    else
+        return 0;
     if (k + len > s.size()) return 0;
     for (std::size_t n = 1; n < len; ++n) {
         if ((b(n) & 0xC0) != 0x80) return 0;
@@ -58,7 +62,8 @@ std::string quoted_text(std::string_view s, std::size_t max_bytes) {
 }
 
 std::string text_error(std::string_view s, std::size_t max_bytes) {
-    const std::string allowed = "; allowed: printable text of at most " + std::to_string(max_bytes) + " bytes";
+    const std::string allowed =
+        "; allowed: printable text of at most " + std::to_string(max_bytes) + " bytes";
     if (s.size() > max_bytes) return std::to_string(s.size()) + " bytes" + allowed;
     for (std::size_t k = 0; k < s.size();) {
         const std::size_t len = utf8_char(s, k);

@@ -5,10 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <cmath>
 #include <limits>
 
 namespace fv {
@@ -44,7 +44,8 @@ bool decimal_syntax(std::string_view s) {
 }
 
 std::string allowed(std::string_view name, const std::string& range) {
-    return name.empty() ? "; allowed: a number in " + range : "; allowed: " + std::string(name) + " in " + range;
+    return name.empty() ? "; allowed: a number in " + range
+                        : "; allowed: " + std::string(name) + " in " + range;
 }
 
 std::string subject(std::string_view name, const std::string& shown) {
@@ -70,7 +71,9 @@ NumberVerdict read_decimal(std::string_view text, double& value) {
 
 std::string read_number(std::string_view name, std::string_view text, ParamRange r, double& value) {
     double v = 0;
-    if (text.empty()) return (name.empty() ? "an empty text" : std::string(name) + " is empty") + allowed(name, describe(r));
+    if (text.empty())
+        return (name.empty() ? "an empty text" : std::string(name) + " is empty") +
+               allowed(name, describe(r));
     switch (read_decimal(text, v)) {
     case NumberVerdict::not_decimal:
         return subject(name, quoted_text(text)) + " is not a decimal number" + allowed(name, describe(r));
@@ -96,7 +99,8 @@ std::string read_integer(std::string_view name, std::string_view text, long long
     const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     std::size_t k = text.empty() || (text[0] != '+' && text[0] != '-') ? 0 : 1;
     const bool negative = k == 1 && text[0] == '-';
-    if (k == text.size()) return subject(name, quoted_text(text)) + " is not an integer" + allowed(name, range);
+    if (k == text.size())
+        return subject(name, quoted_text(text)) + " is not an integer" + allowed(name, range);
     // Accumulated with an overflow check: sscanf("%d") and atoi wrap 4294967616 to 320.
     unsigned long long magnitude = 0;
     bool overflow = false;
@@ -104,8 +108,10 @@ std::string read_integer(std::string_view name, std::string_view text, long long
         if (!digit(text[k]))
             return subject(name, quoted_text(text)) + " is not an integer" + allowed(name, range);
         const unsigned d = static_cast<unsigned>(text[k] - '0');
-        if (magnitude > (std::numeric_limits<unsigned long long>::max() - d) / 10) overflow = true;
-        else magnitude = magnitude * 10 + d;
+        if (magnitude > (std::numeric_limits<unsigned long long>::max() - d) / 10)
+            overflow = true;
+        else
+            magnitude = magnitude * 10 + d;
     }
     const auto within = [&](long long v) { return v >= lo && v <= hi; };
     constexpr auto kMax = static_cast<unsigned long long>(std::numeric_limits<long long>::max());

@@ -75,7 +75,7 @@ ShareLink parse_share_link(std::string_view text) {
     if (from == to)
         fail(from, "no parameters" +
                        std::string(to < text.size() ? " before the '#' (a fragment, which a browser ignores)"
-                                                     : "") +
+                                                    : "") +
                        "; expected KEY=VALUE pairs joined by '&', e.g. "
                        "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl (keys: " +
                        std::string(kLinkKeys) + ")");

@@ -32,13 +32,15 @@ SweepPoint grid_point(Model model, const std::vector<double>& zetas, const std::
     sp.model = model;
     // rdisp and i mean nothing for the rigid model: NaN, printed as empty fields.
     const double nan = std::numeric_limits<double>::quiet_NaN();
-    sp.params = {zetas[z], thetas[t], model == Model::rigid ? nan : rdisps[r], model == Model::rigid ? nan : is[i]};
+    sp.params = {zetas[z], thetas[t], model == Model::rigid ? nan : rdisps[r],
+                 model == Model::rigid ? nan : is[i]};
     return sp;
 }
 
 } // namespace
 
-std::size_t sweep_size(Model model, std::size_t zetas, std::size_t thetas, std::size_t rdisps, std::size_t is) {
+std::size_t sweep_size(Model model, std::size_t zetas, std::size_t thetas, std::size_t rdisps,
+                       std::size_t is) {
     std::size_t n = 1;
     for (const std::size_t f : {zetas, thetas, family_size(model, rdisps), family_size(model, is)}) {
         if (f != 0 && n > SIZE_MAX / f) return SIZE_MAX;
@@ -69,7 +71,8 @@ std::size_t sweep_blocks(Model model, const std::vector<double>& zetas, const st
     for (std::size_t from = 0; from < n; from += block) {
         const std::size_t count = std::min(block, n - from);
         rows.clear();
-        for (std::size_t k = 0; k < count; ++k) rows.push_back(grid_point(model, zetas, thetas, rdisps, is, from + k));
+        for (std::size_t k = 0; k < count; ++k)
+            rows.push_back(grid_point(model, zetas, thetas, rdisps, is, from + k));
         parallel_for(
             static_cast<int>(count),
             [&](int k) {

@@ -63,7 +63,8 @@ double zss_from_rdisp(double rdisp, double amplitude_um) {
 
 std::string physical_view_error(const Params& p, double amplitude_um, double frequency_khz) {
     const auto num = [](double v) { return shortest_decimal(v); };
-    if (std::string why = range_message("amplitude_um", amplitude_um, kAmplitudeRange); !why.empty()) return why;
+    if (std::string why = range_message("amplitude_um", amplitude_um, kAmplitudeRange); !why.empty())
+        return why;
     if (std::string why = range_message("frequency_khz", frequency_khz, kFrequencyRange); !why.empty())
         return why;
     const double vv = 2 * kPi * frequency_khz * amplitude_um * kKhzUmToMps;
@@ -73,13 +74,14 @@ std::string physical_view_error(const Params& p, double amplitude_um, double fre
                " kHz gives v_v = 2 pi f A = " + num(vv) + " m/s; allowed: a finite v_v > 0";
     const double vb = p.zeta * vv;
     if (!inside(vb, kVbRange))
-        return "zeta = " + num(p.zeta) + at + " at " + num(frequency_khz) + " kHz gives v_b = zeta v_v = " +
-               num(vb) + " m/s; allowed: v_b in " + describe(kVbRange) + " m/s";
+        return "zeta = " + num(p.zeta) + at + " at " + num(frequency_khz) +
+               " kHz gives v_b = zeta v_v = " + num(vb) + " m/s; allowed: v_b in " + describe(kVbRange) +
+               " m/s";
     const double zss = amplitude_um / p.rdisp;
     if (!inside(zss, kZssRange))
         return "rdisp = " + num(p.rdisp) + at + " gives z_ss = A / rdisp = " + num(zss) +
-               " um; allowed: z_ss in " + describe(kZssRange) + " um, so rdisp >= " +
-               num(amplitude_um / kZssRange.hi) + " at this amplitude";
+               " um; allowed: z_ss in " + describe(kZssRange) +
+               " um, so rdisp >= " + num(amplitude_um / kZssRange.hi) + " at this amplitude";
     return {};
 }
 

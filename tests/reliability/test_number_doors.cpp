@@ -3,6 +3,7 @@
 // line and a measured-data file. Each door must take the same numbers, as the same doubles, and refuse the
 // same ones, for the same reason. The only allowed difference is JSON's own grammar: a session cannot hold
 // "+1", ".5" or "5." (the JSON parser refuses them as syntax before any number is read).
+#include "exe_under_test.hpp"
 #include "scratch.hpp"
 
 #include "gui/script.hpp"
@@ -23,14 +24,7 @@
 using fv::test::Scratch;
 using fv::test::slurp;
 
-namespace {
-// The executable under test: FV_TEST_EXE when set (to run these cases against another build, say the one
-// before a fix, to see them fail), else this build's.
-const char* exe() {
-    const char* e = std::getenv("FV_TEST_EXE");
-    return e && *e ? e : FV_EXE;
-}
-} // namespace
+using fv::test::exe;
 
 namespace {
 
@@ -39,24 +33,24 @@ enum class Why { ok, not_decimal, beyond_double, out_of_range };
 struct Hostile {
     std::string text;
     Why why;
-    double value; // when ok
+    double value;     // when ok
     bool json = true; // a number token in JSON's grammar
 };
 
 // Each case says what a careful reader must make of it; none of these verdicts comes from the code.
 const Hostile kHostile[] = {
     {"0.3", Why::ok, 0.3},
-    {"-0", Why::ok, 0.0},              // -0 is the angle, ratio or exponent 0 (and prints as 0)
-    {"5e-324", Why::ok, 5e-324},       // a subnormal is the number it names
+    {"-0", Why::ok, 0.0},        // -0 is the angle, ratio or exponent 0 (and prints as 0)
+    {"5e-324", Why::ok, 5e-324}, // a subnormal is the number it names
     {"1e+1", Why::ok, 10},
     {"1E1", Why::ok, 10},
-    {"+1", Why::ok, 1, false},         // a sign people write; not JSON
+    {"+1", Why::ok, 1, false}, // a sign people write; not JSON
     {".5", Why::ok, 0.5, false},
     {"5.", Why::ok, 5, false},
     {"0.30000000000000004", Why::ok, 0.30000000000000004},
     {"1e-400", Why::beyond_double, 0}, // underflows to 0: not the number asked for
     {"-1e-400", Why::beyond_double, 0},
-    {"1e400", Why::beyond_double, 0},  // overflows
+    {"1e400", Why::beyond_double, 0}, // overflows
     {"0x10", Why::not_decimal, 0, false},
     {"0x1p3", Why::not_decimal, 0, false},
     {"inf", Why::not_decimal, 0, false},
@@ -64,8 +58,8 @@ const Hostile kHostile[] = {
     {"1e", Why::not_decimal, 0, false},
     {"1_0", Why::not_decimal, 0, false},
     {"--1", Why::not_decimal, 0, false},
-    {"\xD9\xA3", Why::not_decimal, 0, false},         // an Arabic-Indic digit three
-    {"\xEF\xBC\x91", Why::not_decimal, 0, false},     // a full-width digit one
+    {"\xD9\xA3", Why::not_decimal, 0, false},     // an Arabic-Indic digit three
+    {"\xEF\xBC\x91", Why::not_decimal, 0, false}, // a full-width digit one
     {"200", Why::out_of_range, 0},
     {"-0.1", Why::out_of_range, 0},
 };
@@ -95,8 +89,9 @@ struct Verdict {
 Verdict cli_door(const Scratch& s, const std::string& text) {
     const std::string out = s / "out.json", err = s / "err.txt";
     std::ofstream(s / "arg") << text;
-    const std::string cmd = std::string(exe()) + " ratio --model rigid --theta 30 --format json --zeta \"$(cat '" +
-                            (s / "arg") + "')\" >'" + out + "' 2>'" + err + "'";
+    const std::string cmd = std::string(exe()) +
+                            " ratio --model rigid --theta 30 --format json --zeta \"$(cat '" + (s / "arg") +
+                            "')\" >'" + out + "' 2>'" + err + "'";
     const int status = std::system(cmd.c_str());
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     if (code != 0) return {std::nullopt, slurp(err) + " (exit " + std::to_string(code) + ")"};
@@ -158,10 +153,11 @@ TEST_CASE("Every door reads numbers one way: CLI, link, session, script and data
           "[reliability][numbers]") {
     Scratch s;
     for (const Hostile& h : kHostile) {
-        const std::vector<std::pair<const char*, Verdict>> doors = {
-            {"command line", cli_door(s, h.text)}, {"link", link_door(h.text)},
-            {"session", session_door(h.text)},     {"script", script_door(s, h.text)},
-            {"data file", data_door(h.text)}};
+        const std::vector<std::pair<const char*, Verdict>> doors = {{"command line", cli_door(s, h.text)},
+                                                                    {"link", link_door(h.text)},
+                                                                    {"session", session_door(h.text)},
+                                                                    {"script", script_door(s, h.text)},
+                                                                    {"data file", data_door(h.text)}};
         for (const auto& [door, v] : doors) {
             CAPTURE(h.text, door, v.message);
             const bool json_syntax = std::string(door) == "session" && !h.json;
@@ -179,7 +175,8 @@ TEST_CASE("Every door reads numbers one way: CLI, link, session, script and data
                 CHECK_THAT(v.message, Catch::Contains(phrase(h.why)));
                 // The same message body (the shared reader's), whatever the door; the CLI names no key.
                 if (std::string(door) != "command line")
-                    CHECK_THAT(v.message, Catch::Contains("zeta") && Catch::Contains("allowed: zeta in [0, 100]"));
+                    CHECK_THAT(v.message,
+                               Catch::Contains("zeta") && Catch::Contains("allowed: zeta in [0, 100]"));
                 CHECK(v.message.find('\x1b') == std::string::npos);
             }
         }
@@ -191,11 +188,15 @@ TEST_CASE("Sizes: --size is read by the shared integer reader: an overflow is re
     Scratch s;
     s.mkdir("out");
     for (const std::string& cmd :
-         {std::string("render --figure fig5 --out out --size "), std::string("animate --out out/a.gif --zeta 0.3 --theta 30 --rdisp 2 --i 1 --size "),
+         {std::string("render --figure fig5 --out out --size "),
+          std::string("animate --out out/a.gif --zeta 0.3 --theta 30 --rdisp 2 --i 1 --size "),
           std::string("gui --headless --frames 1 --size ")}) {
-        for (const char* size : {"4294967616x240", "320x4294967536", "18446744073709551936x240", "0x10x240", "+320x240x"}) {
+        for (const char* size :
+             {"4294967616x240", "320x4294967536", "18446744073709551936x240", "0x10x240", "+320x240x"}) {
             const std::string err = s / "err.txt";
-            const int status = std::system(("cd '" + s.dir() + "' && " + exe() + " " + cmd + size + " >/dev/null 2>'" + err + "'").c_str());
+            const int status = std::system(
+                ("cd '" + s.dir() + "' && " + exe() + " " + cmd + size + " >/dev/null 2>'" + err + "'")
+                    .c_str());
             CAPTURE(cmd, size, slurp(err));
             CHECK(WEXITSTATUS(status) == 2);
             CHECK_THAT(slurp(err), Catch::Contains("--size") && Catch::Contains("allowed: WxH"));

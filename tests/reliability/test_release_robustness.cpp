@@ -1,6 +1,7 @@
 // The release-grade promises of docs/reliability.md, each tried on the real executable as a careless user or
 // a hostile file would: sessions and links that used to crash or mislead, writes that failed and exited 0,
 // names that were clobbered, work without bound, signals during a write.
+#include "exe_under_test.hpp"
 #include "scratch.hpp"
 
 #include "../tools/child_peak_rss.hpp"
@@ -22,14 +23,7 @@
 using fv::test::Scratch;
 using fv::test::slurp;
 
-namespace {
-// The executable under test: FV_TEST_EXE when set (to run these cases against another build, say the one
-// before a fix, to see them fail), else this build's.
-const char* exe() {
-    const char* e = std::getenv("FV_TEST_EXE");
-    return e && *e ? e : FV_EXE;
-}
-} // namespace
+using fv::test::exe;
 
 namespace {
 
@@ -41,9 +35,8 @@ struct Run {
 // `frictionviz ARGS` through sh in the scratch directory, stdout and stderr captured.
 Run run(const Scratch& s, const std::string& args) {
     const std::string o = s / ".out", e = s / ".err";
-    const int status = std::system(("cd '" + s.dir() + "' && " + exe() + " " + args + " >'" + o + "' 2>'" + e +
-                                    "' </dev/null")
-                                       .c_str());
+    const int status = std::system(
+        ("cd '" + s.dir() + "' && " + exe() + " " + args + " >'" + o + "' 2>'" + e + "' </dev/null").c_str());
     Run r{WIFEXITED(status) ? WEXITSTATUS(status) : -1000 - WTERMSIG(status), slurp(o), slurp(e)};
     ::unlink(o.c_str());
     ::unlink(e.c_str());
@@ -90,8 +83,10 @@ TEST_CASE("2. A data file with a sigma the fit cannot weigh is refused at load; 
           "[reliability][fit]") {
     Scratch s;
     for (const char* sigma : {"1e-200", "1e-160", "5e-324", "0", "1e-7"}) {
-        s.write("tiny.csv", std::string("zeta,r_x,sigma\n0.1,0.8,0.01\n0.3,0.5,") + sigma + "\n0.6,0.3,0.01\n");
-        for (const std::string cmd : {"fit --theta 90 --data tiny.csv", "render --figure fig19 --out . --data tiny.csv"}) {
+        s.write("tiny.csv",
+                std::string("zeta,r_x,sigma\n0.1,0.8,0.01\n0.3,0.5,") + sigma + "\n0.6,0.3,0.01\n");
+        for (const std::string cmd :
+             {"fit --theta 90 --data tiny.csv", "render --figure fig19 --out . --data tiny.csv"}) {
             const Run r = run(s, cmd);
             CAPTURE(sigma, cmd, r.err);
             CHECK(r.code == 2);
@@ -104,7 +99,8 @@ TEST_CASE("2. A data file with a sigma the fit cannot weigh is refused at load; 
         CHECK(app.code == 0); // the load is refused in the status line; the fit has no data to run on
     }
     // The smallest sigma allowed, beside large ones: a finite fit.
-    s.write("edge.csv", "zeta,r_x,sigma,theta_deg\n0.05,0.93,1e-6,90\n0.2,0.62,10,90\n0.4,0.4,10,90\n0.8,0.2,10,90\n");
+    s.write("edge.csv",
+            "zeta,r_x,sigma,theta_deg\n0.05,0.93,1e-6,90\n0.2,0.62,10,90\n0.4,0.4,10,90\n0.8,0.2,10,90\n");
     const Run r = run(s, "fit --data edge.csv --format json");
     CAPTURE(r.err);
     CHECK(r.code == 0);
@@ -168,21 +164,23 @@ TEST_CASE("5. Failed writes are exit 1 with the reason: --screenshot, a script's
 TEST_CASE("6. sweep: the grid's size is checked as a whole; rows stream, so memory stays flat",
           "[reliability][sweep]") {
     Scratch s;
-    Run r = run(s, "sweep --zeta 0:1:100000 --theta 0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,"
-                   "24,25,26,27,28,29,30,31,32,33,34,35,36,37,38,39,40,41,42,43,44,45,46,47,48,49,50,51,52,53,54,55,"
-                   "56,57,58,59,60,61,62,63,64,65,66,67,68,69,70,71,72,73,74,75,76,77,78,79,80,81,82,83,84,85,86,87,"
-                   "88,89,90,91,92,93,94,95,96,97,98,99,100,101,102,103,104,105,106,107,108,109,110,111,112,113,114,"
-                   "115,116,117,118,119,120,121,122,123,124,125,126,127,128,129,130,131,132,133,134,135,136,137,138,"
-                   "139,140,141,142,143,144,145,146,147,148,149,150,151,152,153,154,155,156,157,158,159,160,161,162,"
-                   "163,164,165,166,167,168,169,170,171,172,173,174,175,176,177,178,179,180 --rdisp 1,2 --i 1");
+    Run r = run(
+        s, "sweep --zeta 0:1:100000 --theta 0,1,2,3,4,5,6,7,8,9,10,11,12,13,14,15,16,17,18,19,20,21,22,23,"
+           "24,25,26,27,28,29,30,31,32,33,34,35,36,37,38,39,40,41,42,43,44,45,46,47,48,49,50,51,52,53,54,55,"
+           "56,57,58,59,60,61,62,63,64,65,66,67,68,69,70,71,72,73,74,75,76,77,78,79,80,81,82,83,84,85,86,87,"
+           "88,89,90,91,92,93,94,95,96,97,98,99,100,101,102,103,104,105,106,107,108,109,110,111,112,113,114,"
+           "115,116,117,118,119,120,121,122,123,124,125,126,127,128,129,130,131,132,133,134,135,136,137,138,"
+           "139,140,141,142,143,144,145,146,147,148,149,150,151,152,153,154,155,156,157,158,159,160,161,162,"
+           "163,164,165,166,167,168,169,170,171,172,173,174,175,176,177,178,179,180 --rdisp 1,2 --i 1");
     CHECK(r.code == 2);
     CHECK_THAT(r.err, Catch::Contains("zeta 100000 x theta 181 x rdisp 2 x i 1 = 36200000 rows; allowed: at "
                                       "most 10000000 rows in one sweep"));
     CHECK(r.out.empty());
     // Memory: the rigid model's rows are cheap, so 100x the rows shows what grows with them.
     auto peak = [&](int count) {
-        const fv::testing::ChildRun c = fv::testing::run_child(
-            {exe(), "sweep", "--model", "rigid", "--zeta", "0:2:" + std::to_string(count), "--theta", "0,45,90"});
+        const fv::testing::ChildRun c =
+            fv::testing::run_child({exe(), "sweep", "--model", "rigid", "--zeta",
+                                    "0:2:" + std::to_string(count), "--theta", "0,45,90"});
         REQUIRE(c.exit_code == 0);
         return c.peak_rss_kb;
     };
@@ -195,8 +193,8 @@ namespace {
 
 // Starts `frictionviz ARGS` in the scratch directory with stdout into `stdout_path`, sends `sig` after
 // `after`, and returns the exit status (-1 if it did not exit).
-int interrupted(const Scratch& s, const std::vector<std::string>& args, const std::string& stdout_path, int sig,
-                std::chrono::milliseconds after) {
+int interrupted(const Scratch& s, const std::vector<std::string>& args, const std::string& stdout_path,
+                int sig, std::chrono::milliseconds after) {
     const pid_t pid = ::fork();
     if (pid == 0) {
         if (::chdir(s.dir().c_str()) != 0) ::_exit(126);
@@ -215,8 +213,8 @@ int interrupted(const Scratch& s, const std::vector<std::string>& args, const st
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
-const std::vector<std::string> kSlowSweep = {"sweep", "--zeta", "0.01:3:100000", "--theta", "30,60,90",
-                                             "--rdisp", "2", "--i", "1", "--threads", "1"};
+const std::vector<std::string> kSlowSweep = {
+    "sweep", "--zeta", "0.01:3:100000", "--theta", "30,60,90", "--rdisp", "2", "--i", "1", "--threads", "1"};
 
 } // namespace
 
@@ -273,7 +271,8 @@ TEST_CASE("7. render checks every file of every figure before computing, and sto
     CHECK_THAT(r.err, Catch::Contains("fig8.csv") && Catch::Contains("is a directory"));
     CHECK(std::vector<std::string>{"fig8.csv"} == [&] {
         std::vector<std::string> names;
-        for (const auto& e : std::filesystem::directory_iterator(s / "out")) names.push_back(e.path().filename());
+        for (const auto& e : std::filesystem::directory_iterator(s / "out"))
+            names.push_back(e.path().filename());
         return names;
     }());
     // The second figure's image cannot be written (a full disk, here /dev/full behind its name): the first
@@ -294,7 +293,8 @@ TEST_CASE("9. Scripts read numbers as the command line does, and refuse bad ones
           "[reliability][script]") {
     Scratch s;
     for (const auto& [line, says] : std::vector<std::pair<std::string, std::string>>{
-             {"1 zeta 1e-400", "zeta = 1e-400 is out of range (beyond double precision); allowed: zeta in [0, 100]"},
+             {"1 zeta 1e-400",
+              "zeta = 1e-400 is out of range (beyond double precision); allowed: zeta in [0, 100]"},
              {"1 zeta 0x10", "zeta = '0x10' is not a decimal number"},
              {"1 theta 200", "theta = 200 is out of range; allowed: theta in [0, 180]"},
              {"99999999999999999999 zeta 1", "frame = 99999999999999999999 is out of range"},
@@ -332,12 +332,16 @@ TEST_CASE("11. Sessions read numbers as the command line does; nothing after a N
           "[reliability][session]") {
     Scratch s;
     for (const auto& [json, says] : std::vector<std::pair<std::string, std::string>>{
-             {"{\"version\": 1, \"zeta\": 1e-400}", "s.json:1:24: zeta = 1e-400 is out of range (beyond double"},
-             {"{\"version\": 1, \"zeta\": -1e-400}", "s.json:1:24: zeta = -1e-400 is out of range (beyond double"},
-             {std::string("{\"version\": 1}\0garbage", 23), "s.json:1:15: a NUL byte; a session file is JSON text"},
-             {"{\"version\": 1, \"rdisp\": 5e-324}",
-              "rdisp = 5e-324 with amplitude 0.7 um gives z_ss = A / rdisp = inf um; allowed: z_ss in (0, 1e+06] um"},
-             {"{\"version\": 1, \"speed\": 0.01}", "speed = 0.01 is out of range; allowed: speed in [0.05, 10]"},
+             {"{\"version\": 1, \"zeta\": 1e-400}",
+              "s.json:1:24: zeta = 1e-400 is out of range (beyond double"},
+             {"{\"version\": 1, \"zeta\": -1e-400}",
+              "s.json:1:24: zeta = -1e-400 is out of range (beyond double"},
+             {std::string("{\"version\": 1}\0garbage", 23),
+              "s.json:1:15: a NUL byte; a session file is JSON text"},
+             {"{\"version\": 1, \"rdisp\": 5e-324}", "rdisp = 5e-324 with amplitude 0.7 um gives z_ss = A / "
+                                                     "rdisp = inf um; allowed: z_ss in (0, 1e+06] um"},
+             {"{\"version\": 1, \"speed\": 0.01}",
+              "speed = 0.01 is out of range; allowed: speed in [0.05, 10]"},
          }) {
         s.write("s.json", json);
         const Run r = run(s, kHeadless + "--session s.json");
@@ -366,7 +370,8 @@ TEST_CASE("12. A link's fragment is ignored as a browser ignores it", "[reliabil
     CHECK(r.code == 0);
 }
 
-TEST_CASE("13. A pinned curve's label is capped: a 1 MB label is refused in one line", "[reliability][session]") {
+TEST_CASE("13. A pinned curve's label is capped: a 1 MB label is refused in one line",
+          "[reliability][session]") {
     Scratch s;
     s.write("s.json", "{\"version\": 1, \"pins\": [{\"label\": \"" + std::string(1000000, 'x') +
                           "\", \"zeta\": [0.1], \"r_x\": [0.5]}]}");

@@ -396,8 +396,8 @@ std::string elided(const Canvas& canvas, const std::string& label, float fs, flo
 
 // `max_width` > 0: the box at most that wide, labels too long for it elided.
 LegendGeom legend_geom(const Canvas& canvas, const std::vector<Series>& series,
-                       const std::vector<std::size_t>& entries, float fs, int cols = 1,
-                       float wrap_width = 0, float max_width = 0) {
+                       const std::vector<std::size_t>& entries, float fs, int cols = 1, float wrap_width = 0,
+                       float max_width = 0) {
     const float k = std::min(1.0f, fs / 13.0f);
     LegendGeom g{};
     g.pad = std::round(kLegendPad * k), g.sample = std::round(kLegendSample * k), g.sep = std::round(8 * k);

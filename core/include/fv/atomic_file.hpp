@@ -63,8 +63,7 @@ std::string write_file_new(const std::string& path, std::string_view data);
 // or given directory, never replacing a file; `written` is the name taken. For the app's screenshots and
 // trail exports ("frictionviz-screenshot-3.png" when 1 and 2 exist, from this or an earlier run).
 std::string write_numbered_file(const std::function<std::string(int)>& name_of, std::string_view data,
-                                std::string& written,
-                                int max_tries = 100000);
+                                std::string& written, int max_tries = 100000);
 
 // An output written in pieces (sweep's rows, as they are computed), by the same policy: a regular target is
 // written to a temporary file beside it and renamed over the target by commit(); until then the target is

@@ -18,9 +18,10 @@ std::string printable_text(std::string_view s, std::size_t max_bytes = 64);
 // The same, between single quotes (a quote inside as \x27).
 std::string quoted_text(std::string_view s, std::size_t max_bytes = 64);
 
-// Free text from a file that is shown (a pinned curve's label, a data point's label): "" when `s` is printable
-// UTF-8 of at most `max_bytes`, else one line saying what is wrong and what is allowed ("1048576 bytes;
-// allowed: printable text of at most 80 bytes", "a control or non-UTF-8 byte \x1B at byte 3; allowed: ...").
+// Free text from a file that is shown (a pinned curve's label, a data point's label): "" when `s` is
+// printable UTF-8 of at most `max_bytes`, else one line saying what is wrong and what is allowed ("1048576
+// bytes; allowed: printable text of at most 80 bytes", "a control or non-UTF-8 byte \x1B at byte 3; allowed:
+// ...").
 std::string text_error(std::string_view s, std::size_t max_bytes);
 
 // How long free text from files may be (labels), in bytes.

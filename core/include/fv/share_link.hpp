@@ -9,9 +9,10 @@
 // Accepted: the query alone ("zeta=0.3&theta=60"), with its '?' or a whole URL. As in a browser, everything
 // from the first '#' on is a fragment and ignored; the query is what follows the first '?' before it
 // ("#?zeta=0.5" has no query). Keys are zeta, theta, rdisp, i, model, each at most once, any subset (the rest
-// keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the command line) inside the
-// shared range table (param_ranges.hpp), or dahl|rigid; %XX escapes are decoded ('+' stays a plus sign, so
-// "1e+3" is a number). Anything else is a LinkError naming the column, what was wrong and what is allowed.
+// keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the command line)
+// inside the shared range table (param_ranges.hpp), or dahl|rigid; %XX escapes are decoded ('+' stays a plus
+// sign, so "1e+3" is a number). Anything else is a LinkError naming the column, what was wrong and what is
+// allowed.
 #pragma once
 
 #include "fv/params.hpp"

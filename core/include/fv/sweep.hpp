@@ -31,7 +31,8 @@ std::vector<SweepPoint> sweep(Model model, const std::vector<double>& zetas,
                               const std::vector<double>& is, const SteadyOptions& opt = {}, int threads = 0);
 
 // The number of points sweep_grid would make (computed without making them; saturates at SIZE_MAX).
-std::size_t sweep_size(Model model, std::size_t zetas, std::size_t thetas, std::size_t rdisps, std::size_t is);
+std::size_t sweep_size(Model model, std::size_t zetas, std::size_t thetas, std::size_t rdisps,
+                       std::size_t is);
 
 // The same points as sweep(), computed block by block in grid order: `emit` gets the rows of each block of
 // at most `block` points, in order, and may return false to stop. Memory holds one block, whatever the grid
