@@ -347,7 +347,7 @@ TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "
     CHECK(lines(best) == 1 + 200);
 }
 
-TEST_CASE("CLI: render --figure fig19 plots data over the fitted models; bad data is a usage error",
+TEST_CASE("CLI: render --figure fig19 plots data over the fitted models, bad data is a usage error",
           "[cli][render][fit]") {
     const std::string dir = scratch_dir() + "/fig19";
     REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
@@ -449,7 +449,7 @@ std::vector<std::string> files_in(const std::string& dir) {
 
 } // namespace
 
-TEST_CASE("CLI registry: render --list prints every figure once; --figure and its messages take the same ids",
+TEST_CASE("CLI registry: render --list prints every figure once, --figure and its messages take the same ids",
           "[cli][render][registry]") {
     const std::vector<std::string> ids = listed_ids();
     std::vector<std::string> sorted = ids;

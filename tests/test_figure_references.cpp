@@ -69,7 +69,7 @@ double dahl_leg(double u0, double direction, double d, double i) {
 
 } // namespace
 
-TEST_CASE("fig4: the friction against v_b is Eq. (3), its mean Eq. (11) or Eq. (10); F is opposite to v",
+TEST_CASE("fig4: the friction against v_b is Eq. (3), its mean Eq. (11) or Eq. (10), F is opposite to v",
           "[figures][references]") {
     for (const auto& [zeta, theta_deg] :
          {std::pair{0.5, 90.0}, {0.3, 90.0}, {0.5, 0.0}, {0.8, 0.0}, {0.5, 45.0}}) {
@@ -171,7 +171,7 @@ TEST_CASE("fig6: every curve follows the closed form of the Dahl law along each 
     }
 }
 
-TEST_CASE("ry: rigid r_y is the mean of Eq. (4); the Dahl r_y tends to it as r_disp grows",
+TEST_CASE("ry: rigid r_y is the mean of Eq. (4), the Dahl r_y tends to it as r_disp grows",
           "[figures][references]") {
     const fv::FigureData d = figure("ry");
     const fv::PanelData& p = d.panels.at(0);
@@ -206,7 +206,7 @@ TEST_CASE("ry: rigid r_y is the mean of Eq. (4); the Dahl r_y tends to it as r_d
         }
 }
 
-TEST_CASE("fig14: panels (a) i = 1 and (b) i = 0 on shared axes; P follows Eqs. (28)-(29); the i = 0 tip "
+TEST_CASE("fig14: panels (a) i = 1 and (b) i = 0 on shared axes, P follows Eqs. (28)-(29), the i = 0 tip "
           "moves only at z = z_ss",
           "[figures][references]") {
     const fv::FigureData d = figure("fig14");
@@ -244,7 +244,7 @@ TEST_CASE("fig14: panels (a) i = 1 and (b) i = 0 on shared axes; P follows Eqs. 
     CHECK(fb.tables.at(0).trace.size() == tb.size());
 }
 
-TEST_CASE("fig19: synthetic data are labelled so; the top axis is v_b = zeta 2 pi f A for --amplitude, "
+TEST_CASE("fig19: synthetic data are labelled so, the top axis is v_b = zeta 2 pi f A for --amplitude, "
           "--frequency",
           "[figures][references]") {
     fv::FigureInputs in;

@@ -300,7 +300,7 @@ TEST_CASE("ODE: Sweeps: warm-started families give the cold-start results", "[od
     CHECK(pts[48].params.i == 1);
 }
 
-TEST_CASE("ODE: Every case ends with a clear status; bad parameters are refused", "[ode][status]") {
+TEST_CASE("ODE: Every case ends with a clear status, bad parameters are refused", "[ode][status]") {
     for (const Params& p :
          {Params{0.02, 0.0, 0.2, 0}, Params{0.02, kPi / 2, 0.2, 1}, Params{1.5, 0, 0.5, 3},
           Params{0.0, kPi / 3, 0.3, 2}, Params{0.05, 0.3, 0.2, 2.5}, Params{3, 0.1, 100, 1}}) {

@@ -167,7 +167,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     check_same(back, s);
 }
 
-TEST_CASE("session JSON: missing keys take the app's defaults; a relative data path is the session's "
+TEST_CASE("session JSON: missing keys take the app's defaults, a relative data path is the session's "
           "neighbour",
           "[gui][session]") {
     check_same(parse_session("{\"version\": 1}", "s.json"), Session{});
@@ -307,7 +307,7 @@ TEST_CASE("session file: written atomically, nothing left behind when the target
     CHECK_FALSE(write_session(scratch(), unusual()).empty()); // a directory
 }
 
-TEST_CASE("AppState: opening a session replaces the whole state and restarts the simulation; a bad one "
+TEST_CASE("AppState: opening a session replaces the whole state and restarts the simulation, a bad one "
           "changes nothing",
           "[gui][session]") {
     AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
@@ -360,7 +360,7 @@ TEST_CASE("AppState: a session opened with other edits in the same frame lands f
     CHECK(a.ui().params.theta == kPi / 2);
 }
 
-TEST_CASE("script: save-session and open-session take paths next to the script; an unwritable save is "
+TEST_CASE("script: save-session and open-session take paths next to the script, an unwritable save is "
           "refused before the run",
           "[gui][session][script]") {
     const std::string script = write("s.txt", "3 save-session out.json\n4 open-session in.json\n");

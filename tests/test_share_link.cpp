@@ -27,7 +27,7 @@ std::string refusal(const std::string& text) {
 
 } // namespace
 
-TEST_CASE("share link: the query alone, with '?', or inside a URL; any subset of the keys", "[link]") {
+TEST_CASE("share link: the query alone, with '?', or inside a URL, any subset of the keys", "[link]") {
     for (const std::string text :
          {"zeta=0.3&theta=60&rdisp=5&i=1&model=dahl", "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl",
           "https://example.org/frictionviz/index.html?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl#top",

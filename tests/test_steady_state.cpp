@@ -65,7 +65,7 @@ TEST_CASE("i = 0 and i = 1 agree where the asperity never relaxes (Fig. 17/18)",
     CHECK(b.rx < a.rx - 0.05);
 }
 
-TEST_CASE("Mirror symmetries: theta = pi/2 has r_y = 0; theta -> pi - theta flips r_y", "[steady]") {
+TEST_CASE("Mirror symmetries: theta = pi/2 has r_y = 0, theta -> pi - theta flips r_y", "[steady]") {
     // tau -> tau + pi maps P at pi - theta onto the mirror image of P at theta (plus a drift), so the steady
     // states are mirror images.
     for (double i : {0.0, 1.0, 2.0}) {

@@ -327,19 +327,30 @@ Command add_render_command(CLI::App& root) {
             // first failure, and jobs still queued find it.
             auto stop = std::make_shared<std::atomic<bool>>(false);
             // nullopt: not written (an earlier write failed); "": written; else the failure.
-            auto write = [dir, &output, stop](Output o) -> std::optional<std::string> {
-                if (*stop) return std::nullopt;
-                std::string err = write_figure_files(dir, o.id, output, o.image, o.list);
+            // Encoding (the slow part) runs in parallel; the writes go in figure order, each job waiting for
+            // the one before it, so nothing after a failed write is written.
+            auto write = [dir, &output, stop](Output o, std::shared_future<std::optional<std::string>> before)
+                -> std::optional<std::string> {
+                std::vector<std::pair<std::string, std::string>> files;
+                std::string err;
+                try {
+                    files = encode_figure_files(o.id, output, o.image, o.list);
+                } catch (const std::exception& e) {
+                    err = o.id + ": " + e.what();
+                }
                 std::vector<std::uint8_t>().swap(o.image.rgba);
                 o.list = {};
-                for (const auto& [file, content] : o.files)
+                if (before.valid()) before.wait();
+                if (*stop) return std::nullopt;
+                files.insert(files.end(), o.files.begin(), o.files.end());
+                for (const auto& [file, content] : files)
                     if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
                 if (!err.empty()) *stop = true;
                 return err;
             };
             const std::size_t encoders = encoders_for(sz.w, sz.h);
             // jobs, "wrote" lines
-            std::deque<std::pair<std::future<std::optional<std::string>>, std::string>> pending;
+            std::deque<std::pair<std::shared_future<std::optional<std::string>>, std::string>> pending;
             std::string first_error;
             auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
                 const std::optional<std::string> err = pending.front().first.get();
@@ -393,7 +404,9 @@ Command add_render_command(CLI::App& root) {
                     line += (ext == output.extensions().front() ? "" : ", .") + ext;
                 line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + "), its CSV and " + o.id +
                         ".json";
-                auto job = std::async(std::launch::async, write, std::move(o));
+                std::shared_future<std::optional<std::string>> before =
+                    pending.empty() ? std::shared_future<std::optional<std::string>>() : pending.back().first;
+                auto job = std::async(std::launch::async, write, std::move(o), std::move(before)).share();
                 pending.emplace_back(std::move(job), std::move(line));
             }
             while (!pending.empty()) finish_oldest();

@@ -156,24 +156,18 @@ void check_gl_limits(app::RenderSession& session, const OutputArgs& args) {
                          "; allowed: a smaller --scale");
 }
 
-std::string write_figure_files(const std::string& dir, const std::string& id, const OutputArgs& args,
-                               const gfx::Image& image, const gfx::DisplayList& list) {
-    const std::string base = dir + "/" + id;
-    std::string err;
-    try {
-        if (args.png) {
-            const std::vector<unsigned char> png = gfx::encode_png(image);
-            err = write_file_atomic(base + ".png",
-                                    std::string_view(reinterpret_cast<const char*>(png.data()), png.size()));
-        }
-        if (err.empty() && args.svg)
-            err = write_file_atomic(base + ".svg", gfx::render_vector(list, gfx::VectorFormat::Svg));
-        if (err.empty() && args.pdf)
-            err = write_file_atomic(base + ".pdf", gfx::render_vector(list, gfx::VectorFormat::Pdf));
-    } catch (const std::exception& e) {
-        err = id + ": " + e.what();
+std::vector<std::pair<std::string, std::string>> encode_figure_files(const std::string& id,
+                                                                     const OutputArgs& args,
+                                                                     const gfx::Image& image,
+                                                                     const gfx::DisplayList& list) {
+    std::vector<std::pair<std::string, std::string>> files;
+    if (args.png) {
+        const std::vector<unsigned char> png = gfx::encode_png(image);
+        files.emplace_back(id + ".png", std::string(reinterpret_cast<const char*>(png.data()), png.size()));
     }
-    return err;
+    if (args.svg) files.emplace_back(id + ".svg", gfx::render_vector(list, gfx::VectorFormat::Svg));
+    if (args.pdf) files.emplace_back(id + ".pdf", gfx::render_vector(list, gfx::VectorFormat::Pdf));
+    return files;
 }
 
 } // namespace fv::cli

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace fv::app {
@@ -53,9 +54,11 @@ void check_output_args(OutputArgs& args, int width, int height);
 // GL_MAX_VIEWPORT_DIMS, GL_MAX_TEXTURE_SIZE): UsageError when --size at --scale passes them.
 void check_gl_limits(app::RenderSession& session, const OutputArgs& args);
 
-// Writes DIR/ID.png (encoded from `image`), DIR/ID.svg and DIR/ID.pdf (from `list`) as asked, each through
-// write_file_atomic. Returns the first error, empty on success. Thread-safe.
-std::string write_figure_files(const std::string& dir, const std::string& id, const OutputArgs& args,
-                               const gfx::Image& image, const gfx::DisplayList& list);
+// ID.png (encoded from `image`), ID.svg and ID.pdf (from `list`) as asked, as (name, bytes), to be written
+// through write_file_atomic. Thread-safe; throws what the encoders throw.
+std::vector<std::pair<std::string, std::string>> encode_figure_files(const std::string& id,
+                                                                     const OutputArgs& args,
+                                                                     const gfx::Image& image,
+                                                                     const gfx::DisplayList& list);
 
 } // namespace fv::cli

@@ -128,7 +128,7 @@ TEST_CASE("CLI reliability: fit --data names a directory, and gives up on a FIFO
     CHECK_THAT(r.out, Catch::Contains("data          /dev/stdin (16 points"));
 }
 
-TEST_CASE("CLI reliability: numbers are decimal; what is refused says why", "[reliability]") {
+TEST_CASE("CLI reliability: numbers are decimal, what is refused says why", "[reliability]") {
     Scratch s;
     struct Case {
         std::string args, message;
@@ -136,8 +136,8 @@ TEST_CASE("CLI reliability: numbers are decimal; what is refused says why", "[re
     for (const Case& c : {
              Case{"--theta 0x10", "'0x10' is not a decimal number; allowed: a number in [0, 180]"},
              Case{"--theta 0x1p3", "'0x1p3' is not a decimal number"},
-             Case{"--rdisp 1e-400", "'1e-400' is out of range (beyond double precision)"},
-             Case{"--zeta 1e400", "'1e400' is out of range"},
+             Case{"--rdisp 1e-400", "--rdisp: 1e-400 is out of range (beyond double precision)"},
+             Case{"--zeta 1e400", "--zeta: 1e400 is out of range"},
          }) {
         std::string args = "ratio --zeta 0.3 --theta 45 --rdisp 2 --i 1 " + c.args;
         const Run r = run(s, args);

@@ -24,7 +24,7 @@ TEST_CASE("output path: a new file and a replaced file, whole, with no temporary
     CHECK(s.entries() == std::vector<std::string>{"a.csv"});
 }
 
-TEST_CASE("output path: a replaced file keeps its permission bits; a new one follows the umask",
+TEST_CASE("output path: a replaced file keeps its permission bits, a new one follows the umask",
           "[reliability]") {
     Scratch s;
     s.write("private.csv", "old\n");
@@ -58,7 +58,7 @@ TEST_CASE("output path: a symbolic link is followed, its target replaced, the li
     CHECK(s.entries() == std::vector<std::string>{"chain.csv", "link.csv", "sub", "target.csv"});
 }
 
-TEST_CASE("output path: a dangling link creates its target; a link loop is refused", "[reliability]") {
+TEST_CASE("output path: a dangling link creates its target, a link loop is refused", "[reliability]") {
     Scratch s;
     s.symlink("made.csv", "dangling.csv");
     REQUIRE(fv::write_file_atomic(s / "dangling.csv", "made\n").empty());
@@ -115,7 +115,7 @@ TEST_CASE("output path: a character device is written directly, never replaced",
     CHECK(after.st_rdev == before.st_rdev);
 }
 
-TEST_CASE("output path: a FIFO with a reader gets the data; without one it is an error, not a hang",
+TEST_CASE("output path: a FIFO with a reader gets the data, without one it is an error, not a hang",
           "[reliability]") {
     Scratch s;
     REQUIRE(::mkfifo((s / "fifo").c_str(), 0600) == 0);
