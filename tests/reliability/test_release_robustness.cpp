@@ -12,7 +12,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
+#include <functional>
 #include <sstream>
 #include <string>
 #include <sys/stat.h>
@@ -195,10 +197,11 @@ TEST_CASE("6. sweep: the grid's size is checked as a whole, rows stream, so memo
 
 namespace {
 
-// Starts `frictionviz ARGS` in the scratch directory with stdout into `stdout_path`, sends `sig` after
-// `after`, and returns the exit status (-1 if it did not exit).
+// Starts `frictionviz ARGS` in the scratch directory with stdout into `stdout_path`, sends `sig` once
+// `ready()` holds (polled every 20 ms for at most 120 s: a sanitizer build on a loaded machine is slow), and
+// returns the exit status (-1 if it did not exit).
 int interrupted(const Scratch& s, const std::vector<std::string>& args, const std::string& stdout_path,
-                int sig, std::chrono::milliseconds after) {
+                int sig, const std::function<bool()>& ready) {
     const pid_t pid = ::fork();
     if (pid == 0) {
         if (::chdir(s.dir().c_str()) != 0) ::_exit(126);
@@ -210,7 +213,7 @@ int interrupted(const Scratch& s, const std::vector<std::string>& args, const st
         ::execv(exe(), argv.data());
         ::_exit(127);
     }
-    std::this_thread::sleep_for(after);
+    for (int k = 0; k < 6000 && !ready(); ++k) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     ::kill(pid, sig);
     int status = 0;
     ::waitpid(pid, &status, 0);
@@ -225,7 +228,12 @@ const std::vector<std::string> kSlowSweep = {
 TEST_CASE("6. sweep interrupted on standard output leaves whole rows in grid order, exit 130",
           "[reliability][sweep][signals]") {
     Scratch s;
-    const int code = interrupted(s, kSlowSweep, s / "rows.csv", SIGINT, std::chrono::milliseconds(2500));
+    // Interrupted once the first block of rows is out (the header is 71 bytes, a row about 80).
+    const int code = interrupted(s, kSlowSweep, s / "rows.csv", SIGINT, [&] {
+        std::error_code ec;
+        const auto size = std::filesystem::file_size(s / "rows.csv", ec);
+        return !ec && size > 2000;
+    });
     CHECK(code == 130);
     std::ifstream in(s / "rows.csv");
     std::string line;
@@ -258,7 +266,12 @@ TEST_CASE("8. SIGINT or SIGTERM during a write: the temporary file goes, the tar
         s.write("target.csv", "the old result\n");
         std::vector<std::string> args = kSlowSweep;
         args.insert(args.end(), {"--out", "target.csv"});
-        const int code = interrupted(s, args, "/dev/null", sig, std::chrono::milliseconds(1500));
+        // Interrupted while the temporary file is there (it is from the start until the last row).
+        const int code = interrupted(s, args, "/dev/null", sig, [&] {
+            for (const std::string& name : s.entries())
+                if (name.rfind(".fv-tmp-", 0) == 0) return true;
+            return false;
+        });
         CHECK(code == 128 + sig);
         CHECK(slurp(s / "target.csv") == "the old result\n");
         CHECK(files(s) == std::vector<std::string>{"target.csv"}); // no .fv-tmp-* left
