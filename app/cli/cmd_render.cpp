@@ -387,8 +387,6 @@ Command add_render_command(CLI::App& root) {
                 for (const TableData& t : data.tables) {
                     names.push_back(data.id + t.suffix + ".csv");
                     o.files.push_back({names.back(), csv_of(t)});
-                    // table_suffixes should have named it: check it now if it did not.
-                    check_out(dir + "/" + names.back());
                 }
                 names.push_back(data.id + ".json");
                 const std::string w = check_figure(data, fit ? &*fit : nullptr);

@@ -10,20 +10,8 @@
 
 namespace fv::cli {
 
-Parsed parse_decimal(const std::string& s, double& out) {
-    switch (read_decimal(s, out)) {
-    case NumberVerdict::ok:
-        return Parsed::ok;
-    case NumberVerdict::beyond_double:
-        return Parsed::unrepresentable;
-    case NumberVerdict::not_decimal:
-        break;
-    }
-    return Parsed::not_decimal;
-}
-
 bool parse_finite(const std::string& s, double& out) {
-    return parse_decimal(s, out) == Parsed::ok;
+    return read_decimal(s, out) == NumberVerdict::ok;
 }
 
 namespace {

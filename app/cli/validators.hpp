@@ -15,11 +15,8 @@ using Range = ParamRange;
 using fv::describe;
 using fv::inside;
 
-// Parses a whole string as a decimal number ("-1.5e3"; not hex floats, inf, nan or blanks around it).
-// -0 is read as 0.
-enum class Parsed { ok, not_decimal, unrepresentable };
-Parsed parse_decimal(const std::string& s, double& out);
-// parse_decimal(s, out) == Parsed::ok.
+// The whole string read by the shared number reader (fv::read_decimal): true and `out` set when it is a
+// decimal number that a double holds ("-1.5e3"; not hex, inf, nan, blanks or 1e-400). -0 is read as 0.
 bool parse_finite(const std::string& s, double& out);
 
 // A finite number inside `r`, read by the shared reader (fv/read_number.hpp); the message quotes the value
