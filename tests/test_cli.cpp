@@ -135,9 +135,9 @@ TEST_CASE("CLI: a failed run writes nothing and clobbers nothing", "[cli]") {
 TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(
-        csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\ndahl,1,45,2,0.3,",
-                      0) == 0);
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                        "multiplier\ndahl,1,45,2,0.3,",
+                        0) == 0);
     CHECK(lines(csv.out) == 2);
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
@@ -160,7 +160,9 @@ TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
     REQUIRE(r.code == 0);
     CHECK(r.out.empty());
     const std::string csv = slurp(out);
-    CHECK(csv.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\n", 0) == 0);
+    CHECK(csv.rfind(
+              "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier\n",
+              0) == 0);
     CHECK(lines(csv) == 1 + 4 * 2 * 2 * 2);
     const Run j = run("sweep --model rigid --zeta 0:2:5 --theta 0,30 --format json");
     REQUIRE(j.code == 0);
@@ -636,7 +638,8 @@ TEST_CASE(
     // CSV: the extra columns are the physical values of the printed zeta and rdisp.
     const Run csv = run(std::string("ratio ") + units + " --theta 60 --i 1 --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,vb_m_s,zss_um\n",
+    CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                        "multiplier,vb_m_s,zss_um\n",
                         0) == 0);
     const auto rows = parse_csv(csv.out);
     REQUIRE(rows.size() == 1);
@@ -667,11 +670,15 @@ TEST_CASE("CLI units: --amplitude/--frequency with plain --zeta/--rdisp add the 
     // Amplitude alone: z_ss only.
     r = run(base + " --amplitude 0.5");
     REQUIRE(r.code == 0);
-    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,zss_um\n", 0) == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                      "multiplier,zss_um\n",
+                      0) == 0);
     // Frequency alone is accepted and changes nothing (it needs the amplitude to say anything).
     r = run(base + " --frequency 40");
     REQUIRE(r.code == 0);
-    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status\n", 0) == 0);
+    CHECK(r.out.rfind(
+              "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier\n",
+              0) == 0);
     // The rigid model has no z_ss: the column is there but empty (null in JSON).
     r = run("ratio --model rigid --zeta 0.5 --theta 0 --amplitude 0.5 --frequency 40 --format csv");
     REQUIRE(r.code == 0);
@@ -694,7 +701,7 @@ TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
     CHECK(csv.out.substr(0, csv.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status");
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
     const auto j = nlohmann::json::parse(js.out);
@@ -707,7 +714,7 @@ TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "
     const Run sw = run("sweep --zeta 0.1:0.5:3 --theta 90 --rdisp 2 --i 1");
     REQUIRE(sw.code == 0);
     CHECK(sw.out.substr(0, sw.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status");
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
 }
 
 TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the converted zeta range and rdisp list",
@@ -721,7 +728,8 @@ TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the convert
                       "," + exact(amp / 0.7) + common);
     REQUIRE(u.code == 0);
     REQUIRE(z.code == 0);
-    CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,vb_m_s,zss_um\n",
+    CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                      "multiplier,vb_m_s,zss_um\n",
                       0) == 0);
     const auto ru = parse_csv(u.out), rz = parse_csv(z.out);
     REQUIRE(ru.size() == 2 * 2 * 2 * 5);

@@ -56,6 +56,12 @@ void add_solver_options(CLI::App& cmd, SolverArgs& s) {
                    "ode scheme: the target for |r - r(dtau -> 0)| of r_x and r_y (default 1e-8; the (zeta, "
                    "theta) map uses 1e-6, so `--tolerance 1e-6` gives its cells)")
         ->transform(number_in(kToleranceRange));
+    cmd.add_option("--start", s.start,
+                   "the history, where two steady states coexist: rest (the paper's start: sliding and "
+                   "vibration begin together from an unstretched asperity) or sliding (vibration switched "
+                   "on during steady sliding: the asperity fully deflected against v_b)")
+        ->check(CLI::IsMember({"rest", "sliding"}))
+        ->capture_default_str();
 }
 
 SteadyOptions solver_options(const SolverArgs& s) {
@@ -65,6 +71,7 @@ SteadyOptions solver_options(const SolverArgs& s) {
     SteadyOptions o;
     o.scheme = s.scheme == "paper" || s.steps_per_period > 0 ? Scheme::paper : Scheme::ode;
     o.steps_per_period = s.steps_per_period;
+    parse_start(s.start, o.start);
     if (s.tolerance > 0) {
         if (o.scheme == Scheme::paper)
             throw UsageError("--tolerance belongs to --scheme ode; allowed: drop it, or use --scheme ode");

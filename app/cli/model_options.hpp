@@ -27,7 +27,8 @@ inline constexpr Range kToleranceRange{1e-12, 1e-4}; // --tolerance of the ode s
 struct SolverArgs {
     std::string scheme = "ode";
     int steps_per_period = 0;
-    double tolerance = 0; // --tolerance: the ode scheme's target; 0: the default (SteadyOptions)
+    double tolerance = 0;       // --tolerance: the ode scheme's target; 0: the default (SteadyOptions)
+    std::string start = "rest"; // --start: the history that decides between coexisting steady states
     CLI::Option* scheme_opt = nullptr;
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& s);

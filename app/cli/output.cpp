@@ -48,7 +48,14 @@ std::string reason_of(const SweepPoint& r) {
     char buf[200];
     switch (status_of(r)) {
     case SteadyStatus::converged:
+    case SteadyStatus::periodic:
         return "";
+    case SteadyStatus::not_periodic:
+        std::snprintf(buf, sizeof buf,
+                      "the motion does not repeat within %d periods: r_x, r_y are long-time means over %d "
+                      "periods, standard error %.2e",
+                      kMaxPeriodK, res.window, res.mean_standard_error);
+        return buf;
     case SteadyStatus::not_converged:
         std::snprintf(buf, sizeof buf, "steady state not verified after %d periods: %s; error estimate %.2e",
                       res.periods, res.detail.empty() ? "the search did not settle" : res.detail.c_str(),
@@ -68,20 +75,53 @@ std::string reason_of(const SweepPoint& r) {
     return "";
 }
 
+// The status as printed: "ok", "period_2", or the failure's word.
+std::string status_text(const SweepPoint& r) {
+    const SteadyStatus st = status_of(r);
+    return st == r.result.status ? status_word(r.result) : to_string(st);
+}
+
+// Largest |mu| of the reported state's Floquet multipliers, NaN where none were computed (rigid model,
+// the paper's scheme, limits in closed form).
+double largest_multiplier(const SweepPoint& r) {
+    return r.model == Model::dahl && r.result.have_multipliers ? r.result.largest_multiplier()
+                                                               : std::numeric_limits<double>::quiet_NaN();
+}
+
+nlohmann::json json_multipliers(const SteadyResult& res) {
+    if (!res.have_multipliers) return nullptr;
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& m : res.multipliers) a.push_back({jnum(m.real()), jnum(m.imag())});
+    return a;
+}
+
 nlohmann::json json_of(const SweepPoint& r, bool status_known = true) {
-    return {{"model", to_string(r.model)},
-            {"i", jnum(r.params.i)},
-            {"theta_deg", jnum(theta_deg(r.params))},
-            {"rdisp", jnum(r.params.rdisp)},
-            {"zeta", jnum(r.params.zeta)},
-            {"r_x", jnum(r.result.rx)},
-            {"r_y", jnum(r.result.ry)},
-            {"periods", r.result.periods},
-            {"error_estimate", jnum(r.result.error_estimate)},
-            {"status", status_known ? nlohmann::json(to_string(status_of(r))) : nlohmann::json(nullptr)},
-            {"scheme", r.model == Model::dahl ? to_string(r.result.scheme) : "quadrature"},
-            {"steps_per_period", r.result.steps_per_period},
-            {"extrapolated_levels", r.result.levels}};
+    nlohmann::json j = {{"model", to_string(r.model)},
+                        {"i", jnum(r.params.i)},
+                        {"theta_deg", jnum(theta_deg(r.params))},
+                        {"rdisp", jnum(r.params.rdisp)},
+                        {"zeta", jnum(r.params.zeta)},
+                        {"r_x", jnum(r.result.rx)},
+                        {"r_y", jnum(r.result.ry)},
+                        {"periods", r.result.periods},
+                        {"error_estimate", jnum(r.result.error_estimate)},
+                        {"status", status_known ? nlohmann::json(status_text(r)) : nlohmann::json(nullptr)},
+                        {"scheme", r.model == Model::dahl ? to_string(r.result.scheme) : "quadrature"},
+                        {"steps_per_period", r.result.steps_per_period},
+                        {"extrapolated_levels", r.result.levels}};
+    if (r.model != Model::dahl) return j;
+    // Which steady state: the history it belongs to, its period, its Floquet multipliers ([re, im], |mu|
+    // descending) and whether one is slow (|mu| >= 0.99: where the motion ends depends on its history).
+    j["start"] = to_string(r.result.start);
+    j["period_k"] = r.result.period_k;
+    j["multipliers"] = json_multipliers(r.result);
+    j["largest_multiplier"] = jnum(largest_multiplier(r));
+    j["slow"] = r.result.slow();
+    if (r.result.status == SteadyStatus::not_periodic) {
+        j["standard_error"] = jnum(r.result.mean_standard_error);
+        j["window_periods"] = r.result.window;
+    }
+    return j;
 }
 
 bool has_vb(const Vibration& v) {
@@ -103,7 +143,7 @@ double zss_of(const SweepPoint& r, const Vibration& v) {
 SteadyStatus status_of(const SweepPoint& r) {
     if (!ok(r.result.status)) return r.result.status;
     if (!std::isfinite(r.result.rx) || !std::isfinite(r.result.ry)) return SteadyStatus::non_finite;
-    return SteadyStatus::converged;
+    return r.result.status; // converged or periodic
 }
 
 Format parse_format(const std::string& s) {
@@ -114,7 +154,7 @@ Format parse_format(const std::string& s) {
 
 std::string RatioTableStream::head() const {
     if (f_ == Format::json) return total_ == 1 ? "" : "[\n";
-    return "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status" +
+    return "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier" +
            std::string(has_vb(v_) ? ",vb_m_s" : "") + (v_.amplitude_um ? ",zss_um" : "") + "\n";
 }
 
@@ -140,7 +180,8 @@ std::string RatioTableStream::rows(const std::vector<SweepPoint>& rows) {
         s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
              num(r.params.rdisp) + "," + num(r.params.zeta) + "," + ratio_num(r.result.rx) + "," +
              ratio_num(r.result.ry) + "," + std::to_string(r.result.periods) + "," +
-             num(r.result.error_estimate) + "," + (statuses_known_ ? to_string(status_of(r)) : "");
+             num(r.result.error_estimate) + "," + (statuses_known_ ? status_text(r) : "") + "," +
+             (r.model == Model::dahl ? to_string(r.result.start) : "") + "," + num(largest_multiplier(r));
         if (has_vb(v_)) s += "," + num(vb_of(r, v_));
         if (v_.amplitude_um) s += "," + num(zss_of(r, v_));
         s += "\n";
@@ -159,6 +200,42 @@ std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vib
     std::string s = t.head();
     s += t.rows(rows);
     return s + t.tail();
+}
+
+// Which steady state the numbers belong to, in words: the start, the period, the multipliers and what
+// a slow one means (docs/model.md, "Which steady state").
+std::string state_text(const SteadyResult& res) {
+    std::string s = "start         " + std::string(to_string(res.start)) +
+                    (res.start == Start::rest ? "   (sliding and vibration begin together, T = P)\n"
+                                              : "   (vibration switched on during steady sliding)\n");
+    if (res.status == SteadyStatus::periodic)
+        s += "period        the motion repeats every " + std::to_string(res.period_k) +
+             " periods of the vibration; r_x, r_y are its means over them\n";
+    if (res.status == SteadyStatus::not_periodic)
+        s += "window        means over " + std::to_string(res.window) + " periods, standard error " +
+             num(res.mean_standard_error) + "\n";
+    if (!res.have_multipliers) return s;
+    char buf[300];
+    const double m0 = std::abs(res.multipliers[0]), m1 = std::abs(res.multipliers[1]);
+    std::snprintf(buf, sizeof buf, "multipliers   |mu| = %.4g, %.4g (Floquet, of the %s map)\n", m0, m1,
+                  res.period_k == 1 ? "period" : "k-period");
+    s += buf;
+    if (res.slow()) {
+        if (m0 >= 1)
+            s +=
+                "              slow: |mu| = 1, a disturbance along it does not shrink exponentially (a state "
+                "on the circle with i > 1 is approached only algebraically from inside): where the motion "
+                "ends depends on its history\n";
+        else {
+            std::snprintf(
+                buf, sizeof buf,
+                "              slow: a disturbance halves only after %.0f periods: where the motion "
+                "ends depends on its history\n",
+                std::log(0.5) / std::log(m0));
+            s += buf;
+        }
+    }
+    return s;
 }
 
 std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
@@ -227,7 +304,8 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
     std::snprintf(buf, sizeof buf, "error est.    %.2e\n", res.error_estimate);
     s += buf;
     const SteadyStatus st = status_of(r);
-    s += std::string("status        ") + to_string(st) + (ok(st) ? "" : " (" + reason_of(r) + ")") + "\n";
+    s += std::string("status        ") + status_text(r) + (ok(st) ? "" : " (" + reason_of(r) + ")") + "\n";
+    if (r.model == Model::dahl) s += state_text(res);
     return s;
 }
 
@@ -300,8 +378,8 @@ void deliver(const std::string& content, const std::string& out) {
 }
 
 std::string describe_failure(const SweepPoint& r) {
-    std::string s = std::string(to_string(status_of(r))) + " at zeta=" + num(r.params.zeta) +
-                    " theta=" + num(theta_deg(r.params)) + " deg";
+    std::string s =
+        status_text(r) + " at zeta=" + num(r.params.zeta) + " theta=" + num(theta_deg(r.params)) + " deg";
     if (r.model == Model::dahl)
         s += " rdisp=" + num(r.params.rdisp) + " i=" + num(r.params.i);
     else

@@ -24,8 +24,31 @@ const char* to_string(SteadyStatus s) {
         return "non_finite";
     case SteadyStatus::unsettled:
         return "unsettled";
+    case SteadyStatus::periodic:
+        return "period_k";
+    case SteadyStatus::not_periodic:
+        return "not_periodic";
     }
     return "?";
+}
+
+std::string status_word(const SteadyResult& r) {
+    if (r.status == SteadyStatus::periodic) return "period_" + std::to_string(r.period_k);
+    return to_string(r.status);
+}
+
+const char* to_string(Start s) {
+    return s == Start::rest ? "rest" : "sliding";
+}
+
+bool parse_start(const std::string& text, Start& out) {
+    if (text == "rest")
+        out = Start::rest;
+    else if (text == "sliding")
+        out = Start::sliding;
+    else
+        return false;
+    return true;
 }
 
 int default_steps_per_period(const Params& p) {
@@ -130,7 +153,9 @@ SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt) {
     const int levels = auto_n ? 4 : 1;
 
     std::vector<LevelResult> lv;
-    Vec2 lag = opt.initial_lag;
+    // The history: from rest (T = P, or the lag asked for) or sliding (P - T = z_ss e_x).
+    Vec2 lag = opt.start == Start::sliding ? Vec2(1 / p.rdisp, 0) : opt.initial_lag;
+    res.start = opt.start;
     double steps_left = opt.max_steps;
     for (int l = 0; l < levels; ++l) {
         const int n = first_n << l;

@@ -238,7 +238,8 @@ TEST_CASE("6. sweep interrupted on standard output leaves whole rows in grid ord
     std::ifstream in(s / "rows.csv");
     std::string line;
     REQUIRE(std::getline(in, line));
-    CHECK(line == "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status");
+    CHECK(line ==
+          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
     int rows = 0;
     std::pair<double, double> last{-1, -1}; // (theta, zeta): the grid's order, zeta fastest
     const std::string all = slurp(s / "rows.csv");
@@ -248,7 +249,7 @@ TEST_CASE("6. sweep interrupted on standard output leaves whole rows in grid ord
         std::vector<std::string> f;
         std::istringstream fields(line);
         for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
-        REQUIRE(f.size() == 10);
+        REQUIRE(f.size() == 12);
         CHECK(f[9] == "ok");
         const std::pair<double, double> at{std::stod(f[2]), std::stod(f[4])};
         CHECK(at > last);

@@ -22,15 +22,21 @@
 
 namespace fv {
 
+// The ode scheme's default tolerance: an answer verified at it is also given at any looser tolerance.
+inline constexpr double kDefaultOdeTolerance = 1e-8;
+
 struct OdeOptions {
     // Target for |r - r(dtau -> 0)| in force units; the result's status is `converged` only when its error
     // estimate (steady-state distance + integration error, estimated separately) is within this.
-    double tolerance = 1e-8;
-    int max_periods = 400; // cap on integrated periods (stuck periods skipped analytically are free)
-    Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0) to start from (warm start); zero: start on the circle
-                                     // in the direction of P'(0); |lag| > z_ss is pulled back
+    double tolerance = kDefaultOdeTolerance;
+    int max_periods = 400; // cap on Newton's periods from one start (plain periods of the motion, and
+                           // stuck periods skipped analytically, are counted apart)
+    Vec2 initial_lag = Vec2::Zero(); // P(0) - T(0): a first guess for Newton's method (warm start; zero:
+                                     // none); |lag| > z_ss is pulled back. The start decides the state.
     bool record_period = false;      // fill SteadyResult::period with samples of the steady period
     int record_samples = 1024;       // samples at tau = 2 pi k / n, k = 1..n (like Eq. (30))
+    Start start = Start::rest;       // the history whose steady state is reported
+    bool list_states = true;         // search from the other start too and list every stable state found
 };
 
 // Instants where the lag's law changes.

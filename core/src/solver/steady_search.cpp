@@ -1,6 +1,7 @@
 // The periodic steady state: Newton's method on the period map (see ode_solver.hpp, docs/model.md).
 #include "closed_forms.hpp"
 #include "period_map.hpp"
+#include "reach.hpp"
 #include "search_starts.hpp"
 
 #include "fv/detail/parallel_for.hpp"
@@ -51,365 +52,136 @@ namespace {
 using solver::kTinyR;
 using solver::kTwoPi;
 using solver::LagModel;
-using solver::lens_solution;
-using solver::other_starts;
+using solver::Orbit;
 using solver::PeriodRequest;
-using solver::PeriodResult;
-using solver::Phase;
-using solver::prerolled_start;
-using solver::small_amplitude_solution;
+using solver::Reach;
+using solver::ReachSetup;
 
-Vec2 perp(const Vec2& e) {
-    return {-e.y(), e.x()};
+// A stable state of the listing from an orbit found from a start.
+SteadyState listed(const Orbit& o, double r) {
+    SteadyState st;
+    st.rx = o.rx;
+    st.ry = o.ry;
+    st.period = o.k;
+    st.multipliers[0] = o.mu[0];
+    st.multipliers[1] = o.mu[1];
+    st.error_estimate = o.error_estimate;
+    st.lag = o.l0 / r;
+    st.on_circle = o.on_circle;
+    return st;
 }
 
-Vec2 rotate(const Vec2& v, double a) {
-    const double c = std::cos(a), s = std::sin(a);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
+// Where Newton's method is tried first for a start, before the motion from it is followed: a warm start,
+// the start itself, then the nearby limit and the circle (settled, or along P'(0)) as ode_solve always
+// did (search_starts.hpp).
+std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Vec2& start,
+                              const PeriodRequest& rq) {
+    std::vector<Vec2> g;
+    auto add = [&](Vec2 l) {
+        if (!l.allFinite()) return;
+        if (l.norm() > 1) l /= l.norm();
+        if (std::none_of(g.begin(), g.end(), [&](const Vec2& x) { return (x - l).norm() < 1e-9; }))
+            g.push_back(l);
+    };
+    if (opt.initial_lag.squaredNorm() > 0 && opt.initial_lag.allFinite()) add(m.r * opt.initial_lag);
+    // A settled circle start is within a hair of the state where the tip slips all along (rdisp >~ 5),
+    // which most starts reach within a period there.
+    if (const auto pre = solver::prerolled_start(m, rq)) add(*pre);
+    add(start);
+    const std::vector<Vec2> others = solver::other_starts(m);
+    if (opt.start == Start::rest && !others.empty()) add(others.front()); // the limit (or the circle)
+    return g;
 }
 
-// A start (other than the last) is given up when the residual has not halved for this many periods.
-constexpr int kGiveUp = 12;
-
-// One search for the fixed point of the period map from the force l0 (see docs/model.md, "The periodic
-// steady state"). Gives up after `max_periods` integrated periods, and, when `give_up` > 0, as soon as the
-// residual |Phi(l) - l| has not halved for `give_up` periods in a row (this start leads nowhere: Newton
-// cycles between the laws, or creeps along a direction the map hardly changes).
-struct Search {
-    PeriodResult last; // the last period integrated, from last_l0
-    Vec2 last_l0{0, 0};
-    bool have_last = false;
-    bool converged = false;
-    bool gave_up = false;
-    double dist = std::numeric_limits<double>::infinity(); // estimated |l0 - l*| (force units)
-    const char* failure = "";
-    SteadyStatus status = SteadyStatus::converged; // integration_failed when a period could not be integrated
-    int periods = 0, newton_steps = 0, plain_steps = 0;
-    long periods_skipped = 0;
-    bool on_circle = false;
-};
-
-Search search_from(const Params& p, const LagModel& m, Vec2 l0, const PeriodRequest& rq, double aim,
-                   int max_periods, int give_up) {
+// The search as it has always run from rest: Newton's method from the warm start, a settled circle start,
+// the nearby limit and the other starts in turn (search_starts.hpp), each given up when it makes no
+// progress (the last only when the budget runs out); the first that converges, verified.
+Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods) {
+    const Params& p = *s.p;
+    const LagModel& m = *s.m;
     const double r = p.rdisp;
-    const double tol_newton = 0.1 * aim; // force units
-    // The means reported are those of a period started `dist` from the fixed point l*: to first order they
-    // are off by gain * dist (gain = |G| / 2 pi, G = int dl(tau)/dl(0) dtau from the variational equations:
-    // small where the flow forgets its start quickly, a stiff tip on the circle). So a search on the circle
-    // may stop once gain * dist is a small part of the aim (0.15 aim; the error estimate counts it twice),
-    // while dist^2 stays below 0.1 aim (the linearisation), but only where the period keeps to one law with
-    // a margin: on the circle all along, v = e . P' >= 0.05 (1 + zeta) at every step's points. A start dist
-    // away turns the force by at most dist (the circle's angle map contracts), so v moves by at most
-    // (1 + zeta) dist there: the period from l* keeps the same law. Without that margin the fixed point may
-    // lie across a law change (the true period leaves the circle: zeta = 0.933, theta = 13 deg, rdisp = 1,
-    // i = 1 was 6e-6 off with this rule everywhere), and the search goes on to tol_newton.
-    auto stop_at = [&](const PeriodResult& pr) {
-        const double gain = pr.G.norm() / kTwoPi;
-        const bool one_law = pr.start == Phase::circle && pr.end == Phase::circle && pr.events == 0 &&
-                             pr.v_min_circle >= 0.05 * (1 + p.zeta);
-        if (!one_law || !(gain > 0) || !std::isfinite(gain)) return tol_newton;
-        return std::max(tol_newton, std::min(std::sqrt(0.1 * aim), 0.15 * aim / gain));
-    };
-    Search out;
-    out.last_l0 = l0;
-    double best_residual = std::numeric_limits<double>::infinity();
-    int since_best = 0;
-    // Damped Newton in the plane (Deuflhard's natural monotonicity test): a trial point l_ref + lambda step
-    // is accepted when the correction it needs, measured with the reference point's inverse Jacobian, has
-    // shrunk; else lambda is halved. Near the fixed point the periods' integration noise limits what the
-    // corrections can show: when they stop shrinking, the search stops and its last correction is the
-    // distance it reports.
-    struct Ref {
-        bool valid = false;
-        Vec2 l{0, 0}, delta{0, 0}, l_end{0, 0}; // point, its Newton correction (x_v), Phi(point) (force)
-        Eigen::Matrix2d Jinv = Eigen::Matrix2d::Zero();
-    } ref;
-    double lambda = 1;
-    Vec2 prev_delta(0, 0);
-    bool have_prev_delta = false;
-    double best = std::numeric_limits<double>::infinity();
-    int stalled = 0;
-    int circle_retries = 0;
-    bool allow_snap = true;
-    bool creep_snapped = false;
-    // Circle starts whose period left the circle for the interior: a snap onto the circle from the plane must
-    // not go back to one of them (it would repeat the same two periods, the circle's and the plane's: seen
-    // at zeta = 0.0042, theta = 90 deg, rdisp = 1e4, i = 10).
-    std::vector<Vec2> circle_left;
-    auto left_before = [&](const Vec2& l) {
-        return std::any_of(circle_left.begin(), circle_left.end(),
-                           [&](const Vec2& c) { return (c - l).norm() <= 1e-9; });
-    };
-    double prev_corr = std::numeric_limits<double>::infinity();
-    auto stalled_at_noise = [&](double& corr) {
-        // Small corrections that stop shrinking (by 2x within 3 tries) are rounding and integration noise.
-        // Unless they shrink steadily (a slow linear rate q, which noise does not show): then the distance
-        // is corr / (1 - q), and with q near 1 the search is not done.
-        const double q = prev_corr > 0 ? corr / prev_corr : 1;
-        prev_corr = corr;
-        if (corr < 0.5 * best) {
-            best = corr;
-            stalled = 0;
-            return false;
-        }
-        if (!(corr <= 1e3 * aim && ++stalled >= 3)) return false;
-        if (q < 1) corr /= 1 - std::min(q, 0.999);
-        return true;
-    };
-
-    for (int iter = 0; iter < 100; ++iter) {
-        if (out.periods >= max_periods) {
-            out.failure = "period budget exhausted";
-            break;
-        }
-        Vec2 ls = l0;
-        const Phase start = solver::classify(m, 0, ls);
-        l0 = ls;
-        const PeriodResult pr = solver::run_lag(m, l0, 0, kTwoPi, rq);
-        ++out.periods;
-#ifdef FV_SOLVER_TRACE
-        std::fprintf(
-            stderr,
-            "iter %d start=%d end=%d l0=(%.12g,%.12g) |l0|=%.15g dL=(%.3e,%.3e) steps=%ld ev=%d lambda=%g\n",
-            iter, (int)start, (int)pr.end, l0.x(), l0.y(), l0.norm(), pr.dL.x(), pr.dL.y(), pr.steps,
-            pr.events, lambda);
-#endif
-        if (!pr.ok) {
-            out.failure = pr.failure;
-            out.status = SteadyStatus::integration_failed;
-            break;
-        }
-        out.last = pr;
-        out.last_l0 = l0;
-        out.have_last = true;
-        if (give_up > 0) {
-            const double residual = r * pr.dL.norm();
-            if (residual < 0.5 * best_residual) {
-                best_residual = residual;
-                since_best = 0;
-            } else if (++since_best >= give_up) {
-                out.gave_up = true;
-                out.failure = "no progress from this start";
-                break;
-            }
-        }
-        if (pr.dL.norm() <= 64 * std::numeric_limits<double>::epsilon() * (1 + kTwoPi * (1 + p.zeta))) {
-            // Back where it started, to the rounding of a period's displacements (e.g. zeta = 0 with i = 0:
-            // the tip reaches the circle just at the period's end), whatever the law at the section. The
-            // distance is that residual through F' (pseudo-inverse): where F' is nearly singular too (a
-            // degenerate fixed point, i > 1 next to the circle) this is no evidence, and the search goes on.
-            const Eigen::JacobiSVD<Eigen::Matrix2d> svd(pr.E);
-            const double smin = svd.singularValues()[1], smax = svd.singularValues()[0];
-            const double d = smax > 0 && smin > 1e-9 * smax ? r * pr.dL.norm() / smin : r * pr.dL.norm();
-            if (smax == 0 || smin > 1e-9 * smax || d <= tol_newton) {
-                out.converged = true;
-                out.dist = d;
-                break;
-            }
-        }
-
-        if (p.i == 0 && !pr.visited_circle) {
-            // Stuck for the whole period: the map is a translation by 2 pi zeta e_x (DPhi = I, no Newton).
-            // Skip to the first slip in closed form, then to the end of that period.
-            const auto ts = solver::stick_slip_time(m, 0, l0, std::numeric_limits<double>::max());
-            if (!ts) { // zeta = 0 and no slip: every start is periodic (handled above for r <= 1)
-                out.converged = true;
-                out.dist = 0;
-                break;
-            }
-            const double k = std::floor(*ts / kTwoPi);
-            out.periods_skipped += static_cast<long>(k);
-            const Vec2 ls2 = l0 + r * m.dispP(0, *ts);
-            const PeriodRequest plain{rq.atol, rq.atol_force, false};
-            const PeriodResult rest = solver::run_lag(m, ls2, *ts - k * kTwoPi, kTwoPi, plain);
-            if (!rest.ok) {
-                out.failure = rest.failure;
-                out.status = SteadyStatus::integration_failed;
-                break;
-            }
-            l0 = rest.l_end;
-            ++out.plain_steps;
-            ref.valid = false;
-            continue;
-        }
-
-        if (start == Phase::circle) {
-            // A period that leaves the circle only briefly ends just inside (for i >= 1 the state never
-            // gets back exactly): the steady state may still be on the circle at an angle where v never
-            // turns negative. Newton on the angle first (a few times), the plane after.
-            const bool near_circle = p.i > 0 && circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3;
-            if (pr.end != Phase::circle && near_circle) ++circle_retries;
-            if (pr.end != Phase::circle && !near_circle) {
-                // The period leaves the circle and ends inside: the steady state does not start on the
-                // circle. Continue in the plane from where this period ended.
-                circle_left.push_back(l0);
-                l0 = pr.l_end;
-                ++out.plain_steps;
-                ref.valid = false;
-                continue;
-            }
-            // Residual and derivative in the arc a = angle / r (x_v units): a well-conditioned scalar
-            // equation for every r. The circle map contracts (DPhi = exp(-int v) <= 1 on the circle), so
-            // plain Newton steps are safe; the largest is capped at a radian.
-            const Vec2 d = r * pr.dL; // l_end - l0
-            const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
-            const double arc = dphi / r;
-            const Vec2 le = pr.l_end / pr.l_end.norm();
-            const double J =
-                perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
-            // |J| ~ 0: the angle does not contract over this period (v ~ 0 all along): a plain step, which
-            // says nothing about the distance to the fixed point.
-            const bool flat = !(std::abs(J) > 1e-12);
-            double da = flat ? -arc : -arc / J;
-            if (!std::isfinite(da)) da = -arc;
-            double step = r * da; // radians = force units
-            if (std::abs(step) > 1) step = std::copysign(1.0, step);
-            ++out.newton_steps;
-            out.dist = flat ? std::numeric_limits<double>::infinity() : std::abs(step);
-            if ((out.dist <= tol_newton || stalled_at_noise(out.dist)) && pr.end != Phase::circle) {
-                // The best angle still leaves the circle: the steady state is inside, next to it.
-                l0 = pr.l_end;
-                circle_retries = 8;
-                allow_snap = false;
-                ++out.plain_steps;
-                ref.valid = false;
-                best = std::numeric_limits<double>::infinity();
-                continue;
-            }
-            if (out.dist <= stop_at(pr) || stalled_at_noise(out.dist)) {
-                out.converged = true; // at the noise floor: the error estimate below decides
-                out.on_circle = true;
-                break;
-            }
-            l0 = rotate(l0, step);
-            ref.valid = false;
-            continue;
-        }
-
-        // A whole period inside with v > 0 throughout (no law change, s = +1): rho grows all along
-        // (drho/dtau = r v (1 - rho)^i), so there is no fixed point inside; for i > 1 it creeps towards the
-        // circle so slowly that the integrated map may show a fixed point that is not there. The steady state
-        // is on the circle: search on the angle from where this period ended.
-        // Once: should that circle period leave the circle, the steady state is elsewhere after all.
-        if (allow_snap && !creep_snapped && p.i > 1 && start == Phase::interior && pr.events == 0 &&
-            l0.dot(m.dP(0)) > 0 && pr.l_end.norm() > 0 && !left_before(Vec2(pr.l_end / pr.l_end.norm()))) {
-            creep_snapped = true;
-            l0 = pr.l_end / pr.l_end.norm();
-            ref.valid = false;
-            ++out.plain_steps;
-            continue;
-        }
-        // In the plane: Newton on F(L0) = L(2 pi) - L0 (x_v units) with F' = DPhi - I = E.
-        const Vec2 F = pr.dL;
-        const Eigen::Matrix2d& J = pr.E;
-        const double det = J.determinant();
-        const double scale = J.cwiseAbs().maxCoeff();
-        const bool singular = !(std::abs(det) > 1e-13 * scale * scale) || !std::isfinite(det);
-        if (ref.valid) {
-            // Natural monotonicity test of the trial point against the reference point.
-            const Vec2 simplified = -ref.Jinv * F;
-            if (!(simplified.norm() <= (1 - lambda / 4) * ref.delta.norm())) {
-                lambda *= 0.5;
-                if (lambda < 1.0 / 64) {
-                    // Newton makes no headway from here: a plain period instead (always admissible).
-                    l0 = ref.l_end;
-                    ref.valid = false;
-                    lambda = 1;
-                    ++out.plain_steps;
-                } else {
-                    l0 = ref.l + lambda * r * ref.delta;
-                    if (l0.norm() > 1) l0 /= l0.norm();
-                }
-                continue;
-            }
-            lambda = std::min(1.0, 2 * lambda);
-        }
-        // A rank-deficient F' (the period passes the circle twice and forgets both directions, or the tip
-        // is stuck: F' = 0) gets the pseudo-inverse for its range and a plain step for the rest.
-        Eigen::Matrix2d Jinv;
-        if (singular) {
-            const Eigen::JacobiSVD<Eigen::Matrix2d> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-            const Vec2 sv = svd.singularValues();
-            Eigen::Matrix2d Sinv = Eigen::Matrix2d::Zero();
-            for (int k = 0; k < 2; ++k)
-                if (sv[k] > 1e-9 * std::max(sv[0], 1e-300)) Sinv(k, k) = 1 / sv[k];
-            Jinv = svd.matrixV() * Sinv * svd.matrixU().transpose();
-            ++out.plain_steps;
-        } else {
-            Jinv = J.inverse();
-            ++out.newton_steps;
-        }
-        Vec2 delta = -Jinv * F;
-        if (singular) delta += F + J * delta; // the part of F that F' cannot see: a plain step
-        // A Newton step that converges only linearly (a degenerate fixed point, e.g. i > 1 next to the
-        // circle) is accelerated by Aitken's rule: successive steps in one direction, shrinking by q, sum to
-        // step / (1 - q); the distance to the fixed point is the same sum.
-        double q = 0;
-        if (have_prev_delta && prev_delta.norm() > 0 && lambda == 1) {
-            q = delta.norm() / prev_delta.norm();
-            const bool aligned = delta.dot(prev_delta) > 0.9 * delta.norm() * prev_delta.norm();
-            if (!(aligned && q > 0.2 && q < 0.98)) q = 0;
-        }
-        prev_delta = delta;
-        have_prev_delta = true;
-        out.dist = r * delta.norm() / (1 - q);
-        if (out.dist <= tol_newton || stalled_at_noise(out.dist)) {
-            out.converged = true; // at the noise floor: the error estimate below decides
-            break;
-        }
-        ref.valid = true;
-        ref.l = l0;
-        ref.delta = q > 0 ? Vec2(delta / (1 - q)) : delta;
-        ref.l_end = pr.l_end;
-        ref.Jinv = Jinv;
-        Vec2 dl = lambda * r * ref.delta;
-        const double n = dl.norm();
-        if (n > 1) dl /= n;
-        // A step out of the disc is cut to go at most halfway to the circle: projecting onto the circle
-        // would start the next period in another law (the circle's), and near a fixed point just inside
-        // the circle (i > 1) the iteration would cycle between the two.
-        // For i = 0 a full step out of the disc where the tip would slip at tau = 0 says that the steady
-        // period starts on the circle (its law at the section is the circle's, the plane's Newton could only
-        // creep towards it): search on the circle's angle from there. Should the best angle leave the
-        // circle, the search comes back to the plane with snapping off.
-        if (allow_snap && p.i == 0 && (l0 + dl).norm() >= 1) {
-            const Vec2 lc = (l0 + dl).normalized();
-            if (lc.dot(m.dP(0)) > 0) {
-                l0 = lc;
-                ref.valid = false;
-                continue;
-            }
-        }
-        const double R = 1 - 0.5 * (1 - std::min(1.0, l0.norm()));
-        if ((l0 + dl).norm() > R && dl.squaredNorm() > 0) {
-            const double a = dl.squaredNorm(), b = 2 * l0.dot(dl), c = l0.squaredNorm() - R * R;
-            const double t = (-b + std::sqrt(std::max(0.0, b * b - 4 * a * c))) / (2 * a);
-            dl *= std::clamp(t, 0.0, 1.0);
-        }
-        l0 = l0 + dl;
-        if (l0.norm() > 1) l0 /= l0.norm();
-        // Within 1e-6 of the circle and slipping outwards (i > 0): the steady state is on the circle or
-        // the approach to it is too flat for the plane's Newton (exponential for i = 1, algebraic for
-        // i > 1, with the pinning switching laws in between): search on the circle's angle instead.
-        if (allow_snap && p.i > 0 && l0.norm() > 1 - 1e-6 && l0.dot(m.dP(0)) > 0 &&
-            !left_before(Vec2(l0 / l0.norm()))) {
-            l0 /= l0.norm();
-            ref.valid = false;
-        }
+    std::vector<Vec2> starts;
+    if (opt.initial_lag.squaredNorm() > 0 && opt.initial_lag.allFinite()) {
+        Vec2 l = r * opt.initial_lag;
+        if (l.norm() > 1) l /= l.norm();
+        if (l.allFinite()) starts.push_back(l);
     }
-    return out;
+    if (const auto pre = solver::prerolled_start(m, s.rq)) starts.push_back(*pre);
+    for (const Vec2& l : solver::other_starts(m))
+        if (std::none_of(starts.begin(), starts.end(), [&](const Vec2& x) { return (x - l).norm() < 1e-9; }))
+            starts.push_back(l);
+    solver::Search best;
+    for (std::size_t k = 0; k < starts.size(); ++k) {
+        const bool final_try = k + 1 == starts.size();
+        const solver::Search sr = solver::search_from(p, m, starts[k], s.rq, s.aim, opt.max_periods - periods,
+                                                      final_try ? 0 : solver::kGiveUp);
+        periods += sr.periods;
+        const bool better = !best.have_last || (sr.have_last && (sr.converged || sr.dist < best.dist));
+        if (k == 0 || better) best = sr;
+        if (sr.converged || sr.status != SteadyStatus::converged || periods >= opt.max_periods) break;
+    }
+    Orbit o;
+    if (!best.have_last) {
+        o.status = SteadyStatus::integration_failed;
+        o.rx = o.ry = std::numeric_limits<double>::quiet_NaN();
+        o.failure = best.failure;
+        return o;
+    }
+    const solver::Verified v = solver::verify_fixed_point(p, m, best, s.rq, s.aim, s.tol, s.record,
+                                                          s.record_samples, opt.max_periods - periods);
+    periods += v.periods;
+    o = solver::orbit_of(s, v);
+    if (v.converged && v.unstable && best.status == SteadyStatus::converged) {
+        o.status = SteadyStatus::unsettled;
+        o.failure = "the periodic state found is unstable: the motion does not settle";
+    }
+    if (v.converged) {
+        solver::period1_multipliers(s, v.last, v.l0, o.mu);
+        o.have_mu = true;
+    }
+    return o;
 }
 
-} // namespace
+Vec2 start_force(Start s) {
+    return s == Start::sliding ? Vec2(1, 0) : Vec2(0, 0);
+}
 
-OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
-    const std::string msg = validate(p);
-    if (!msg.empty()) throw std::invalid_argument(msg);
-    if (!(opt.tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
+void fill_result(OdeSolution& sol, const Orbit& o, const Params& p, int periods) {
+    SteadyResult& res = sol.result;
+    res.scheme = Scheme::ode;
+    res.levels = 1;
+    res.status = o.status;
+    res.rx = o.rx;
+    res.ry = o.ry;
+    res.error_estimate = o.error_estimate;
+    res.steady_error = o.steady_error;
+    res.periods = res.total_periods = periods;
+    res.steps_per_period = o.steps_per_period;
+    res.period_k = o.k;
+    res.multipliers[0] = o.mu[0];
+    res.multipliers[1] = o.mu[1];
+    res.have_multipliers = o.have_mu;
+    res.mean_standard_error = o.standard_error;
+    res.window = o.window;
+    res.period = o.samples;
+    sol.events = o.events;
+    sol.newton_steps = res.newton_steps = o.newton_steps;
+    sol.plain_steps = res.plain_steps = o.plain_steps;
+    sol.periods_skipped = res.periods_skipped = o.periods_skipped;
+    sol.events_per_period = res.events_per_period = o.events_per_period;
+    sol.on_circle = res.on_circle = o.on_circle;
+    sol.integration_error = o.integration_error;
+    sol.lag = o.l0 / p.rdisp;
+    res.lag = sol.lag;
+    sol.failure = o.failure;
+    res.detail = o.failure;
+}
+
+OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     const LagModel m(p);
     const double r = p.rdisp;
-    if (p.zeta == 0 && p.i == 0 && r <= 1) return lens_solution(p, m, opt);
-    if (r < kTinyR) return small_amplitude_solution(p, m, opt);
+    if (p.zeta == 0 && p.i == 0 && r <= 1) return solver::lens_solution(p, m, opt);
+    if (r < kTinyR) return solver::small_amplitude_solution(p, m, opt);
 
     // The solver aims at 0.3 tol and accepts its result when the error estimate is within tol.
     const double tol = opt.tolerance;
@@ -418,7 +190,7 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     // fixed-point equation L(2 pi) - L(0) = 0 needs the displacements themselves. Radau IIA's error estimate
     // is of lower order than the method: measured over whole periods, a local tolerance a gives mean-force
     // errors ~1e-3 a and end-state errors ~1e-2 a, so (like RADAU5, which uses 0.1 tol^(2/3)) the local
-    // tolerance is looser than the target; the separate estimate below checks the outcome.
+    // tolerance is looser than the target; the separate estimate in verify_state.cpp checks the outcome.
     PeriodRequest rq;
     rq.atol = 0.1 * std::pow(aim, 2.0 / 3.0) / std::max(1.0, r);
     // The quadrature's local tolerance per unit time (it sets the step size): the period mean's error is
@@ -428,174 +200,67 @@ OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
     rq.atol_force = aim;
     rq.sensitivity = true;
 
-    // Starts, in order: the warm start (if any), the nearby limit (start_force), then the others, each
-    // given up when it makes no progress (the last one only when the budget runs out). The first search
-    // that converges is the result; if none does, the one that got closest.
-    std::vector<Vec2> starts;
-    if (opt.initial_lag.squaredNorm() > 0 && opt.initial_lag.allFinite()) {
-        Vec2 l = r * opt.initial_lag;
-        if (l.norm() > 1) l /= l.norm();
-        if (l.allFinite()) starts.push_back(l);
-    }
-    if (const auto pre = prerolled_start(m, rq)) starts.push_back(*pre);
-    for (const Vec2& l : other_starts(m))
-        if (std::none_of(starts.begin(), starts.end(), [&](const Vec2& s) { return (s - l).norm() < 1e-9; }))
-            starts.push_back(l);
-    Search best;
-    int periods = 0;
-    for (std::size_t k = 0; k < starts.size(); ++k) {
-        const bool final_try = k + 1 == starts.size();
-        Search s = search_from(p, m, starts[k], rq, aim, opt.max_periods - periods, final_try ? 0 : kGiveUp);
-        periods += s.periods;
-        const bool better = !best.have_last || (s.have_last && (s.converged || s.dist < best.dist));
-        if (k == 0 || better) best = s;
-        if (s.converged || s.status != SteadyStatus::converged || periods >= opt.max_periods) break;
-    }
+    ReachSetup setup;
+    setup.p = &p;
+    setup.m = &m;
+    setup.rq = rq;
+    setup.aim = aim;
+    setup.tol = tol;
+    setup.record = opt.record_period;
+    setup.record_samples = opt.record_samples;
+    setup.max_search_periods = opt.max_periods;
+
+    // From rest (the default): Newton's method from the starts that lead to the steady state fastest
+    // (search_starts.hpp); where that gives no verified state (an unstable or unsettled fixed point, a slow
+    // creep), the motion from rest is followed (period-k states, motion that does not repeat).
+    // From sliding: the state the motion from the start reaches, with the evidence for it (reach.hpp).
     OdeSolution sol;
     SteadyResult& res = sol.result;
-    res.scheme = Scheme::ode;
-    res.levels = 1;
-    if (!best.have_last) {
-        res.status = SteadyStatus::integration_failed;
-        res.rx = res.ry = std::numeric_limits<double>::quiet_NaN();
-        sol.failure = best.failure;
-        return sol;
+    int periods = 0;
+    Orbit state;
+    if (opt.start == Start::rest) {
+        state = default_search(setup, opt, periods);
+        if (!ok(state.status) && state.status != SteadyStatus::integration_failed) {
+            const Reach from_rest = solver::reach_from(setup, Vec2(0, 0), {});
+            periods += from_rest.periods;
+            if (ok(from_rest.state.status) || from_rest.state.status == SteadyStatus::not_periodic)
+                state = from_rest.state;
+        }
+    } else {
+        const Vec2 l_start = start_force(opt.start);
+        Reach reach = solver::reach_from(setup, l_start, guesses_for(m, opt, l_start, rq));
+        periods += reach.periods;
+        state = std::move(reach.state);
     }
+    fill_result(sol, state, p, periods);
+    res.start = opt.start;
+    if (ok(state.status)) {
+        SteadyState listedst = listed(state, r);
+        (opt.start == Start::rest ? listedst.from_rest : listedst.from_sliding) = state.reached;
+        res.states.push_back(listedst);
+    }
+    return sol;
+}
 
-    // Verification: the final period again at another tolerance, from the same start. Where no period is
-    // recorded (ratio, sweep, the map) the second run is 4x looser and the search's own last period is
-    // reported: the check costs ~0.8 of a period instead of ~1.26 (Radau IIA's steps go as tol^(-1/6)).
-    // Where the period is recorded for a figure the second run is 4x tighter and is the one reported (its
-    // samples are the figure's). Either way the two runs' difference d measures the reported run's error
-    // with the same margin: with errors e(4a) = k e(a), d / e(reported) = k - 1 for both choices (~3 where
-    // the error follows the tolerance linearly). Parts of the error estimate:
-    //   integration: the means' difference between the two runs;
-    //   map_shift: the search found the fixed point of the period map as integrated at the search's
-    //     tolerance, whose end state is off by e(a), taken as d_end: 4/3 of the runs' difference where the
-    //     tighter run is reported ((4/3)(1 - 1/k) e(a)), half of it where the looser one checks
-    //     ((k - 1)/2 e(a): at least the former for k >= 3; k = 4 where the error follows the tolerance
-    //     linearly). The fixed point moves by that through (DPhi - I)^-1: large where the map is nearly
-    //     neutral (i > 1 creeping towards the circle, where the integration error may outweigh the drift and
-    //     make a fixed point that is not there);
-    //   steady: the reported means start dist + map_shift away from l*. To first order that moves them by
-    //     G/(2 pi) times the offset (G = int dl/dl0 dtau over the period, from the variational equations):
-    //     small where the flow forgets its start quickly. Twice that for safety; beyond the linear regime,
-    //     twice the offset (the flow does not expand differences of the force);
-    //   pinning onto the circle drops the radial remainder: kPin by construction (i > 0), more only where
-    //     an event had to be taken a hair early or late (the tip grazing the circle just as v turns).
-    // When the estimate misses the tolerance only because the integrated map is not accurate enough, the
-    // search goes on once from where it stopped at a 4x tighter tolerance and is verified again.
-    PeriodResult last;
-    Vec2 last_l0{0, 0};
-    bool converged = false;
-    const char* failure = "";
-    double map_shift = 0, pin = 0;
-    bool unstable = false;
-    for (int round = 0;; ++round) {
-        last = best.last;
-        last_l0 = best.last_l0;
-        converged = best.converged;
-        failure = best.failure;
-        map_shift = 0;
-        const bool check_looser = !opt.record_period;
-        const double factor = check_looser ? 4.0 : 0.25;
-        PeriodRequest check{factor * rq.atol, factor * rq.atol_force, false};
-        sol.events.clear();
-        res.period.clear();
-        if (opt.record_period) { // the reported period is this run: its samples and events are the figure's
-            check.events = &sol.events;
-            check.samples = &res.period;
-            check.n_samples = std::max(1, opt.record_samples);
-            check.params = &p;
-            res.period.reserve(static_cast<std::size_t>(check.n_samples));
-        }
-        // A periodic state that nearby motions leave (a Floquet multiplier of the period map beyond 1) is a
-        // solution of the fixed-point equation but not what the body settles into: there the motion does
-        // not settle at all (seen at zeta = 0.075, theta = 30 deg, rdisp = 100, i = 10). Not a result,
-        // however accurately it is found: neither verified (unless its period is recorded for a figure)
-        // nor refined; its error estimate then covers the search's distance alone.
-        unstable = converged &&
-                   (Eigen::Matrix2d::Identity() + last.E).eigenvalues().cwiseAbs().maxCoeff() > 1 + 1e-6;
-        const bool verify = !unstable || opt.record_period;
-        PeriodResult ti;
-        if (verify) {
-            ti = solver::run_lag(m, last_l0, 0, kTwoPi, check);
-            ++periods;
-        }
-        // The reported run's own pinning (a looser check run's larger drop shows in the runs' difference).
-        const double pin_drop = check_looser ? last.pin_drop : std::max(last.pin_drop, ti.pin_drop);
-        if (!verify) {
-            sol.integration_error = 0;
-        } else if (ti.ok) {
-            sol.integration_error = (ti.force_integral - last.force_integral).cwiseAbs().maxCoeff() / kTwoPi;
-            const Vec2 d_end = (check_looser ? 0.5 : 4.0 / 3.0) * (ti.dL - last.dL);
-            if (converged && d_end.squaredNorm() > 0) {
-                const Eigen::JacobiSVD<Eigen::Matrix2d> svd(last.E,
-                                                            Eigen::ComputeFullU | Eigen::ComputeFullV);
-                const Vec2 sv = svd.singularValues();
-                const Vec2 c = svd.matrixU().transpose() * d_end;
-                double shift = 0;
-                for (int k = 0; k < 2; ++k)
-                    shift += c[k] == 0 ? 0 : c[k] * c[k] / std::max(sv[k] * sv[k], 1e-300);
-                map_shift = r * std::sqrt(shift);
-            }
-            if (!check_looser) {
-                last.force_integral = ti.force_integral;
-                last.steps = ti.steps;
-            }
-        } else {
-            sol.integration_error = std::numeric_limits<double>::infinity();
-            if (!*failure) failure = ti.failure;
-        }
-        const double offset = best.dist + map_shift;
-        const double gain = last.G.norm() / kTwoPi;
-        res.steady_error = 2 * offset * (offset <= 1e-3 && std::isfinite(gain) ? gain : std::max(1.0, gain));
-        pin = std::max(p.i > 0 && last.visited_circle ? solver::kPin : 0, pin_drop);
-        res.error_estimate = res.steady_error + sol.integration_error + pin + 1e-14;
-        const double from_map = 2 * map_shift * (offset <= 1e-3 ? gain : 1.0) + sol.integration_error;
-        const bool refine = round == 0 && converged && ti.ok && !unstable && !(res.error_estimate <= tol) &&
-                            from_map > 0.5 * res.error_estimate && periods < opt.max_periods;
-        if (!refine) break;
-        rq.atol *= 0.25;
-        rq.atol_force *= 0.25;
-        Search s = search_from(p, m, last_l0, rq, aim, opt.max_periods - periods, 0);
-        periods += s.periods;
-        if (!s.converged || s.status != SteadyStatus::converged) break; // keep the verified first result
-        s.newton_steps += best.newton_steps;
-        s.plain_steps += best.plain_steps;
-        s.periods_skipped += best.periods_skipped;
-        best = s;
-    }
-    res.status = best.status;
-    sol.newton_steps = best.newton_steps;
-    sol.plain_steps = best.plain_steps;
-    sol.periods_skipped = best.periods_skipped;
-    sol.on_circle = best.on_circle;
-    res.rx = last.force_integral.x() / kTwoPi;
-    res.ry = last.force_integral.y() / kTwoPi;
-    res.steps_per_period = static_cast<int>(last.steps);
-    sol.events_per_period = last.events;
-    sol.lag = last_l0 / r;
-    res.periods = res.total_periods = periods;
-    if (res.status == SteadyStatus::converged) {
-        if (!converged) {
-            res.status = SteadyStatus::not_converged;
-        } else if (unstable) {
-            res.status = SteadyStatus::unsettled;
-            failure = "the periodic state found is unstable: the motion does not settle";
-        } else if (!(res.error_estimate <= tol)) {
-            res.status = SteadyStatus::not_converged, failure = "error estimate above tolerance";
+} // namespace
+
+OdeSolution ode_solve(const Params& p, const OdeOptions& opt) {
+    const std::string msg = validate(p);
+    if (!msg.empty()) throw std::invalid_argument(msg);
+    if (!(opt.tolerance > 0)) throw std::invalid_argument("tolerance must be > 0");
+    OdeSolution sol = solve_start(p, opt);
+    // A looser tolerance never turns a verified answer into a failure: where the search at the looser
+    // settings does not settle, the default tolerance's answer (its error estimate within it) is given.
+    if (!ok(sol.result.status) && opt.tolerance > kDefaultOdeTolerance) {
+        OdeOptions tight = opt;
+        tight.tolerance = kDefaultOdeTolerance;
+        OdeSolution again = solve_start(p, tight);
+        if (ok(again.result.status)) {
+            again.result.periods += sol.result.periods;
+            again.result.total_periods = again.result.periods;
+            return again;
         }
     }
-    if (!std::isfinite(res.rx) || !std::isfinite(res.ry)) res.status = SteadyStatus::non_finite;
-    sol.failure = failure;
-    res.newton_steps = sol.newton_steps;
-    res.plain_steps = sol.plain_steps;
-    res.periods_skipped = sol.periods_skipped;
-    res.events_per_period = sol.events_per_period;
-    res.on_circle = sol.on_circle;
-    res.detail = failure;
-    res.lag = sol.lag;
     return sol;
 }
 
@@ -604,6 +269,8 @@ OdeOptions ode_options(const SteadyOptions& opt) {
     o.tolerance = opt.ode_tolerance;
     o.initial_lag = opt.initial_lag;
     o.record_period = opt.record_period;
+    o.start = opt.start;
+    o.list_states = opt.list_states;
     return o;
 }
 

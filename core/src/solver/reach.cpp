@@ -1,0 +1,601 @@
+// Which periodic state the motion from a start settles into (see reach.hpp, docs/model.md).
+#include "reach.hpp"
+
+#include "closed_forms.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace fv::solver {
+namespace {
+
+using cd = std::complex<double>;
+
+void sort_desc(cd mu[2]) {
+    if (std::abs(mu[1]) > std::abs(mu[0])) std::swap(mu[0], mu[1]);
+}
+
+void eigen_multipliers(const Eigen::Matrix2d& M, cd mu[2]) {
+    const Eigen::EigenSolver<Eigen::Matrix2d> es(M, false);
+    mu[0] = es.eigenvalues()[0];
+    mu[1] = es.eigenvalues()[1];
+    sort_desc(mu);
+}
+
+// The map as the search integrates it (the same state and quadrature control, which both set the steps),
+// without the sensitivity: a point of the motion and the fixed point are then points of the same map.
+PeriodRequest state_only(const ReachSetup& s) {
+    return PeriodRequest{s.rq.atol, s.rq.atol_force, false};
+}
+
+// One period of the motion from l (force units). For i = 0 a whole stuck period is a translation: the
+// motion is skipped to its first slip in closed form and that period finished (a later section of the
+// same motion). `pr` gets the last period integrated.
+bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult* last = nullptr) {
+    const LagModel& m = *s.m;
+    PeriodResult pr = run_lag(m, l, 0, kTwoPi, rq);
+    if (!pr.ok) return false;
+    if (m.i == 0 && !pr.visited_circle) {
+        Vec2 l0 = l;
+        classify(m, 0, l0);
+        const auto ts = stick_slip_time(m, 0, l0, std::numeric_limits<double>::max());
+        if (!ts) { // zeta = 0 and no slip: every state is periodic
+            if (last) *last = pr;
+            l = pr.l_end;
+            return true;
+        }
+        const double k = std::floor(*ts / kTwoPi);
+        pr = run_lag(m, l0 + m.r * m.dispP(0, *ts), *ts - k * kTwoPi, kTwoPi, rq);
+        if (!pr.ok) return false;
+    }
+    l = pr.l_end;
+    if (last) *last = pr;
+    return true;
+}
+
+bool advance_k(const ReachSetup& s, Vec2& l, int k, const PeriodRequest& rq) {
+    for (int j = 0; j < k; ++j)
+        if (!advance(s, l, rq)) return false;
+    return true;
+}
+
+// The angle from b to a.
+double angle_between(const Vec2& a, const Vec2& b) {
+    return std::atan2(b.x() * a.y() - b.y() * a.x(), a.dot(b));
+}
+
+// The component w . (Phi^k(z) - z) of the map's push has the sign that moves x towards y at x and at
+// 1/2, 1/4, 1/8, 1/16 of the way from y to x: no fixed point between them along w (unless two, closer
+// than the samples: a saddle-node pair about to appear).
+bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, const Eigen::RowVector2d& w,
+                    int& periods) {
+    const PeriodRequest rq = state_only(s);
+    auto push = [&](const Vec2& z, bool& ok) {
+        Vec2 z1 = z;
+        ok = advance_k(s, z1, k, rq);
+        periods += k;
+        return w.dot(z1 - z);
+    };
+    bool ok = true;
+    const double f0 = push(x, ok);
+    if (!ok || !(f0 * w.dot(y - x) > 0)) return false;
+    for (const double t : {0.5, 0.25, 0.125, 0.0625}) {
+        const double fz = push(y + t * (x - y), ok);
+        if (!ok || !(fz * f0 > 0)) return false;
+    }
+    return true;
+}
+
+// Evidence that the motion through x (force units, a point of the start's motion) settles into the state
+// y of the k-period map with derivative M (docs/model.md, "Which steady state"):
+//   at y to within `noise`; or
+//   in the linear regime: one k-period step from a point of the motion lands where M predicts, to within
+//     half the contraction 1 - max|mu| (in the norm of M's eigenvectors); the remainder, quadratic in the
+//     distance, is smaller still closer in, so every later step contracts;
+//   a state on the circle approached from inside (i > 0): periods inside with v > 0 throughout (no law
+//     change: rho grows monotonically) whose angle closes in on the state's;
+//   a slow direction (real mu_s >= 0.5): the map's component along mu_s's left eigenvector w, s(z) =
+//     w . (Phi^k(z) - z), keeps the sign it has at the motion's point along the segment to y (sampled at
+//     1/2, 1/4, 1/8 of the way), where it is in the linear regime: no fixed point between them on the slow
+//     manifold (w is blind to the fast direction to first order).
+// `periods` counts the periods integrated.
+bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
+             int& periods) {
+    const LagModel& m = *s.m;
+    const PeriodRequest rq = state_only(s);
+    const double noise = std::max(30 * s.aim, 1e-10);
+    cd mu[2];
+    eigen_multipliers(M, mu);
+    const double rho = std::abs(mu[0]);
+    const Eigen::ComplexEigenSolver<Eigen::Matrix2cd> ces(M.cast<cd>());
+    const Eigen::Matrix2cd V = ces.eigenvectors();
+    const bool diagonal = std::abs(V.determinant()) > 1e-8;
+    const Eigen::Matrix2cd Vinv = diagonal ? Eigen::Matrix2cd(V.inverse()) : Eigen::Matrix2cd::Identity();
+    auto nrm = [&](const Vec2& e) { return (Vinv * e.cast<cd>()).norm(); };
+    const double contraction = 1 - rho;
+    int creeping = 0, shrinking = 0;
+    for (int n = 0; n < 6; ++n) {
+        const Vec2 e0 = x - y;
+        if (e0.norm() <= noise) return true;
+        if (circle_state && x.norm() < 1 - 10 * kPin) {
+            // Inside, towards a state on the circle: the approach is algebraic for i > 1 (no linear regime).
+            PeriodResult pr;
+            Vec2 x1 = x;
+            if (!advance(s, x1, rq, &pr)) return false;
+            periods += 1;
+            if ((x1 - y).norm() <= noise) return true; // arrived
+            const bool creep = pr.start == Phase::interior && pr.events == 0 && pr.end == Phase::interior &&
+                               x1.norm() > x.norm() && x.dot(m.dP(0)) > 0;
+            if (creep) {
+                const double a0 = std::abs(angle_between(x, y)), a1 = std::abs(angle_between(x1, y));
+                if (a1 <= noise || a1 < a0)
+                    ++creeping;
+                else
+                    creeping = 0;
+                if (creeping >= 2) return true;
+            } else {
+                creeping = 0;
+            }
+            x = x1;
+            continue;
+        }
+        Vec2 x1 = x;
+        if (!advance_k(s, x1, k, rq)) return false;
+        periods += k;
+        const Vec2 e1 = x1 - y;
+        if (e1.norm() <= noise) return true; // arrived
+        if (diagonal && contraction > 0 && nrm(e1 - M * e0) <= 0.5 * contraction * nrm(e0)) return true;
+        // M without a basis of eigenvectors (e.g. nilpotent on the circle): the distance shrinks by at
+        // least (1 + rho)/2 in two successive steps.
+        if (!diagonal && rho < 1 && e1.norm() <= 0.5 * (1 + rho) * e0.norm()) {
+            if (++shrinking >= 2) return true;
+        } else {
+            shrinking = 0;
+        }
+        x = x1;
+    }
+    // The map's push along the segment from x to y keeps its sign: along the slow direction's left
+    // eigenvector w where there is one (real mu_s >= 0.5; w is blind to the fast direction to first order),
+    // else along the segment itself (the motion may creep where the map is far from its linearisation at
+    // y: a law change next to y, i > 1).
+    if (circle_state) return false;
+    Eigen::RowVector2d w = (y - x).normalized().transpose();
+    if (diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
+        const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
+        w = Vinv.row(slow).real();
+    }
+    return pushes_towards(s, x, y, k, w, periods);
+}
+
+// int v dtau over a period on the circle from l0 (v = e . P', |e| = 1): the trapezoidal rule on samples,
+// spectrally accurate for the smooth periodic integrand.
+double circle_v_integral(const ReachSetup& s, const Vec2& l0) {
+    std::vector<Sample> samples;
+    PeriodRequest rq = state_only(s);
+    rq.samples = &samples;
+    rq.n_samples = 256;
+    rq.params = s.p;
+    const PeriodResult pr = run_lag(*s.m, l0, 0, kTwoPi, rq);
+    if (!pr.ok || samples.empty()) return 0;
+    double sum = 0;
+    for (const Sample& x : samples) sum += x.F.normalized().dot(s.m->dP(x.tau));
+    return sum * kTwoPi / static_cast<double>(samples.size());
+}
+
+bool stable(const cd mu[2]) {
+    return std::abs(mu[0]) <= 1 && std::abs(mu[1]) < 1;
+}
+
+bool same_orbit(const Orbit& a, const Orbit& b) {
+    if (a.k != b.k) return false;
+    return std::abs(a.rx - b.rx) <= 1e-6 + a.error_estimate + b.error_estimate &&
+           std::abs(a.ry - b.ry) <= 1e-6 + a.error_estimate + b.error_estimate;
+}
+
+// A k-period orbit by Newton's method on the k-times iterated map (in the plane), its verification and
+// error estimate like the 1-period state's (verify_state.cpp).
+struct KSearch {
+    bool converged = false;
+    Vec2 y{0, 0};
+    Eigen::Matrix2d M = Eigen::Matrix2d::Identity(); // D(Phi^k) at y
+    Vec2 force_integral{0, 0};
+    Eigen::Matrix2d G = Eigen::Matrix2d::Zero(); // d(force integral over the k periods)/dy
+    double dist = std::numeric_limits<double>::infinity();
+    bool visited_circle = false;
+    double pin_drop = 0;
+    int events = 0;
+    long steps = 0;
+    int periods = 0, newton_steps = 0;
+    const char* failure = "";
+};
+
+bool compose(const ReachSetup& s, const Vec2& y, int k, const PeriodRequest& rq, KSearch& out, Vec2& end) {
+    Vec2 l = y;
+    out.M.setIdentity();
+    out.G.setZero();
+    out.force_integral.setZero();
+    out.visited_circle = false;
+    out.pin_drop = 0;
+    out.events = 0;
+    out.steps = 0;
+    for (int j = 0; j < k; ++j) {
+        const PeriodResult pr = run_lag(*s.m, l, 0, kTwoPi, rq);
+        ++out.periods;
+        if (!pr.ok) {
+            out.failure = pr.failure;
+            return false;
+        }
+        if (rq.sensitivity) {
+            // Forces as l = r L: the force integral moves by G dl0 / r per unit of l0 (G is per x_v).
+            out.G += pr.G * out.M;
+            out.M = (Eigen::Matrix2d::Identity() + pr.E) * out.M;
+        }
+        out.force_integral += pr.force_integral;
+        out.visited_circle = out.visited_circle || pr.visited_circle;
+        out.pin_drop = std::max(out.pin_drop, pr.pin_drop);
+        out.events += pr.events;
+        out.steps += pr.steps;
+        l = pr.l_end;
+    }
+    end = l;
+    return true;
+}
+
+KSearch newton_k(const ReachSetup& s, Vec2 y, int k, int max_periods) {
+    KSearch out;
+    const double tol_newton = 0.1 * s.aim;
+    double best = std::numeric_limits<double>::infinity();
+    int stalled = 0;
+    for (int it = 0; it < 40 && out.periods + k <= max_periods; ++it) {
+        Vec2 end;
+        if (!compose(s, y, k, s.rq, out, end)) return out;
+        const Vec2 F = end - y;
+        const Eigen::Matrix2d J = out.M - Eigen::Matrix2d::Identity();
+        const double det = J.determinant();
+        if (!(std::abs(det) > 1e-13 * std::max(1.0, J.cwiseAbs().maxCoeff()))) {
+            y = end; // no Newton step: a plain k-period step
+            continue;
+        }
+        Vec2 delta = -J.inverse() * F;
+        ++out.newton_steps;
+        out.dist = delta.norm();
+        if (out.dist <= tol_newton || (out.dist <= 1e3 * s.aim && ++stalled >= 3)) {
+            out.converged = true;
+            out.y = y;
+            return out;
+        }
+        if (out.dist < 0.5 * best) {
+            best = out.dist;
+            stalled = 0;
+        }
+        if (delta.norm() > 0.1) delta *= 0.1 / delta.norm();
+        y += delta;
+        if (y.norm() > 1) y /= y.norm();
+    }
+    out.failure = "the period-k search did not settle";
+    return out;
+}
+
+Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
+    Orbit o;
+    o.k = k;
+    o.l0 = ks.y;
+    eigen_multipliers(ks.M, o.mu);
+    o.have_mu = true;
+    o.newton_steps = ks.newton_steps;
+    o.rx = ks.force_integral.x() / (kTwoPi * k);
+    o.ry = ks.force_integral.y() / (kTwoPi * k);
+    // The same k periods at a 4x looser tolerance: their means' difference is the integration error (as
+    // for the 1-period state); the search's distance moves the means by G/(2 pi k) times it.
+    PeriodRequest check{4 * s.rq.atol, 4 * s.rq.atol_force, false};
+    std::vector<Sample> samples;
+    std::vector<OdeEvent> events;
+    if (s.record) {
+        check.samples = &samples;
+        check.n_samples = std::max(1, s.record_samples);
+        check.params = s.p;
+        check.events = &events;
+    }
+    KSearch again;
+    Vec2 end;
+    const bool ok = compose(s, ks.y, k, check, again, end);
+    periods += again.periods;
+    if (!ok) {
+        o.status = SteadyStatus::integration_failed;
+        o.failure = again.failure;
+        return o;
+    }
+    o.integration_error = (again.force_integral - ks.force_integral).cwiseAbs().maxCoeff() / (kTwoPi * k);
+    const double gain = ks.G.norm() / (kTwoPi * k) / s.p->rdisp;
+    const double offset = ks.dist;
+    o.steady_error = 2 * offset * (offset <= 1e-3 && std::isfinite(gain) ? gain : std::max(1.0, gain));
+    const double pin = std::max(s.p->i > 0 && ks.visited_circle ? kPin : 0, ks.pin_drop);
+    o.error_estimate = o.steady_error + o.integration_error + pin + 1e-14;
+    o.events_per_period = ks.events;
+    o.steps_per_period = static_cast<int>(ks.steps / k);
+    if (s.record) {
+        // Only the first period's samples (taus 0..2 pi) make the figure's period.
+        samples.resize(std::min(samples.size(), static_cast<std::size_t>(std::max(1, s.record_samples))));
+        o.samples = std::move(samples);
+        o.events = std::move(events);
+    }
+    o.status = o.error_estimate <= s.tol ? SteadyStatus::periodic : SteadyStatus::not_converged;
+    if (o.status != SteadyStatus::periodic) o.failure = "error estimate above tolerance";
+    return o;
+}
+
+void add_other(Reach& out, Orbit o) {
+    o.samples.clear();
+    o.events.clear();
+    for (const Orbit& x : out.others)
+        if (same_orbit(x, o)) return;
+    out.others.push_back(std::move(o));
+}
+
+} // namespace
+
+Orbit orbit_of(const ReachSetup& s, const Verified& v) {
+    Orbit o;
+    o.k = 1;
+    o.l0 = v.l0;
+    o.rx = v.last.force_integral.x() / kTwoPi;
+    o.ry = v.last.force_integral.y() / kTwoPi;
+    o.error_estimate = v.error_estimate;
+    o.steady_error = v.steady_error;
+    o.integration_error = v.integration_error;
+    o.on_circle = v.search.on_circle || v.last.start == Phase::circle;
+    o.newton_steps = v.search.newton_steps;
+    o.plain_steps = v.search.plain_steps;
+    o.periods_skipped = v.search.periods_skipped;
+    o.events_per_period = v.last.events;
+    o.steps_per_period = static_cast<int>(v.last.steps);
+    o.failure = v.failure;
+    o.events = v.events;
+    o.samples = v.samples;
+    if (!v.converged) {
+        o.status = v.search.status == SteadyStatus::converged ? SteadyStatus::not_converged : v.search.status;
+    } else if (!(v.error_estimate <= s.tol)) {
+        o.status = SteadyStatus::not_converged;
+        o.failure = "error estimate above tolerance";
+    } else {
+        o.status = SteadyStatus::converged;
+    }
+    if (!std::isfinite(o.rx) || !std::isfinite(o.ry)) o.status = SteadyStatus::non_finite;
+    return o;
+}
+
+void period1_multipliers(const ReachSetup& s, const PeriodResult& pr, Vec2 l0, cd mu[2]) {
+    const Eigen::Matrix2d M = Eigen::Matrix2d::Identity() + pr.E;
+    const bool whole_period_on_circle =
+        pr.start == Phase::circle && pr.end == Phase::circle && pr.events == 0;
+    if (!whole_period_on_circle || s.p->i == 0) {
+        eigen_multipliers(M, mu);
+        return;
+    }
+    // The angle's multiplier is M's nonzero eigenvalue (its trace); the radial one the approach from inside.
+    mu[0] = M.trace();
+    const double i = s.p->i;
+    mu[1] = i < 1 ? 0.0 : i == 1 ? std::exp(-s.p->rdisp * circle_v_integral(s, l0)) : 1.0;
+    sort_desc(mu);
+}
+
+Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses) {
+    const Params& p = *s.p;
+    const LagModel& m = *s.m;
+    Reach out;
+    Orbit& st = out.state;
+    int search_periods = 0;
+    Orbit unstable_seen; // the closest fixed point found when nothing stable is reached
+    bool have_unstable = false;
+    Search closest;
+
+    // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
+    // motion) reaches it, its verification. True when it is the state reached.
+    auto take_period1 = [&](const Search& sr, const Vec2& from) {
+        if (!sr.converged) {
+            if (!closest.have_last || (sr.have_last && sr.dist < closest.dist)) closest = sr;
+            return false;
+        }
+        cd mu[2];
+        period1_multipliers(s, sr.last, sr.last_l0, mu);
+        const bool circle_state =
+            sr.last.start == Phase::circle && sr.last.end == Phase::circle && sr.last.events == 0 && p.i > 0;
+        if (!stable(mu)) {
+            if (!have_unstable) {
+                const Verified v = verify_fixed_point(p, m, sr, s.rq, s.aim, s.tol, false, 0, 0);
+                unstable_seen = orbit_of(s, v);
+                unstable_seen.status = SteadyStatus::unsettled;
+                unstable_seen.failure = "the periodic state found is unstable: the motion does not settle";
+                std::copy(mu, mu + 2, unstable_seen.mu);
+                unstable_seen.have_mu = true;
+                have_unstable = true;
+            }
+            return false;
+        }
+        const bool reached = reaches(s, from, sr.last_l0, Eigen::Matrix2d::Identity() + sr.last.E, 1,
+                                     circle_state, out.periods);
+        const Verified v = verify_fixed_point(p, m, sr, s.rq, s.aim, s.tol, s.record && reached,
+                                              s.record_samples, s.max_search_periods);
+        out.periods += v.periods;
+        Orbit o = orbit_of(s, v);
+        std::copy(mu, mu + 2, o.mu);
+        o.have_mu = true;
+        o.on_circle = o.on_circle || circle_state;
+        if (v.unstable) return false;
+        if (reached) {
+            o.reached = true;
+            st = std::move(o);
+            return true;
+        }
+        if (ok(o.status)) add_other(out, std::move(o));
+        return false;
+    };
+
+    // 1. Newton's method from the guesses (a warm start, the start itself, limits).
+    for (const Vec2& g : guesses) {
+        if (search_periods >= s.max_search_periods) break;
+        const Search sr = search_from(p, m, g, s.rq, s.aim, s.max_search_periods - search_periods, kGiveUp);
+        search_periods += sr.periods;
+        out.periods += sr.periods;
+        if (sr.status == SteadyStatus::integration_failed) {
+            st.status = SteadyStatus::integration_failed;
+            st.failure = sr.failure;
+            return out;
+        }
+        if (take_period1(sr, start)) return out;
+    }
+
+    // A budget too small for a search's give-up rule is too small to follow the motion as well.
+    if (s.max_search_periods < kGiveUp) {
+        st.status = SteadyStatus::not_converged;
+        st.failure = "period budget exhausted";
+        st.error_estimate = closest.have_last ? closest.dist : std::numeric_limits<double>::infinity();
+        if (closest.have_last) {
+            st.rx = closest.last.force_integral.x() / kTwoPi;
+            st.ry = closest.last.force_integral.y() / kTwoPi;
+        }
+        return out;
+    }
+
+    // 2. Follow the motion from the start; where its sections repeat after k periods (k = 1, 2, 4, ...),
+    // Newton's method on the k-times map from there.
+    const PeriodRequest rq_state = state_only(s);
+    std::vector<Vec2> xs;
+    Vec2 x = start;
+    classify(m, 0, x);
+    xs.push_back(x);
+    int chunk = 4;
+    std::vector<int> tried_at(kMaxPeriodK + 1, -1000);
+    while (static_cast<int>(xs.size()) <= kFollowPeriods) {
+        for (int j = 0; j < chunk; ++j) {
+            if (!advance(s, x, rq_state)) {
+                st.status = SteadyStatus::integration_failed;
+                st.failure = "the integrator could not continue";
+                return out;
+            }
+            xs.push_back(x);
+        }
+        out.periods += chunk;
+        chunk = std::min(2 * chunk, 64);
+        const int n = static_cast<int>(xs.size()) - 1;
+        for (int k = 1; k <= kMaxPeriodK; k *= 2) {
+            if (n < 2 * k) break;
+            const double d = (xs[n] - xs[n - k]).norm(), dprev = (xs[n - k] - xs[n - 2 * k]).norm();
+            // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
+            if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || (k == 1 && d <= dprev)))) continue;
+            if (n - tried_at[k] < 16 * k) break; // just tried from near here
+            tried_at[k] = n;
+            if (k == 1) {
+                const int budget = std::max(s.max_search_periods - search_periods, 100);
+                const Search sr = search_from(p, m, xs[n], s.rq, s.aim, budget, kGiveUp);
+                search_periods += sr.periods;
+                out.periods += sr.periods;
+                if (take_period1(sr, xs[n])) return out;
+            } else {
+                const KSearch ks = newton_k(s, xs[n], k, 40 * k);
+                out.periods += ks.periods;
+                if (!ks.converged) break;
+                cd mu[2];
+                eigen_multipliers(ks.M, mu);
+                if (!stable(mu)) break;
+                if (!reaches(s, xs[n], ks.y, ks.M, k, false, out.periods)) break;
+                Orbit o = verify_k(s, ks, k, out.periods);
+                o.reached = true;
+                st = std::move(o);
+                return out;
+            }
+            break;
+        }
+    }
+
+    // 3. No periodic state reached: the long-time means over a window, their standard error from batch
+    // means (the batches long enough to be nearly independent where the motion mixes).
+    std::vector<Vec2> batch(kWindowBatches, Vec2::Zero());
+    const int per_batch = kWindowPeriods / kWindowBatches;
+    const PeriodRequest rq_means{s.rq.atol, s.rq.atol_force, false};
+    PeriodResult pr;
+    for (int b = 0; b < kWindowBatches; ++b) {
+        for (int j = 0; j < per_batch; ++j) {
+            if (!advance(s, x, rq_means, &pr)) {
+                st.status = SteadyStatus::integration_failed;
+                st.failure = "the integrator could not continue";
+                return out;
+            }
+            batch[static_cast<std::size_t>(b)] += pr.force_integral / kTwoPi;
+        }
+        batch[static_cast<std::size_t>(b)] /= per_batch;
+    }
+    out.periods += kWindowPeriods;
+    Vec2 mean = Vec2::Zero();
+    for (const Vec2& b : batch) mean += b;
+    mean /= kWindowBatches;
+    Vec2 var = Vec2::Zero();
+    for (const Vec2& b : batch) var += (b - mean).cwiseAbs2();
+    var /= kWindowBatches - 1;
+    const double se = std::sqrt(std::max(var.x(), var.y()) / kWindowBatches);
+    // A motion still creeping towards a state drifts one way through the window: its batch means follow
+    // a line (least squares on the batch index) to within a small part of their spread.
+    double drift_fit = 0, spread = 0;
+    for (int c = 0; c < 2; ++c) {
+        double sx = 0, sxx = 0, sy = 0, sxy = 0;
+        for (int b = 0; b < kWindowBatches; ++b) {
+            const double y = batch[static_cast<std::size_t>(b)][c];
+            sx += b, sxx += double(b) * b, sy += y, sxy += b * y;
+        }
+        const double nb = kWindowBatches;
+        const double slope = (nb * sxy - sx * sy) / (nb * sxx - sx * sx), icpt = (sy - slope * sx) / nb;
+        for (int b = 0; b < kWindowBatches; ++b) {
+            const double y = batch[static_cast<std::size_t>(b)][c];
+            drift_fit = std::max(drift_fit, std::abs(y - (icpt + slope * b)));
+            spread = std::max(spread, std::abs(y - mean[c]));
+        }
+    }
+    bool drifting = false;
+    for (int c = 0; c < 2; ++c) {
+        int up = 0, down = 0;
+        for (int b = 1; b < kWindowBatches; ++b) {
+            const double d =
+                batch[static_cast<std::size_t>(b)][c] - batch[static_cast<std::size_t>(b - 1)][c];
+            up += d > 0, down += d < 0;
+        }
+        drifting = drifting || up == kWindowBatches - 1 || down == kWindowBatches - 1;
+    }
+    drifting = drifting || (spread > 0 && drift_fit <= 0.05 * spread);
+    if (se <= 10 * s.tol || drifting) {
+        // The motion hardly changes any more, yet no periodic state could be vouched for: a slow transient
+        // or a state the searches could not pin down. Not a result; the window's means are shown.
+        if (have_unstable) {
+            st = unstable_seen;
+            return out;
+        }
+        st = Orbit{};
+        st.status = SteadyStatus::not_converged;
+        st.rx = mean.x();
+        st.ry = mean.y();
+        st.error_estimate = std::max(se, closest.have_last ? closest.dist : se);
+        st.l0 = x;
+        st.failure = drifting ? "the motion still creeps towards a state after the periods followed"
+                              : "the motion settles, but no periodic state could be verified";
+        return out;
+    }
+    st = Orbit{};
+    st.status = SteadyStatus::not_periodic;
+    st.rx = mean.x();
+    st.ry = mean.y();
+    st.standard_error = se;
+    st.window = kWindowPeriods;
+    st.error_estimate = se;
+    st.l0 = x;
+    st.failure = "the motion does not repeat: long-time means over a window";
+    if (have_unstable) {
+        std::copy(unstable_seen.mu, unstable_seen.mu + 2, st.mu);
+        st.have_mu = true;
+    }
+    return out;
+}
+
+} // namespace fv::solver

@@ -1,0 +1,73 @@
+// Which periodic state the motion from a start settles into (docs/model.md, "Which steady state"): fixed
+// points of the period map (or of its k-times iterate) found by Newton's method, each accepted for a start
+// only with evidence that the motion from that start gets into its contraction region, and the stable
+// states found on the way that the start does not reach.
+#pragma once
+
+#include "verify_state.hpp"
+
+#include <complex>
+#include <vector>
+
+namespace fv::solver {
+
+// What the searches share: the model, the search's integration settings (with sensitivity), the aim and
+// the tolerance of the means, and whether the reached state's period is recorded for a figure.
+struct ReachSetup {
+    const Params* p = nullptr;
+    const LagModel* m = nullptr;
+    PeriodRequest rq;
+    double aim = 0, tol = 0;
+    bool record = false;
+    int record_samples = 1024;
+    int max_search_periods = 400; // Newton's periods (sensitivities) over all searches from one start
+};
+
+// A periodic state: the motion repeats every k periods from l0.
+struct Orbit {
+    SteadyStatus status = SteadyStatus::not_converged;
+    int k = 1;
+    Vec2 l0{0, 0}; // force at the start of a period (l = F/F_c)
+    double rx = 0, ry = 0;
+    double error_estimate = 0, steady_error = 0, integration_error = 0;
+    std::complex<double> mu[2]; // Floquet multipliers of the k-period map, |mu| descending
+    bool have_mu = false;
+    bool on_circle = false;
+    bool reached = false; // the motion from the start gets into its contraction region
+    int newton_steps = 0, plain_steps = 0;
+    long periods_skipped = 0;
+    int events_per_period = 0, steps_per_period = 0;
+    const char* failure = "";
+    std::vector<OdeEvent> events;
+    std::vector<Sample> samples;
+    double standard_error = 0; // not_periodic: of the long-time means
+    int window = 0;            // not_periodic: periods averaged
+};
+
+struct Reach {
+    Orbit state;               // what the motion from the start settles into (its status says how sure)
+    std::vector<Orbit> others; // stable states found on the way that the start does not reach (verified)
+    int periods = 0;           // periods integrated
+};
+
+// The periods followed from a start before its motion is called not periodic, and the window (after
+// them) over which the long-time means and their standard error (batch means) are taken then.
+inline constexpr int kFollowPeriods = 600;
+inline constexpr int kWindowPeriods = 1000;
+inline constexpr int kWindowBatches = 20;
+
+// The state the motion from `start` (force units) settles into. `guesses`: first guesses for Newton's
+// method (a warm start, limits, the start itself), tried in order before the motion is followed.
+Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses);
+
+// The period-1 state a verification describes (status converged only when its error estimate is within
+// the tolerance).
+Orbit orbit_of(const ReachSetup& s, const Verified& v);
+
+// Floquet multipliers of a period-1 state from its period's derivative M = DPhi. A state on the circle
+// with no law change in its period has M of rank one (the pinning forgets the radial part); its radial
+// multiplier is the approach to the circle from inside: 0 for i < 1 (finite time), exp(-r int v dtau) for
+// i = 1, and 1 for i > 1 (algebraic: a deficit d obeys d' = -r v d^i).
+void period1_multipliers(const ReachSetup& s, const PeriodResult& pr, Vec2 l0, std::complex<double> mu[2]);
+
+} // namespace fv::solver
