@@ -136,7 +136,7 @@ TEST_CASE("CLI: ratio formats carry the documented columns", "[cli]") {
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
     CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
-                        "multiplier\ndahl,1,45,2,0.3,",
+                        "multiplier,states\ndahl,1,45,2,0.3,",
                         0) == 0);
     CHECK(lines(csv.out) == 2);
     const Run js = run(std::string("ratio ") + kGood + " --format json");
@@ -160,9 +160,9 @@ TEST_CASE("CLI: sweep writes one row per point, atomically to --out", "[cli]") {
     REQUIRE(r.code == 0);
     CHECK(r.out.empty());
     const std::string csv = slurp(out);
-    CHECK(csv.rfind(
-              "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier\n",
-              0) == 0);
+    CHECK(csv.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                    "multiplier,states\n",
+                    0) == 0);
     CHECK(lines(csv) == 1 + 4 * 2 * 2 * 2);
     const Run j = run("sweep --model rigid --zeta 0:2:5 --theta 0,30 --format json");
     REQUIRE(j.code == 0);
@@ -639,7 +639,7 @@ TEST_CASE(
     const Run csv = run(std::string("ratio ") + units + " --theta 60 --i 1 --format csv");
     REQUIRE(csv.code == 0);
     CHECK(csv.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
-                        "multiplier,vb_m_s,zss_um\n",
+                        "multiplier,states,vb_m_s,zss_um\n",
                         0) == 0);
     const auto rows = parse_csv(csv.out);
     REQUIRE(rows.size() == 1);
@@ -671,14 +671,14 @@ TEST_CASE("CLI units: --amplitude/--frequency with plain --zeta/--rdisp add the 
     r = run(base + " --amplitude 0.5");
     REQUIRE(r.code == 0);
     CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
-                      "multiplier,zss_um\n",
+                      "multiplier,states,zss_um\n",
                       0) == 0);
     // Frequency alone is accepted and changes nothing (it needs the amplitude to say anything).
     r = run(base + " --frequency 40");
     REQUIRE(r.code == 0);
-    CHECK(r.out.rfind(
-              "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier\n",
-              0) == 0);
+    CHECK(r.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
+                      "multiplier,states\n",
+                      0) == 0);
     // The rigid model has no z_ss: the column is there but empty (null in JSON).
     r = run("ratio --model rigid --zeta 0.5 --theta 0 --amplitude 0.5 --frequency 40 --format csv");
     REQUIRE(r.code == 0);
@@ -700,8 +700,9 @@ TEST_CASE("CLI units: --amplitude/--frequency with plain --zeta/--rdisp add the 
 TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "[cli][units]") {
     const Run csv = run(std::string("ratio ") + kGood + " --format csv");
     REQUIRE(csv.code == 0);
-    CHECK(csv.out.substr(0, csv.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
+    CHECK(
+        csv.out.substr(0, csv.out.find('\n')) ==
+        "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier,states");
     const Run js = run(std::string("ratio ") + kGood + " --format json");
     REQUIRE(js.code == 0);
     const auto j = nlohmann::json::parse(js.out);
@@ -713,8 +714,9 @@ TEST_CASE("CLI units: without unit flags the output is the dimensionless one", "
     CHECK(report_line(txt.out, "amplitude ").empty());
     const Run sw = run("sweep --zeta 0.1:0.5:3 --theta 90 --rdisp 2 --i 1");
     REQUIRE(sw.code == 0);
-    CHECK(sw.out.substr(0, sw.out.find('\n')) ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
+    CHECK(
+        sw.out.substr(0, sw.out.find('\n')) ==
+        "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier,states");
 }
 
 TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the converted zeta range and rdisp list",
@@ -729,7 +731,7 @@ TEST_CASE("CLI units: sweep --vb FROM:TO:COUNT and --zss lists equal the convert
     REQUIRE(u.code == 0);
     REQUIRE(z.code == 0);
     CHECK(u.out.rfind("model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_"
-                      "multiplier,vb_m_s,zss_um\n",
+                      "multiplier,states,vb_m_s,zss_um\n",
                       0) == 0);
     const auto ru = parse_csv(u.out), rz = parse_csv(z.out);
     REQUIRE(ru.size() == 2 * 2 * 2 * 5);
@@ -1119,4 +1121,31 @@ TEST_CASE("CLI status: fit exits 3 when its model evaluations failed, output wri
     const Run txt = run("fit --data " + data + " --i 0");
     CHECK(txt.code == 0);
     CHECK(report_line(txt.out, "status ") == "status        ok");
+}
+
+// Which steady state (docs/model.md): --start names the history; where two stable states coexist (theta = 90
+// deg, rdisp = 0.001, i = 10: the small state from rest, the saturated one r_x = 1 - r^2/4 from sliding),
+// the text counts them and JSON lists both with the start that reaches each.
+TEST_CASE("CLI: --start names the history and coexisting states are listed", "[cli][states]") {
+    const std::string point = "ratio --zeta 0.001 --theta 90 --rdisp 0.001 --i 10";
+    const Run bad = run(point + " --start moving");
+    CHECK(bad.code == 2);
+    CHECK(bad.err.find("--start") != std::string::npos);
+    const Run rest = run(point);
+    REQUIRE(rest.code == 0);
+    CHECK(rest.out.find("start         rest") != std::string::npos);
+    CHECK(rest.out.find("2 stable steady states") != std::string::npos);
+    const Run js = run(point + " --start sliding --format json");
+    REQUIRE(js.code == 0);
+    const auto j = nlohmann::json::parse(js.out);
+    CHECK(j.at("start") == "sliding");
+    CHECK(j.at("start_reaches") == true);
+    CHECK(j.at("r_x").get<double>() == Approx(1 - 0.25e-6).margin(1e-9));
+    REQUIRE(j.at("states").size() == 2);
+    const auto& small = j.at("states").at(0);
+    const auto& saturated = j.at("states").at(1);
+    CHECK(small.at("reached_from") == nlohmann::json::array({"rest"}));
+    CHECK(saturated.at("reached_from") == nlohmann::json::array({"sliding"}));
+    CHECK(saturated.at("r_x").get<double>() == Approx(1 - 0.25e-6).margin(1e-9));
+    CHECK(saturated.at("slow") == true); // on the circle with i > 1: |mu| = 1, approached algebraically
 }

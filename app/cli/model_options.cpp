@@ -72,6 +72,7 @@ SteadyOptions solver_options(const SolverArgs& s) {
     o.scheme = s.scheme == "paper" || s.steps_per_period > 0 ? Scheme::paper : Scheme::ode;
     o.steps_per_period = s.steps_per_period;
     parse_start(s.start, o.start);
+    o.list_states = true; // every output names the stable states both starts reach
     if (s.tolerance > 0) {
         if (o.scheme == Scheme::paper)
             throw UsageError("--tolerance belongs to --scheme ode; allowed: drop it, or use --scheme ode");

@@ -121,6 +121,26 @@ nlohmann::json json_of(const SweepPoint& r, bool status_known = true) {
         j["standard_error"] = jnum(r.result.mean_standard_error);
         j["window_periods"] = r.result.window;
     }
+    if (r.result.scheme == Scheme::ode) {
+        j["start_reaches"] = r.result.start_reaches;
+        nlohmann::json states = nlohmann::json::array();
+        for (const SteadyState& x : r.result.states) {
+            nlohmann::json from = nlohmann::json::array();
+            if (x.from_rest) from.push_back("rest");
+            if (x.from_sliding) from.push_back("sliding");
+            nlohmann::json mu = nlohmann::json::array();
+            for (const auto& m : x.multipliers) mu.push_back({jnum(m.real()), jnum(m.imag())});
+            states.push_back({{"r_x", jnum(x.rx)},
+                              {"r_y", jnum(x.ry)},
+                              {"period_k", x.period},
+                              {"multipliers", mu},
+                              {"largest_multiplier", jnum(x.largest_multiplier())},
+                              {"slow", x.slow()},
+                              {"error_estimate", jnum(x.error_estimate)},
+                              {"reached_from", from}});
+        }
+        j["states"] = states;
+    }
     return j;
 }
 
@@ -154,7 +174,8 @@ Format parse_format(const std::string& s) {
 
 std::string RatioTableStream::head() const {
     if (f_ == Format::json) return total_ == 1 ? "" : "[\n";
-    return "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier" +
+    return "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier,"
+           "states" +
            std::string(has_vb(v_) ? ",vb_m_s" : "") + (v_.amplitude_um ? ",zss_um" : "") + "\n";
 }
 
@@ -177,11 +198,15 @@ std::string RatioTableStream::rows(const std::vector<SweepPoint>& rows) {
             ++done_;
             continue;
         }
-        s += std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
-             num(r.params.rdisp) + "," + num(r.params.zeta) + "," + ratio_num(r.result.rx) + "," +
-             ratio_num(r.result.ry) + "," + std::to_string(r.result.periods) + "," +
-             num(r.result.error_estimate) + "," + (statuses_known_ ? status_text(r) : "") + "," +
-             (r.model == Model::dahl ? to_string(r.result.start) : "") + "," + num(largest_multiplier(r));
+        s +=
+            std::string(to_string(r.model)) + "," + num(r.params.i) + "," + num(theta_deg(r.params)) + "," +
+            num(r.params.rdisp) + "," + num(r.params.zeta) + "," + ratio_num(r.result.rx) + "," +
+            ratio_num(r.result.ry) + "," + std::to_string(r.result.periods) + "," +
+            num(r.result.error_estimate) + "," + (statuses_known_ ? status_text(r) : "") + "," +
+            (r.model == Model::dahl ? to_string(r.result.start) : "") + "," + num(largest_multiplier(r)) +
+            "," +
+            (r.model == Model::dahl && r.result.scheme == Scheme::ode ? std::to_string(r.result.states.size())
+                                                                      : "");
         if (has_vb(v_)) s += "," + num(vb_of(r, v_));
         if (v_.amplitude_um) s += "," + num(zss_of(r, v_));
         s += "\n";
@@ -204,10 +229,32 @@ std::string ratio_table(const std::vector<SweepPoint>& rows, Format f, const Vib
 
 // Which steady state the numbers belong to, in words: the start, the period, the multipliers and what
 // a slow one means (docs/model.md, "Which steady state").
+// Where the state list says which starts reach a state.
+std::string reached_by(const SteadyState& x) {
+    if (x.from_rest && x.from_sliding) return "reached from rest and from sliding";
+    if (x.from_rest) return "reached from rest";
+    if (x.from_sliding) return "reached from sliding";
+    return "reached from neither start";
+}
+
 std::string state_text(const SteadyResult& res) {
     std::string s = "start         " + std::string(to_string(res.start)) +
-                    (res.start == Start::rest ? "   (sliding and vibration begin together, T = P)\n"
-                                              : "   (vibration switched on during steady sliding)\n");
+                    (res.start == Start::rest ? "   (sliding and vibration begin together, T = P)"
+                                              : "   (vibration switched on during steady sliding)");
+    if (res.scheme == Scheme::ode && ok(res.status))
+        s += res.start_reaches ? "; its motion reaches this state"
+                               : "; NOT shown that its motion reaches this state";
+    s += "\n";
+    if (res.states.size() > 1) {
+        s += "states        " + std::to_string(res.states.size()) +
+             " stable steady states (the start decides which one the motion settles into):\n";
+        char buf[300];
+        for (const SteadyState& x : res.states) {
+            std::snprintf(buf, sizeof buf, "                r_x %.9f  r_y %.9f  period %d  |mu| %.4g  %s\n",
+                          x.rx, x.ry, x.period, x.largest_multiplier(), reached_by(x).c_str());
+            s += buf;
+        }
+    }
     if (res.status == SteadyStatus::periodic)
         s += "period        the motion repeats every " + std::to_string(res.period_k) +
              " periods of the vibration; r_x, r_y are its means over them\n";

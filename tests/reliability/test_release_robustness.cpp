@@ -238,8 +238,9 @@ TEST_CASE("6. sweep interrupted on standard output leaves whole rows in grid ord
     std::ifstream in(s / "rows.csv");
     std::string line;
     REQUIRE(std::getline(in, line));
-    CHECK(line ==
-          "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier");
+    CHECK(
+        line ==
+        "model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,start,largest_multiplier,states");
     int rows = 0;
     std::pair<double, double> last{-1, -1}; // (theta, zeta): the grid's order, zeta fastest
     const std::string all = slurp(s / "rows.csv");
@@ -249,7 +250,7 @@ TEST_CASE("6. sweep interrupted on standard output leaves whole rows in grid ord
         std::vector<std::string> f;
         std::istringstream fields(line);
         for (std::string x; std::getline(fields, x, ',');) f.push_back(x);
-        REQUIRE(f.size() == 12);
+        REQUIRE(f.size() == 13);
         CHECK(f[9] == "ok");
         const std::pair<double, double> at{std::stod(f[2]), std::stod(f[4])};
         CHECK(at > last);

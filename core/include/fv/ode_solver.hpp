@@ -36,7 +36,7 @@ struct OdeOptions {
     bool record_period = false;      // fill SteadyResult::period with samples of the steady period
     int record_samples = 1024;       // samples at tau = 2 pi k / n, k = 1..n (like Eq. (30))
     Start start = Start::rest;       // the history whose steady state is reported
-    bool list_states = true;         // search from the other start too and list every stable state found
+    bool list_states = false;        // search from the other start too and list every stable state found
 };
 
 // Instants where the lag's law changes.

@@ -89,7 +89,7 @@ struct SteadyOptions {
                                      // first guess for the search, the start decides the state)
     bool record_period = false;      // keep the samples of the last steady period (trace)
     Start start = Start::rest;       // the history: which coexisting steady state is reported
-    bool list_states = true;         // ode: also search from the other start and list every state found
+    bool list_states = false;        // ode: also search from the other start and list every state found
 };
 
 struct SteadyResult {
@@ -114,6 +114,7 @@ struct SteadyResult {
     // multipliers of its k-period map, and every stable state found (this one included, ordered by r_x);
     // not_periodic: the standard error of the long-time means over `window` periods.
     Start start = Start::rest;
+    bool start_reaches = false; // evidence that the motion from `start` reaches this state (ode scheme)
     int period_k = 1;
     std::complex<double> multipliers[2];
     bool have_multipliers = false;

@@ -90,87 +90,6 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
     return true;
 }
 
-// Evidence that the motion through x (force units, a point of the start's motion) settles into the state
-// y of the k-period map with derivative M (docs/model.md, "Which steady state"):
-//   at y to within `noise`; or
-//   in the linear regime: one k-period step from a point of the motion lands where M predicts, to within
-//     half the contraction 1 - max|mu| (in the norm of M's eigenvectors); the remainder, quadratic in the
-//     distance, is smaller still closer in, so every later step contracts;
-//   a state on the circle approached from inside (i > 0): periods inside with v > 0 throughout (no law
-//     change: rho grows monotonically) whose angle closes in on the state's;
-//   a slow direction (real mu_s >= 0.5): the map's component along mu_s's left eigenvector w, s(z) =
-//     w . (Phi^k(z) - z), keeps the sign it has at the motion's point along the segment to y (sampled at
-//     1/2, 1/4, 1/8 of the way), where it is in the linear regime: no fixed point between them on the slow
-//     manifold (w is blind to the fast direction to first order).
-// `periods` counts the periods integrated.
-bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
-             int& periods) {
-    const LagModel& m = *s.m;
-    const PeriodRequest rq = state_only(s);
-    const double noise = std::max(30 * s.aim, 1e-10);
-    cd mu[2];
-    eigen_multipliers(M, mu);
-    const double rho = std::abs(mu[0]);
-    const Eigen::ComplexEigenSolver<Eigen::Matrix2cd> ces(M.cast<cd>());
-    const Eigen::Matrix2cd V = ces.eigenvectors();
-    const bool diagonal = std::abs(V.determinant()) > 1e-8;
-    const Eigen::Matrix2cd Vinv = diagonal ? Eigen::Matrix2cd(V.inverse()) : Eigen::Matrix2cd::Identity();
-    auto nrm = [&](const Vec2& e) { return (Vinv * e.cast<cd>()).norm(); };
-    const double contraction = 1 - rho;
-    int creeping = 0, shrinking = 0;
-    for (int n = 0; n < 6; ++n) {
-        const Vec2 e0 = x - y;
-        if (e0.norm() <= noise) return true;
-        if (circle_state && x.norm() < 1 - 10 * kPin) {
-            // Inside, towards a state on the circle: the approach is algebraic for i > 1 (no linear regime).
-            PeriodResult pr;
-            Vec2 x1 = x;
-            if (!advance(s, x1, rq, &pr)) return false;
-            periods += 1;
-            if ((x1 - y).norm() <= noise) return true; // arrived
-            const bool creep = pr.start == Phase::interior && pr.events == 0 && pr.end == Phase::interior &&
-                               x1.norm() > x.norm() && x.dot(m.dP(0)) > 0;
-            if (creep) {
-                const double a0 = std::abs(angle_between(x, y)), a1 = std::abs(angle_between(x1, y));
-                if (a1 <= noise || a1 < a0)
-                    ++creeping;
-                else
-                    creeping = 0;
-                if (creeping >= 2) return true;
-            } else {
-                creeping = 0;
-            }
-            x = x1;
-            continue;
-        }
-        Vec2 x1 = x;
-        if (!advance_k(s, x1, k, rq)) return false;
-        periods += k;
-        const Vec2 e1 = x1 - y;
-        if (e1.norm() <= noise) return true; // arrived
-        if (diagonal && contraction > 0 && nrm(e1 - M * e0) <= 0.5 * contraction * nrm(e0)) return true;
-        // M without a basis of eigenvectors (e.g. nilpotent on the circle): the distance shrinks by at
-        // least (1 + rho)/2 in two successive steps.
-        if (!diagonal && rho < 1 && e1.norm() <= 0.5 * (1 + rho) * e0.norm()) {
-            if (++shrinking >= 2) return true;
-        } else {
-            shrinking = 0;
-        }
-        x = x1;
-    }
-    // The map's push along the segment from x to y keeps its sign: along the slow direction's left
-    // eigenvector w where there is one (real mu_s >= 0.5; w is blind to the fast direction to first order),
-    // else along the segment itself (the motion may creep where the map is far from its linearisation at
-    // y: a law change next to y, i > 1).
-    if (circle_state) return false;
-    Eigen::RowVector2d w = (y - x).normalized().transpose();
-    if (diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
-        const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
-        w = Vinv.row(slow).real();
-    }
-    return pushes_towards(s, x, y, k, w, periods);
-}
-
 // int v dtau over a period on the circle from l0 (v = e . P', |e| = 1): the trapezoidal rule on samples,
 // spectrally accurate for the smooth periodic integrand.
 double circle_v_integral(const ReachSetup& s, const Vec2& l0) {
@@ -286,6 +205,7 @@ Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
     o.l0 = ks.y;
     eigen_multipliers(ks.M, o.mu);
     o.have_mu = true;
+    o.M = ks.M;
     o.newton_steps = ks.newton_steps;
     o.rx = ks.force_integral.x() / (kTwoPi * k);
     o.ry = ks.force_integral.y() / (kTwoPi * k);
@@ -338,6 +258,87 @@ void add_other(Reach& out, Orbit o) {
 
 } // namespace
 
+// Evidence that the motion through x (force units, a point of the start's motion) settles into the state
+// y of the k-period map with derivative M (docs/model.md, "Which steady state"):
+//   at y to within `noise`; or
+//   in the linear regime: one k-period step from a point of the motion lands where M predicts, to within
+//     half the contraction 1 - max|mu| (in the norm of M's eigenvectors); the remainder, quadratic in the
+//     distance, is smaller still closer in, so every later step contracts;
+//   a state on the circle approached from inside (i > 0): periods inside with v > 0 throughout (no law
+//     change: rho grows monotonically) whose angle closes in on the state's;
+//   a slow direction (real mu_s >= 0.5): the map's component along mu_s's left eigenvector w, s(z) =
+//     w . (Phi^k(z) - z), keeps the sign it has at the motion's point along the segment to y (sampled at
+//     1/2, 1/4, 1/8 of the way), where it is in the linear regime: no fixed point between them on the slow
+//     manifold (w is blind to the fast direction to first order).
+// `periods` counts the periods integrated.
+bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
+             int& periods) {
+    const LagModel& m = *s.m;
+    const PeriodRequest rq = state_only(s);
+    const double noise = std::max(30 * s.aim, 1e-10);
+    cd mu[2];
+    eigen_multipliers(M, mu);
+    const double rho = std::abs(mu[0]);
+    const Eigen::ComplexEigenSolver<Eigen::Matrix2cd> ces(M.cast<cd>());
+    const Eigen::Matrix2cd V = ces.eigenvectors();
+    const bool diagonal = std::abs(V.determinant()) > 1e-8;
+    const Eigen::Matrix2cd Vinv = diagonal ? Eigen::Matrix2cd(V.inverse()) : Eigen::Matrix2cd::Identity();
+    auto nrm = [&](const Vec2& e) { return (Vinv * e.cast<cd>()).norm(); };
+    const double contraction = 1 - rho;
+    int creeping = 0, shrinking = 0;
+    for (int n = 0; n < 6; ++n) {
+        const Vec2 e0 = x - y;
+        if (e0.norm() <= noise) return true;
+        if (circle_state && x.norm() < 1 - 10 * kPin) {
+            // Inside, towards a state on the circle: the approach is algebraic for i > 1 (no linear regime).
+            PeriodResult pr;
+            Vec2 x1 = x;
+            if (!advance(s, x1, rq, &pr)) return false;
+            periods += 1;
+            if ((x1 - y).norm() <= noise) return true; // arrived
+            const bool creep = pr.start == Phase::interior && pr.events == 0 && pr.end == Phase::interior &&
+                               x1.norm() > x.norm() && x.dot(m.dP(0)) > 0;
+            if (creep) {
+                const double a0 = std::abs(angle_between(x, y)), a1 = std::abs(angle_between(x1, y));
+                if (a1 <= noise || a1 < a0)
+                    ++creeping;
+                else
+                    creeping = 0;
+                if (creeping >= 2) return true;
+            } else {
+                creeping = 0;
+            }
+            x = x1;
+            continue;
+        }
+        Vec2 x1 = x;
+        if (!advance_k(s, x1, k, rq)) return false;
+        periods += k;
+        const Vec2 e1 = x1 - y;
+        if (e1.norm() <= noise) return true; // arrived
+        if (diagonal && contraction > 0 && nrm(e1 - M * e0) <= 0.5 * contraction * nrm(e0)) return true;
+        // M without a basis of eigenvectors (e.g. nilpotent on the circle): the distance shrinks by at
+        // least (1 + rho)/2 in two successive steps.
+        if (!diagonal && rho < 1 && e1.norm() <= 0.5 * (1 + rho) * e0.norm()) {
+            if (++shrinking >= 2) return true;
+        } else {
+            shrinking = 0;
+        }
+        x = x1;
+    }
+    // The map's push along the segment from x to y keeps its sign: along the slow direction's left
+    // eigenvector w where there is one (real mu_s >= 0.5; w is blind to the fast direction to first order),
+    // else along the segment itself (the motion may creep where the map is far from its linearisation at
+    // y: a law change next to y, i > 1).
+    if (circle_state) return false;
+    Eigen::RowVector2d w = (y - x).normalized().transpose();
+    if (diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
+        const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
+        w = Vinv.row(slow).real();
+    }
+    return pushes_towards(s, x, y, k, w, periods);
+}
+
 Orbit orbit_of(const ReachSetup& s, const Verified& v) {
     Orbit o;
     o.k = 1;
@@ -348,6 +349,9 @@ Orbit orbit_of(const ReachSetup& s, const Verified& v) {
     o.steady_error = v.steady_error;
     o.integration_error = v.integration_error;
     o.on_circle = v.search.on_circle || v.last.start == Phase::circle;
+    o.M = Eigen::Matrix2d::Identity() + v.last.E;
+    o.circle_state =
+        v.last.start == Phase::circle && v.last.end == Phase::circle && v.last.events == 0 && s.p->i > 0;
     o.newton_steps = v.search.newton_steps;
     o.plain_steps = v.search.plain_steps;
     o.periods_skipped = v.search.periods_skipped;

@@ -33,6 +33,8 @@ struct Orbit {
     std::complex<double> mu[2]; // Floquet multipliers of the k-period map, |mu| descending
     bool have_mu = false;
     bool on_circle = false;
+    bool circle_state = false; // on the circle all period long (i > 0): approached from inside radially
+    Eigen::Matrix2d M = Eigen::Matrix2d::Identity(); // derivative of the k-period map at l0
     bool reached = false; // the motion from the start gets into its contraction region
     int newton_steps = 0, plain_steps = 0;
     long periods_skipped = 0;
@@ -59,6 +61,12 @@ inline constexpr int kWindowBatches = 20;
 // The state the motion from `start` (force units) settles into. `guesses`: first guesses for Newton's
 // method (a warm start, limits, the start itself), tried in order before the motion is followed.
 Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses);
+
+// Evidence that the motion through x (force units, a point of the start's motion) settles into the state y
+// of the k-period map with derivative M (docs/model.md, "Which steady state"). `periods` counts the
+// periods integrated for it.
+bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
+             int& periods);
 
 // The period-1 state a verification describes (status converged only when its error estimate is within
 // the tolerance).

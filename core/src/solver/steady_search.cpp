@@ -71,6 +71,21 @@ SteadyState listed(const Orbit& o, double r) {
     return st;
 }
 
+// Adds a state to the listing, or marks the start on the one already there (the same orbit: the same
+// period and means within their error estimates and 1e-6).
+void add_state(std::vector<SteadyState>& list, SteadyState s, Start from, bool reached) {
+    for (SteadyState& x : list) {
+        const double slack = 1e-6 + x.error_estimate + s.error_estimate;
+        if (x.period == s.period && std::abs(x.rx - s.rx) <= slack && std::abs(x.ry - s.ry) <= slack) {
+            if (reached) (from == Start::rest ? x.from_rest : x.from_sliding) = true;
+            return;
+        }
+    }
+    s.from_rest = s.from_rest || (reached && from == Start::rest);
+    s.from_sliding = s.from_sliding || (reached && from == Start::sliding);
+    list.push_back(s);
+}
+
 // Where Newton's method is tried first for a start, before the motion from it is followed: a warm start,
 // the start itself, then the nearby limit and the circle (settled, or along P'(0)) as ode_solve always
 // did (search_starts.hpp).
@@ -211,34 +226,55 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     setup.max_search_periods = opt.max_periods;
 
     // From rest (the default): Newton's method from the starts that lead to the steady state fastest
-    // (search_starts.hpp); where that gives no verified state (an unstable or unsettled fixed point, a slow
-    // creep), the motion from rest is followed (period-k states, motion that does not repeat).
-    // From sliding: the state the motion from the start reaches, with the evidence for it (reach.hpp).
+    // (search_starts.hpp), then the evidence that the motion from rest reaches the state found. Where there
+    // is none (another state is reached, or the state found is unstable, or Newton's method creeps), the
+    // state the motion from the start reaches is searched for as for any start (reach.hpp): Newton's method
+    // from the start, then the motion followed (period-k states, motion that does not repeat).
     OdeSolution sol;
     SteadyResult& res = sol.result;
     int periods = 0;
     Orbit state;
+    std::vector<Orbit> others;
+    const Vec2 l_start = start_force(opt.start);
     if (opt.start == Start::rest) {
         state = default_search(setup, opt, periods);
-        if (!ok(state.status) && state.status != SteadyStatus::integration_failed) {
-            const Reach from_rest = solver::reach_from(setup, Vec2(0, 0), {});
-            periods += from_rest.periods;
-            if (ok(from_rest.state.status) || from_rest.state.status == SteadyStatus::not_periodic)
-                state = from_rest.state;
-        }
-    } else {
-        const Vec2 l_start = start_force(opt.start);
+        if (ok(state.status))
+            state.reached =
+                solver::reaches(setup, l_start, state.l0, state.M, 1, state.circle_state, periods);
+    }
+    if (!state.reached && state.status != SteadyStatus::integration_failed) {
         Reach reach = solver::reach_from(setup, l_start, guesses_for(m, opt, l_start, rq));
         periods += reach.periods;
-        state = std::move(reach.state);
+        const bool better = ok(reach.state.status) || reach.state.status == SteadyStatus::not_periodic ||
+                            opt.start != Start::rest;
+        if (better) {
+            if (ok(state.status)) others.push_back(std::move(state)); // found, but not shown to be reached
+            state = std::move(reach.state);
+        }
+        for (Orbit& o : reach.others) others.push_back(std::move(o));
     }
     fill_result(sol, state, p, periods);
     res.start = opt.start;
-    if (ok(state.status)) {
-        SteadyState listedst = listed(state, r);
-        (opt.start == Start::rest ? listedst.from_rest : listedst.from_sliding) = state.reached;
-        res.states.push_back(listedst);
+    res.start_reaches = state.reached;
+    std::vector<SteadyState>& list = res.states;
+    if (ok(state.status)) add_state(list, listed(state, r), opt.start, state.reached);
+    for (const Orbit& o : others)
+        if (ok(o.status)) add_state(list, listed(o, r), opt.start, false);
+    if (opt.list_states) {
+        // The other start's state: only to list it (its period is not recorded).
+        const Start other = opt.start == Start::rest ? Start::sliding : Start::rest;
+        OdeOptions o2 = opt;
+        o2.start = other;
+        o2.list_states = false;
+        o2.record_period = false;
+        const OdeSolution second = solve_start(p, o2);
+        periods += second.result.periods;
+        for (const SteadyState& x : second.result.states)
+            add_state(list, x, other, other == Start::rest ? x.from_rest : x.from_sliding);
     }
+    std::sort(list.begin(), list.end(),
+              [](const SteadyState& a, const SteadyState& b) { return a.rx < b.rx; });
+    res.periods = res.total_periods = periods;
     return sol;
 }
 
