@@ -212,6 +212,7 @@ Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
     // The same k periods at a 4x looser tolerance: their means' difference is the integration error (as
     // for the 1-period state); the search's distance moves the means by G/(2 pi k) times it.
     PeriodRequest check{4 * s.rq.atol, 4 * s.rq.atol_force, false};
+    check.max_step = 0.5 * s.rq.max_step;
     std::vector<Sample> samples;
     std::vector<OdeEvent> events;
     if (s.record) {
@@ -266,10 +267,10 @@ void add_other(Reach& out, Orbit o) {
 //     distance, is smaller still closer in, so every later step contracts;
 //   a state on the circle approached from inside (i > 0): periods inside with v > 0 throughout (no law
 //     change: rho grows monotonically) whose angle closes in on the state's;
-//   a slow direction (real mu_s >= 0.5): the map's component along mu_s's left eigenvector w, s(z) =
-//     w . (Phi^k(z) - z), keeps the sign it has at the motion's point along the segment to y (sampled at
-//     1/2, 1/4, 1/8 of the way), where it is in the linear regime: no fixed point between them on the slow
-//     manifold (w is blind to the fast direction to first order).
+//   else the map's push along the segment from the motion's point to y keeps the sign that moves towards y
+//     (pushes_towards): along the slow multiplier's left eigenvector w where there is one (real mu_s >=
+//     0.5, not a state on the circle; w is blind to the fast direction to first order), else along the
+//     segment.
 // `periods` counts the periods integrated.
 bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
              int& periods) {
@@ -330,9 +331,8 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
     // eigenvector w where there is one (real mu_s >= 0.5; w is blind to the fast direction to first order),
     // else along the segment itself (the motion may creep where the map is far from its linearisation at
     // y: a law change next to y, i > 1).
-    if (circle_state) return false;
     Eigen::RowVector2d w = (y - x).normalized().transpose();
-    if (diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
+    if (!circle_state && diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
         const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
         w = Vinv.row(slow).real();
     }
@@ -569,6 +569,15 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         drifting = drifting || up == kWindowBatches - 1 || down == kWindowBatches - 1;
     }
     drifting = drifting || (spread > 0 && drift_fit <= 0.05 * spread);
+    // Or the window's halves differ by more than their means' scatter allows (3 standard errors of the
+    // difference): a stationary irregular motion gives the same mean in both halves.
+    {
+        const int h = kWindowBatches / 2;
+        Vec2 first = Vec2::Zero(), second = Vec2::Zero();
+        for (int b = 0; b < h; ++b) first += batch[static_cast<std::size_t>(b)] / h;
+        for (int b = h; b < kWindowBatches; ++b) second += batch[static_cast<std::size_t>(b)] / (kWindowBatches - h);
+        drifting = drifting || (first - second).cwiseAbs().maxCoeff() > 3 * std::sqrt(2.0) * se * std::sqrt(2.0);
+    }
     if (se <= 10 * s.tol || drifting) {
         // The motion hardly changes any more, yet no periodic state could be vouched for: a slow transient
         // or a state the searches could not pin down. Not a result; the window's means are shown.
