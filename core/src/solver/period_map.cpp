@@ -50,7 +50,6 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
                              const PeriodRequest& rq, const EventFn* evs, int n_ev, const G& g,
                              OnStep on_step, PeriodResult& out) {
     using Vec = typename Pb::Vec;
-    constexpr double kMaxStep = 0.5;
     constexpr int kProbes = 4; // dense-output probes per step for sign changes of the event functions
     RadauStep<Pb> prev;
     typename Pb::Point start = pb.eval(tau, y); // the law at (tau, y)
@@ -64,7 +63,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
             res.how = StepEnd::failed;
             return res;
         }
-        double hh = std::min({h, kMaxStep, tau1 - tau});
+        double hh = std::min({h, rq.max_step, tau1 - tau});
         if (tau1 - tau - hh < 1e-9) hh = tau1 - tau;
         RadauStep<Pb> st = radau_step(pb, tau, y, start, hh, rq.atol, have_prev ? &prev : nullptr,
                                       rq.sensitivity, after_reject);

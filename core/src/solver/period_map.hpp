@@ -27,6 +27,9 @@ struct PeriodRequest {
     int n_samples = 0;
     const Params* params = nullptr; // for the samples' absolute P
     long max_steps = 200000;
+    // Longest step (tau units). Where the steps are this long at both tolerances of a verification (a smooth
+    // period), their difference would not show the quadrature's error: the check run halves it.
+    double max_step = 0.5;
 };
 
 struct PeriodResult {

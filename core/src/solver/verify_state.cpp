@@ -53,6 +53,7 @@ Verified verify_fixed_point(const Params& p, const LagModel& m, const Search& fo
         const bool check_looser = !record;
         const double factor = check_looser ? 4.0 : 0.25;
         PeriodRequest check{factor * rq.atol, factor * rq.atol_force, false};
+        check.max_step = 0.5 * rq.max_step;
         v.events.clear();
         v.samples.clear();
         if (record) { // the reported period is this run: its samples and events are the figure's
