@@ -212,7 +212,8 @@ Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
     // The same k periods at a 4x looser tolerance: their means' difference is the integration error (as
     // for the 1-period state); the search's distance moves the means by G/(2 pi k) times it.
     PeriodRequest check{4 * s.rq.atol, 4 * s.rq.atol_force, false};
-    check.max_step = 0.5 * s.rq.max_step;
+    if (static_cast<double>(ks.steps) <= k * (kTwoPi / s.rq.max_step + 2))
+        check.max_step = 0.5 * s.rq.max_step;
     std::vector<Sample> samples;
     std::vector<OdeEvent> events;
     if (s.record) {
@@ -534,6 +535,21 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         batch[static_cast<std::size_t>(b)] /= per_batch;
     }
     out.periods += kWindowPeriods;
+    // The motion may have settled within the window (a slow approach that took longer than the periods
+    // followed): where the window's last half no longer moves, Newton's method from its end.
+    {
+        double late = 0;
+        for (int b = kWindowBatches / 2 + 1; b < kWindowBatches; ++b)
+            late =
+                std::max(late, (batch[static_cast<std::size_t>(b)] - batch[static_cast<std::size_t>(b - 1)])
+                                   .cwiseAbs()
+                                   .maxCoeff());
+        if (late <= s.tol) {
+            const Search sr = search_from(p, m, x, s.rq, s.aim, std::max(s.max_search_periods, 100), kGiveUp);
+            out.periods += sr.periods;
+            if (take_period1(sr, x)) return out;
+        }
+    }
     Vec2 mean = Vec2::Zero();
     for (const Vec2& b : batch) mean += b;
     mean /= kWindowBatches;
@@ -575,8 +591,10 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         const int h = kWindowBatches / 2;
         Vec2 first = Vec2::Zero(), second = Vec2::Zero();
         for (int b = 0; b < h; ++b) first += batch[static_cast<std::size_t>(b)] / h;
-        for (int b = h; b < kWindowBatches; ++b) second += batch[static_cast<std::size_t>(b)] / (kWindowBatches - h);
-        drifting = drifting || (first - second).cwiseAbs().maxCoeff() > 3 * std::sqrt(2.0) * se * std::sqrt(2.0);
+        for (int b = h; b < kWindowBatches; ++b)
+            second += batch[static_cast<std::size_t>(b)] / (kWindowBatches - h);
+        drifting =
+            drifting || (first - second).cwiseAbs().maxCoeff() > 3 * std::sqrt(2.0) * se * std::sqrt(2.0);
     }
     if (se <= 10 * s.tol || drifting) {
         // The motion hardly changes any more, yet no periodic state could be vouched for: a slow transient
