@@ -48,3 +48,43 @@ TEST_CASE("LiveSim: history keeps only the requested number of periods", "[live]
     CHECK(h.back().tau - h.front().tau <= 1.5 * 2 * kPi + 1e-9);
     CHECK(h.back().tau - h.front().tau >= 1.5 * 2 * kPi - 2 * sim.dtau());
 }
+
+TEST_CASE("LiveSim: reset to the sliding start puts P - T = z_ss along +x, the force F_c along v_b",
+          "[live]") {
+    const fv::Params p{0.075, kPi / 2, 0.1, 5}; // z_ss = 10 x_v
+    fv::LiveSim sim(fv::Model::dahl, p);
+    sim.step(500);
+    sim.reset(fv::Start::sliding);
+    CHECK(sim.tau() == 0);
+    CHECK(sim.periods() == 0);
+    CHECK(sim.history().size() == 1);
+    const fv::Vec2 lag = sim.P() - sim.T();
+    CHECK(lag.x() == Approx(p.zss()).epsilon(1e-15));
+    CHECK(lag.y() == 0);
+    CHECK(sim.z() == Approx(10).epsilon(1e-15));
+    CHECK(sim.force().x() == Approx(1).epsilon(1e-15));
+    CHECK(sim.force().y() == 0);
+    CHECK(sim.slipping());
+    // The rest start: T = P, no force. The rigid model has no lag: both starts are the same.
+    sim.reset(fv::Start::rest);
+    CHECK((sim.P() - sim.T()).norm() == 0);
+    CHECK(sim.force().norm() == 0);
+    fv::LiveSim rigid(fv::Model::rigid, p);
+    rigid.reset(fv::Start::sliding);
+    CHECK((rigid.P() - rigid.T()).norm() == 0);
+}
+
+TEST_CASE("LiveSim: where two stable states coexist, each start's animation lands on its own", "[live]") {
+    // zeta 0.075, theta 90 deg, rdisp 0.1, i 5: r_x = 0.034177 from rest, 0.997508 from sliding (the
+    // brute-force RK4 reference, tests/data/steady_reference.csv). The animation steps the paper's scheme
+    // at its fixed step: a few 1e-3 off the dtau -> 0 limit.
+    const fv::Params p{0.075, kPi / 2, 0.1, 5};
+    for (const auto& [start, rx] :
+         {std::pair{fv::Start::rest, 0.034177137581669}, std::pair{fv::Start::sliding, 0.997507926210302}}) {
+        INFO(fv::to_string(start));
+        fv::LiveSim sim(fv::Model::dahl, p);
+        sim.reset(start);
+        for (int k = 0; k < 100; ++k) sim.step(sim.steps_per_period());
+        CHECK(sim.last_period_mean().x() == Approx(rx).margin(3e-3));
+    }
+}

@@ -42,13 +42,14 @@ bool LiveSim::slipping() const {
     return z() >= p_.zss() * (p_.i == 0 ? 1 - 1e-9 : 0.995);
 }
 
-void LiveSim::reset() {
+void LiveSim::reset(Start start) {
     n_ = animation_steps(p_);
     tau_ = 0;
     k_ = 0;
     period_ = 0;
     phase_ = 0;
-    lag_ = Vec2::Zero();
+    // Lengths are in units of x_v, so the full deflection is z_ss = 1 / r_disp (F = lag r_disp = (1, 0)).
+    lag_ = start == Start::sliding && model_ == Model::dahl ? Vec2(p_.zss(), 0) : Vec2(Vec2::Zero());
     offset_ = Vec2::Zero();
     sum_ = Vec2::Zero();
     last_mean_ = Vec2(std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::quiet_NaN());

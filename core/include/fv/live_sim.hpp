@@ -5,6 +5,7 @@
 
 #include "fv/paper_scheme.hpp"
 #include "fv/params.hpp"
+#include "fv/steady_state.hpp" // Start
 
 #include <cstdint>
 #include <deque>
@@ -28,8 +29,11 @@ class LiveSim {
     // Applies new parameters at the current instant. The lag P - T is kept (shortened to the new z_ss if
     // needed) and P's drawn position stays continuous, so a slider move never makes the picture jump.
     void apply(Model model, const Params& p);
-    // Back to tau = 0 with T(0) = P(0) (unstretched asperity) and empty histories.
-    void reset();
+    // Back to tau = 0 with empty histories, from `start` (docs/model.md, "Which steady state"): rest puts
+    // T(0) = P(0) (the asperity unstretched, the paper's start); sliding puts P(0) - T(0) = z_ss e_x (the
+    // asperity fully deflected against v_b, the force F_c along it: the vibration switched on during steady
+    // sliding). The rigid model has no lag: both starts are the same.
+    void reset(Start start = Start::rest);
     // Onto the periodic steady state: at the next period start (tau a multiple of 2 pi) with the lag
     // P - T = lag_at_period_start (the solver's L*), P's drawn position kept; the histories restart there.
     void start_steady(Vec2 lag_at_period_start);
