@@ -67,7 +67,7 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
     };
     for (const Case& c : {
              Case{"?zeta=0.3&thetta=60",
-                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model"},
+                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start"},
              Case{"?zeta=abc", "column 7: zeta = 'abc' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=0x10", "column 7: zeta = '0x10' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=inf", "column 7: zeta = 'inf' is not a decimal number; allowed: zeta in [0, 100]"},
@@ -84,6 +84,9 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
              Case{"?rdisp=0", "column 8: rdisp = 0 is out of range; allowed: rdisp in (0, 10000]"},
              Case{"?i=11", "column 4: i = 11 is out of range; allowed: i in [0, 10]"},
              Case{"?model=coulomb", "column 8: model = 'coulomb'; allowed: dahl, rigid"},
+             Case{"?start=moving", "column 8: start = 'moving'; allowed: rest, sliding"},
+             Case{"?start=", "column 8: start = ''; allowed: rest, sliding"},
+             Case{"?start=rest&start=sliding", "column 13: 'start' is given twice; each key at most once"},
              Case{"?zeta=1&i=1&zeta=2", "column 13: 'zeta' is given twice; each key at most once"},
              Case{"?model=dahl&model=dahl", "column 13: 'model' is given twice; each key at most once"},
              Case{"?zeta=1&&i=1", "column 9: empty item (a stray '&'); expected KEY=VALUE"},
@@ -134,6 +137,40 @@ TEST_CASE("share link: the app's link reads back as the same parameters, bit for
         // Degrees to radians rounds; where no double of degrees maps back exactly, one ulp is the most.
         REQUIRE(std::abs(q.theta - p.theta) <= std::nextafter(p.theta, 4.0) - p.theta);
     }
+}
+
+TEST_CASE("share link: the start goes through the link, and a link from rest has no start key", "[link]") {
+    const Params p{0.075, kPi / 2, 0.1, 5};
+    const std::string sliding = share_link(Model::dahl, p, Start::sliding);
+    CHECK(sliding == "?zeta=0.075&theta=90&rdisp=0.1&i=5&model=dahl&start=sliding");
+    Model m = Model::rigid;
+    Params q{0.15, 0, 2, 1};
+    Start start = Start::rest;
+    apply_share_link(parse_share_link(sliding), m, q, start);
+    CHECK(start == Start::sliding);
+    CHECK(m == Model::dahl);
+    CHECK(q.zeta == p.zeta);
+    CHECK(q.theta == p.theta);
+    CHECK(q.rdisp == p.rdisp);
+    CHECK(q.i == p.i);
+    // The paper's start is the default: its link is the one written before the start could be chosen.
+    const std::string rest = share_link(Model::dahl, p, Start::rest);
+    CHECK(rest == "?zeta=0.075&theta=90&rdisp=0.1&i=5&model=dahl");
+    CHECK(rest == share_link(Model::dahl, p));
+    CHECK(rest.find("start") == std::string::npos);
+    // start=rest is read as well; a link without the key keeps the start it is applied over.
+    apply_share_link(parse_share_link("?start=rest&zeta=0.2"), m, q, start);
+    CHECK(start == Start::rest);
+    CHECK_FALSE(parse_share_link(rest).start.has_value());
+    start = Start::sliding;
+    apply_share_link(parse_share_link(rest), m, q, start);
+    CHECK(start == Start::sliding);
+    // The three-argument form reads the parameters alone.
+    Model m3 = Model::rigid;
+    Params q3{};
+    apply_share_link(parse_share_link(sliding), m3, q3);
+    CHECK(m3 == Model::dahl);
+    CHECK(q3.zeta == p.zeta);
 }
 
 TEST_CASE("shortest_decimal: the shortest text strtod reads back exactly, no '+' in it", "[link]") {

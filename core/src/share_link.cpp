@@ -102,6 +102,12 @@ ShareLink parse_share_link(std::string_view text) {
             once(link.model.has_value());
             link.model = parse_model(value);
             if (!link.model) fail(vat, "model = " + quoted_text(value) + "; allowed: dahl, rigid");
+        } else if (key == "start") {
+            once(link.start.has_value());
+            Start s = Start::rest;
+            if (!parse_start(value, s))
+                fail(vat, "start = " + quoted_text(value) + "; allowed: " + kStartNames);
+            link.start = s;
         } else {
             fail(at, "unknown key " + quoted_text(key) + "; allowed: " + kLinkKeys);
         }
@@ -116,6 +122,11 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params) {
     if (link.rdisp) params.rdisp = *link.rdisp;
     if (link.i) params.i = *link.i;
     if (link.model) model = *link.model;
+}
+
+void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start) {
+    apply_share_link(link, model, params);
+    if (link.start) start = *link.start;
 }
 
 double theta_degrees(double theta_rad) {
@@ -134,10 +145,11 @@ double theta_degrees(double theta_rad) {
     return best + 0.0; // -0.0 maps back to 0 as well: never print -0
 }
 
-std::string share_link(Model model, const Params& p) {
+std::string share_link(Model model, const Params& p, Start start) {
     return "?zeta=" + shortest_decimal(p.zeta) + "&theta=" + shortest_decimal(theta_degrees(p.theta)) +
            "&rdisp=" + shortest_decimal(p.rdisp) + "&i=" + shortest_decimal(p.i) +
-           "&model=" + to_string(model);
+           "&model=" + to_string(model) +
+           (start == Start::rest ? "" : std::string("&start=") + to_string(start));
 }
 
 } // namespace fv
