@@ -197,3 +197,137 @@ TEST_CASE("AppState: an A or f change converts the kept v_b column, without read
         CHECK(a.ui().data->points[k].zeta == Approx(vbs[k] / vv(0.8, 30)).epsilon(1e-14));
     ::rmdir(dir.c_str());
 }
+
+// ---- The start (docs/model.md, "Which steady state"): where two stable states coexist ----
+
+#include "gui/script.hpp"
+
+namespace {
+
+// zeta 0.075, theta 90 deg, rdisp 0.1, i 5: two stable states, r_x = 0.034177 reached from rest and
+// 0.997508 from sliding (the brute-force RK4 reference, tests/data/steady_reference.csv).
+const Params kTwoStates{0.075, kPi / 2, 0.1, 5};
+constexpr double kRxRest = 0.034177137581669, kRxSliding = 0.997507926210302;
+
+} // namespace
+
+TEST_CASE("AppState: a start edit takes effect at sync, restarts the motion from it and asks for its state",
+          "[gui][state][start]") {
+    AppState a(Model::dahl, kTwoStates, 0.7, 60);
+    CHECK(a.ui().start == Start::rest);
+    CHECK((a.sim().P() - a.sim().T()).norm() == 0);
+    pause(a);
+    a.sync(UiEdits{});
+    for (int k = 0; k < 5; ++k) a.advance(1.0 / 60), a.sync(UiEdits{});
+    UiEdits step;
+    step.step = true;
+    a.sync(step);
+    a.advance(1.0 / 60);
+    REQUIRE(a.sim().tau() > 0);
+
+    UiEdits queued, panel, later;
+    panel.start = Start::rest;
+    later.start = Start::sliding; // the later edit of the same field wins
+    queued.merge(panel);
+    queued.merge(later);
+    CHECK(queued.moves_curves());
+    CHECK(a.ui().start == Start::rest); // queued, not applied
+    a.sync(queued);
+    CHECK(a.ui().start == Start::sliding);
+    CHECK(a.sim().tau() == 0);
+    CHECK(a.sim().periods() == 0);
+    CHECK((a.sim().P() - a.sim().T()).x() == Approx(kTwoStates.zss()).epsilon(1e-15));
+    CHECK((a.sim().P() - a.sim().T()).y() == 0);
+    CHECK(a.ui().status.find("steady sliding") != std::string::npos);
+    // Reset keeps the chosen start.
+    a.sync(step);
+    a.advance(1.0 / 60);
+    UiEdits reset;
+    reset.reset = true;
+    a.sync(reset);
+    CHECK(a.sim().tau() == 0);
+    CHECK((a.sim().P() - a.sim().T()).x() == Approx(kTwoStates.zss()).epsilon(1e-15));
+    // The same start again is no edit: the motion runs on.
+    a.sync(step);
+    a.advance(1.0 / 60);
+    const double tau = a.sim().tau();
+    UiEdits same;
+    same.start = Start::sliding;
+    a.sync(same);
+    CHECK(a.sim().tau() == tau);
+
+    // The worker computes the sliding start's state, and lists both.
+    a.worker().wait_idle();
+    const auto curves = a.worker().latest();
+    REQUIRE(curves);
+    CHECK(curves->request.start == Start::sliding);
+    CHECK(curves->current.rx == Approx(kRxSliding).margin(1e-3));
+    CHECK(coexisting_states(*curves).size() == 2);
+    // The session of the state names it.
+    CHECK(session_of(a.ui()).start == Start::sliding);
+}
+
+TEST_CASE("AppState: the animation from each start ends in that start's state, and the app says which",
+          "[gui][state][start]") {
+    for (const auto& [start, rx] : {std::pair{Start::rest, kRxRest}, std::pair{Start::sliding, kRxSliding}}) {
+        INFO(to_string(start));
+        Session s;
+        s.params = kTwoStates;
+        s.start = start;
+        AppState a(s);
+        a.worker().wait_idle();
+        const auto curves = a.worker().latest();
+        REQUIRE(curves);
+        const std::vector<SteadyState>& states = coexisting_states(*curves);
+        REQUIRE(states.size() == 2);
+        // Ordered by r_x: rest's first, sliding's second.
+        CHECK(states[0].rx == Approx(kRxRest).margin(1e-3));
+        CHECK(states[0].from_rest);
+        CHECK(states[1].rx == Approx(kRxSliding).margin(1e-3));
+        CHECK(states[1].from_sliding);
+        CHECK(state_of_motion(states, a.sim().last_period_mean().x(), kMotionStateTolerance) == -1); // NaN
+        // 600 periods of the animation at the top speed: ten 6-second frames (the paper's scheme at its
+        // fixed step lands a few 1e-3 from the reference).
+        a.sync([] {
+            UiEdits e;
+            e.speed = kSpeedRange.hi;
+            return e;
+        }());
+        for (int k = 0; k < 10; ++k) a.advance(6.0);
+        const double mean = a.sim().last_period_mean().x();
+        CHECK(mean == Approx(rx).margin(3e-3));
+        CHECK(state_of_motion(states, mean, kMotionStateTolerance) == (start == Start::rest ? 0 : 1));
+    }
+}
+
+TEST_CASE("state_of_motion: the nearest state within the tolerance and a third of the gap, else settling",
+          "[gui][start]") {
+    std::vector<SteadyState> states(2);
+    states[0].rx = 0.03;
+    states[1].rx = 0.99;
+    CHECK(state_of_motion(states, 0.031, 1e-2) == 0);
+    CHECK(state_of_motion(states, 0.985, 1e-2) == 1);
+    CHECK(state_of_motion(states, 0.5, 1e-2) == -1);   // settling
+    CHECK(state_of_motion(states, 0.045, 1e-2) == -1); // nearer the first, not yet within the tolerance
+    CHECK(state_of_motion(states, std::nan(""), 1e-2) == -1);
+    states[1].rx = 0.036; // close states: a third of their gap is the limit
+    CHECK(state_of_motion(states, 0.031, 1e-2) == 0);
+    CHECK(state_of_motion(states, 0.0325, 1e-2) == -1);
+    CHECK(state_of_motion({}, 0.5, 1e-2) == -1);
+}
+
+TEST_CASE("app script: start rest|sliding, checked when loaded", "[gui][script][start]") {
+    char tmpl[] = "/tmp/fv-start-script-XXXXXX";
+    const std::string dir = ::mkdtemp(tmpl);
+    const std::string good = dir + "/good.txt";
+    std::ofstream(good) << "0 start sliding\n3 start rest\n";
+    const Script s = load_script(good);
+    const UiState ui;
+    CHECK(script_edits(s, 0, ui).start == Start::sliding);
+    CHECK(script_edits(s, 3, ui).start == Start::rest);
+    CHECK_FALSE(script_edits(s, 1, ui).start);
+    const std::string bad = dir + "/bad.txt";
+    std::ofstream(bad) << "0 start moving\n";
+    CHECK_THROWS_WITH(load_script(bad), bad + ":1: start = 'moving'; allowed: rest, sliding");
+    CHECK(script_actions().find("start WORD") != std::string::npos);
+}

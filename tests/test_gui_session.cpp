@@ -131,6 +131,7 @@ TEST_CASE("gui --session/--link: a bad file or link exits 2 with one line naming
     write("range.json", "{\n  \"version\": 1,\n  \"rdisp\": 20000\n}\n");
     write("type.json", "{\n  \"version\": 1,\n  \"speed\": \"fast\"\n}\n");
     write("model.json", "{\n  \"version\": 1,\n  \"model\": \"coulomb\"\n}\n");
+    write("start.json", "{\n  \"version\": 1,\n  \"start\": \"moving\"\n}\n");
     write("unknown.json", "{\n  \"version\": 1,\n  \"zetta\": 0.3\n}\n");
     write("no-data.json", "{\n  \"version\": 1,\n  \"data\": \"missing.csv\"\n}\n");
     write("bad-save.txt", "3 save-session no/such/dir/s.json\n");
@@ -142,6 +143,8 @@ TEST_CASE("gui --session/--link: a bad file or link exits 2 with one line naming
              Case{"--session type.json", "--session: type.json:3:12: speed: expected a number, got a string"},
              Case{"--session model.json",
                   "--session: model.json:3:12: model = \"coulomb\"; allowed: dahl, rigid"},
+             Case{"--session start.json",
+                  "--session: start.json:3:12: start = \"moving\"; allowed: rest, sliding"},
              Case{"--session unknown.json", "--session: unknown.json:3:3: unknown key \"zetta\"; allowed:"},
              Case{"--session no-data.json",
                   "--session: no-data.json:3:11: data: missing.csv: does not exist"},

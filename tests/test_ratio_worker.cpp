@@ -128,3 +128,44 @@ TEST_CASE("Ratio worker without a thread: one step a slice at a zero budget, the
     REQUIRE(sliced.latest().has_value());
     CHECK(sliced.latest()->request == first);
 }
+
+TEST_CASE("Ratio job: the start's state at the current point, every stable state listed, the curve from that "
+          "start",
+          "[gui][ratio][start]") {
+    // zeta 0.075, theta 90 deg, rdisp 0.1, i 5: r_x = 0.034177 from rest, 0.997508 from sliding (the
+    // brute-force RK4 reference, tests/data/steady_reference.csv).
+    RatioRequest req;
+    req.model = Model::dahl;
+    req.params = {0.075, kPi / 2, 0.1, 5};
+    req.start = Start::sliding;
+    CHECK_FALSE(req == RatioRequest{req.model, req.params, req.map, req.zeta_max, Start::rest});
+    RatioJob job(req, false);
+    job.step(); // the current point and the rigid curve
+    const SteadyResult& here = job.result().current;
+    CHECK(ok(shown_status(here)));
+    CHECK(here.start == Start::sliding);
+    CHECK(here.rx == Approx(0.997507926210302).margin(1e-3));
+    REQUIRE(coexisting_states(job.result()).size() == 2);
+    const std::vector<SteadyState>& states = here.states;
+    CHECK(states[0].rx == Approx(0.034177137581669).margin(1e-3));
+    CHECK(states[1].rx == Approx(0.997507926210302).margin(1e-3));
+    CHECK(std::string(reached_from(states[0])) == "from rest");
+    CHECK(std::string(reached_from(states[1])) == "from sliding");
+    // The curve: each point as steady_ratio gives it from the same start.
+    while (job.step()) {
+    }
+    const RatioCurves& out = job.result();
+    SteadyOptions opt;
+    opt.start = Start::sliding;
+    for (std::size_t k : {std::size_t{1}, out.zetas.size() / 2}) {
+        INFO(out.zetas[k]);
+        const SteadyResult r = steady_ratio(Model::dahl, {out.zetas[k], kPi / 2, 0.1, 5}, opt);
+        CHECK(same(out.model_rx[k], ok(shown_status(r)) ? r.rx : std::nan("")));
+    }
+    // From rest the same point reports the rest state, and lists the same two.
+    req.start = Start::rest;
+    RatioJob rest(req, false);
+    rest.step();
+    CHECK(rest.result().current.rx == Approx(0.034177137581669).margin(1e-3));
+    CHECK(coexisting_states(rest.result()).size() == 2);
+}

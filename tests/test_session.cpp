@@ -49,6 +49,7 @@ Session unusual() {
     Session s;
     s.model = Model::rigid;
     s.params = Params{0.731, 37.5 * kPi / 180, 12.5, 0.25};
+    s.start = Start::sliding;
     s.amplitude_um = 1.3;
     s.frequency_khz = 45;
     s.speed = 2.5;
@@ -67,6 +68,7 @@ Session unusual() {
 
 void check_same(const Session& a, const Session& b) {
     CHECK(a.model == b.model);
+    CHECK(a.start == b.start);
     CHECK(a.params.zeta == b.params.zeta);
     CHECK(a.params.theta == b.params.theta);
     CHECK(a.params.rdisp == b.params.rdisp);
@@ -112,6 +114,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     // Each field differs from the default: a field the writer or the reader dropped would come back as it.
     const Session d;
     CHECK(s.model != d.model);
+    CHECK(s.start != d.start);
     CHECK(s.params.zeta != d.params.zeta);
     CHECK(s.params.theta != d.params.theta);
     CHECK(s.params.rdisp != d.params.rdisp);
@@ -134,12 +137,26 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     INFO(text);
     check_same(parse_session(text, "s.json"), s);
     // The documented keys, theta in degrees, the panel by name.
-    for (const char* key :
-         {"\"version\": 1", "\"model\": \"rigid\"", "\"zeta\": 0.731", "\"theta\": 37.5", "\"rdisp\": 12.5",
-          "\"i\": 0.25", "\"amplitude_um\": 1.3", "\"frequency_khz\": 45.0", "\"speed\": 2.5",
-          "\"playing\": false", "\"panel\": \"map\"", "\"zoom\": 2.5", "\"follow\": false",
-          "\"trail_periods\": 3.5", "\"data\": \"", "\"pan\": [0.3, -1.25]", "\"presentation\": true",
-          "\"r_x\": [0.1, null, 0.7]", "\"zeta\": [0.25]"})
+    for (const char* key : {"\"version\": 1",
+                            "\"model\": \"rigid\"",
+                            "\"zeta\": 0.731",
+                            "\"theta\": 37.5",
+                            "\"rdisp\": 12.5",
+                            "\"i\": 0.25",
+                            "\"start\": \"sliding\"",
+                            "\"amplitude_um\": 1.3",
+                            "\"frequency_khz\": 45.0",
+                            "\"speed\": 2.5",
+                            "\"playing\": false",
+                            "\"panel\": \"map\"",
+                            "\"zoom\": 2.5",
+                            "\"follow\": false",
+                            "\"trail_periods\": 3.5",
+                            "\"data\": \"",
+                            "\"pan\": [0.3, -1.25]",
+                            "\"presentation\": true",
+                            "\"r_x\": [0.1, null, 0.7]",
+                            "\"zeta\": [0.25]"})
         CHECK(text.find(key) != std::string::npos);
     // The other panels: show_map, show_loop and show_mechanism are one choice in the file.
     Session loop = s;
@@ -182,6 +199,49 @@ TEST_CASE("session JSON: missing keys take the app's defaults, a relative data p
     CHECK(parse_session(R"({"version": 1, "data": null})", "dir/s.json").data_file.empty());
 }
 
+TEST_CASE("session JSON: the start goes through the file, a session from before it starts from rest",
+          "[gui][session]") {
+    // A whole session as saved before the start could be chosen (no "start" key): the paper's start.
+    const std::string old = R"({
+  "version": 1,
+  "model": "dahl",
+  "zeta": 0.075,
+  "theta": 90.0,
+  "rdisp": 0.1,
+  "i": 5.0,
+  "amplitude_um": 0.7,
+  "frequency_khz": 60.0,
+  "speed": 0.25,
+  "playing": true,
+  "panel": "curves",
+  "view": {"zoom": 1.0, "pan": [0.0, 0.0], "follow": true, "trail_periods": 1.5, "presentation": false},
+  "pins": [],
+  "data": null
+})";
+    CHECK(parse_session(old, "old.json").start == Start::rest);
+    for (const Start start : {Start::rest, Start::sliding}) {
+        Session s = parse_session(old, "old.json");
+        s.start = start;
+        const std::string text = session_json(s);
+        INFO(text);
+        CHECK(text.find(std::string("\"start\": \"") + to_string(start) + "\"") != std::string::npos);
+        CHECK(parse_session(text, "s.json").start == start);
+    }
+    CHECK(parse_session(R"({"version": 1, "start": "sliding"})", "s.json").start == Start::sliding);
+    CHECK(parse_session(R"({"version": 1, "start": "rest"})", "s.json").start == Start::rest);
+
+    // Opened in the app: the animation starts from the session's start (P - T = z_ss e_x from sliding).
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    UiEdits e;
+    e.open_session = write("sliding.json", R"({"version": 1, "zeta": 0.075, "rdisp": 0.1, "i": 5,
+ "start": "sliding"})");
+    a.sync(e);
+    CHECK(a.ui().start == Start::sliding);
+    CHECK(a.sim().tau() == 0);
+    CHECK((a.sim().P() - a.sim().T()).x() == Approx(10).epsilon(1e-15));
+    CHECK(session_of(a.ui()).start == Start::sliding);
+}
+
 TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offending key or value",
           "[gui][session]") {
     struct Case {
@@ -215,6 +275,10 @@ TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offendi
              Case{"{\"version\": 1,\n \"model\": \"coulomb\"}",
                   "s.json:2:11: model = \"coulomb\"; allowed: dahl, rigid"},
              Case{"{\"version\": 1,\n \"model\": 1}", "s.json:2:11: model: expected a string, got a number"},
+             Case{"{\"version\": 1,\n \"start\": \"moving\"}",
+                  "s.json:2:11: start = \"moving\"; allowed: rest, sliding"},
+             Case{"{\"version\": 1,\n \"start\": true}",
+                  "s.json:2:11: start: expected a string, got true/false"},
              Case{"{\"version\": 1,\n \"panel\": \"plot\"}",
                   "s.json:2:11: panel = \"plot\"; allowed: curves, map, loop, why"},
              Case{"{\"version\": 1,\n \"zetta\": 1}",

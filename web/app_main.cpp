@@ -2,9 +2,9 @@
 // canvas, WebGL 2). The page is web/index.html.
 //
 // The page's address is a share link (fv/share_link.hpp, what `frictionviz gui --link` reads): its query sets
-// the model and parameters at start, and as the sliders move the address follows (history.replaceState), so
-// a copied address reopens the same setup. A link that does not read shows the defaults and says why on the
-// page, never a blank page.
+// the model, parameters and start (rest or sliding) at start, and as the sliders move the address follows
+// (history.replaceState), so a copied address reopens the same setup. A link that does not read shows the
+// defaults and says why on the page, never a blank page.
 #include "gui/gui_app.hpp"
 
 #include "fv/share_link.hpp"
@@ -54,7 +54,8 @@ int main() {
         const std::string query = page_query();
         if (!query.empty()) {
             try {
-                fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params);
+                fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params,
+                                     o.start.start);
                 // As gui --link does: the physical view (with the page's default A and f) must be finite.
                 if (const std::string why = fv::units::physical_view_error(
                         o.start.params, o.start.amplitude_um, o.start.frequency_khz);
@@ -69,9 +70,9 @@ int main() {
         }
         // The address changes only when the state does: a page opened without a query (or with a bad one)
         // keeps its address until a slider moves.
-        std::string shown = fv::share_link(o.start.model, o.start.params);
+        std::string shown = fv::share_link(o.start.model, o.start.params, o.start.start);
         o.on_state = [&shown](const fv::app::UiState& ui) {
-            std::string link = fv::share_link(ui.model, ui.params);
+            std::string link = fv::share_link(ui.model, ui.params, ui.start);
             if (link == shown) return;
             shown = std::move(link);
             fv_replace_page_query(shown.c_str());

@@ -104,7 +104,8 @@ Frames::Frames(const Spec& spec)
     const SteadyResult steady = steady_ratio(spec.model, spec.params, spec.steady);
     rx_ = steady.rx;
     if (spec.view == View::dashboard)
-        curves_ = app::compute_ratio_curves({spec.model, spec.params, false, app::ratio_zeta_max(nullptr)});
+        curves_ = app::compute_ratio_curves(
+            {spec.model, spec.params, false, app::ratio_zeta_max(nullptr), spec.steady.start});
     // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
     // stepping settle on its fixed point, a whole number of periods at a time.
     Vec2 lag = Vec2::Zero();
@@ -234,6 +235,7 @@ app::AnimationExporter app_exporter() {
         s.format = *format;
         s.model = r.model;
         s.params = r.params;
+        s.steady.start = r.start;
         s.periods = r.periods;
         s.fps = r.fps;
         s.speed = r.speed;

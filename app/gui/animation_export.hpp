@@ -6,6 +6,7 @@
 #pragma once
 
 #include "fv/params.hpp"
+#include "fv/steady_state.hpp" // Start
 
 #include <atomic>
 #include <functional>
@@ -28,6 +29,7 @@ struct AnimationRequest {
     int width = 960, height = 600;
     Model model = Model::dahl; // filled in by AppState::sync: the parameters in effect
     Params params;
+    Start start = Start::rest; // the history: which of coexisting steady states the loop shows
     double vv_m_s = 0;
 };
 

@@ -45,7 +45,7 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
     const std::string loaded = data ? show_measured(ui_, std::move(*data)) : "";
     sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
     sim_.apply(ui_.model, ui_.params);
-    sim_.reset();
+    sim_.reset(ui_.start);
     step_carry_ = 0;
     step_pending_ = false;
     refresh_units();
@@ -54,7 +54,8 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
 }
 
 RatioRequest AppState::ratio_request() const {
-    return RatioRequest{ui_.model, ui_.params, ui_.show_map, ratio_zeta_max(ui_.data ? &*ui_.data : nullptr)};
+    return RatioRequest{ui_.model, ui_.params, ui_.show_map, ratio_zeta_max(ui_.data ? &*ui_.data : nullptr),
+                        ui_.start};
 }
 
 void AppState::refresh_units() {
@@ -96,6 +97,15 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     }
     bool model_changed = false, data_changed = false;
     if (model && *model != ui_.model) ui_.model = *model, model_changed = true;
+    // Another start: the motion begins again from it (the teaching moment: switched to sliding, the
+    // students see it end in the other state where two coexist), and the readouts report its state.
+    bool start_changed = false;
+    if (e.start && *e.start != ui_.start) {
+        ui_.start = *e.start, start_changed = reset = true;
+        ui_.status = ui_.start == Start::sliding
+                         ? "started again from steady sliding: the asperity fully deflected against v_b"
+                         : "started again from rest: the asperity unstretched (the paper's start)";
+    }
     // Parameters and their physical inputs: one candidate, checked once against the range table.
     if (params || e.vb_m_s || e.zss_um) {
         Params p = params.value_or(ui_.params);
@@ -151,9 +161,9 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
         sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
     }
     if (model_changed) sim_.apply(ui_.model, ui_.params);
-    if (model_changed || ask_worker || data_changed) worker_.request(ratio_request());
+    if (model_changed || ask_worker || data_changed || start_changed) worker_.request(ratio_request());
     if (e.pin) pin_current_curve(wait); // the curve of this frame's parameters (scripts wait for it)
-    if (reset) sim_.reset(), step_carry_ = 0;
+    if (reset) sim_.reset(ui_.start), step_carry_ = 0;
     // Time: any change of the model or a reset shows the live state again; scrubbing and stepping back
     // pause, so that the moment stays on screen.
     if (model_changed || reset) ui_.view.rewind = 0;
@@ -168,6 +178,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (act.export_animation) {
         act.export_animation->model = ui_.model;
         act.export_animation->params = ui_.params;
+        act.export_animation->start = ui_.start;
         act.export_animation->vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
     }
     return act;
@@ -213,7 +224,9 @@ void AppState::pin_current_curve(bool wait) {
     PinnedCurve pin;
     pin.label =
         std::string(rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.3g", p.theta * 180 / kPi) + "°" +
-        (rigid ? "" : ", r_{disp} = " + format_number("%.3g", p.rdisp) + ", i = " + format_number("%g", p.i));
+        (rigid ? ""
+               : ", r_{disp} = " + format_number("%.3g", p.rdisp) + ", i = " + format_number("%g", p.i)) +
+        (rigid || ui_.start == Start::rest ? "" : ", from sliding");
     pin.zeta = curves->zetas;
     pin.rx = rigid ? curves->rigid_rx : curves->model_rx;
     ui_.status = "pinned: " + pin.label;
@@ -226,7 +239,9 @@ void AppState::jump_to_steady() {
         ui_.status = "the rigid model has no transient: its friction follows the velocity at once";
         return;
     }
-    const OdeSolution s = ode_solve(ui_.params);
+    OdeOptions opt;
+    opt.start = ui_.start; // the state the chosen start reaches, where two coexist
+    const OdeSolution s = ode_solve(ui_.params, opt);
     if (!ok(s.result.status) || !std::isfinite(s.lag.x()) || !std::isfinite(s.lag.y())) {
         ui_.status =
             std::string("no verified steady state to jump to here (") + to_string(s.result.status) + ")";

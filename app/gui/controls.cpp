@@ -16,6 +16,7 @@ namespace fv::app {
 
 void UiEdits::merge(const UiEdits& o) {
     if (o.model) model = o.model;
+    if (o.start) start = o.start;
     if (o.params) params = o.params, vb_m_s.reset(), zss_um.reset();
     if (o.vb_m_s) vb_m_s = o.vb_m_s;
     if (o.zss_um) zss_um = o.zss_um;

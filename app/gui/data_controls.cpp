@@ -201,23 +201,25 @@ UiEdits draw_file_dialogs(FileDialogs& dialog) {
                                   "CSV with a header: zeta,r_x or vb,r_x (v_b converted with the A and f "
                                   "set in the panel); optional theta_deg, sigma, label.",
                                   ".csv", "Open"});
-    e.open_session = path_dialog(
-        dialog.open_session, {"Open session",
-                              "A session file (JSON) saved by File > Save session: parameters, model, units, "
-                              "animation, view and data file. The animation restarts from it.",
-                              ".json", "Open"});
+    e.open_session =
+        path_dialog(dialog.open_session,
+                    {"Open session",
+                     "A session file (JSON) saved by File > Save session: parameters, model, start, units, "
+                     "animation, view and data file. The animation restarts from it.",
+                     ".json", "Open"});
     if (dialog.save_session.open_requested && dialog.save_session.path.empty())
         dialog.save_session.path = "frictionviz-session.json";
-    e.save_session = path_dialog(
-        dialog.save_session, {"Save session",
-                              "Saves parameters, model, units, animation, view and the data file's path as "
-                              "JSON (File > Open session, or frictionviz gui --session FILE).",
-                              ".json", "Save"});
+    e.save_session =
+        path_dialog(dialog.save_session,
+                    {"Save session",
+                     "Saves parameters, model, start, units, animation, view and the data file's path as "
+                     "JSON (File > Open session, or frictionviz gui --session FILE).",
+                     ".json", "Save"});
     return e;
 }
 
 void draw_share_link(const UiState& ui) {
-    std::string link = share_link(ui.model, ui.params);
+    std::string link = share_link(ui.model, ui.params, ui.start);
     // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
     // height, so the panel's rows below stay where they are.
     const ImGuiStyle& st = ImGui::GetStyle();
@@ -227,7 +229,8 @@ void draw_share_link(const UiState& ui) {
                             2 * st.FramePadding.x - st.ItemSpacing.x);
     ImGui::InputText("##link", &link, ImGuiInputTextFlags_ReadOnly);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Share link: the model and its parameters (θ in degrees)\n%s\n"
+        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees) and the start when it is not "
+                          "from rest\n%s\n"
                           "frictionviz gui --link '%s' starts from it, and the browser version reads the "
                           "same keys from its address.",
                           link.c_str(), link.c_str());

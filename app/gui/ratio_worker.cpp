@@ -5,6 +5,7 @@
 #include "fv/rigid.hpp"
 #include "fv/sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #if defined(__linux__)
@@ -14,6 +15,26 @@
 #endif
 
 namespace fv::app {
+
+SteadyOptions current_point_options(const RatioRequest& req) {
+    SteadyOptions opt;
+    opt.start = req.start;
+    opt.list_states = req.model == Model::dahl;
+    return opt;
+}
+
+int state_of_motion(const std::vector<SteadyState>& states, double mean_fx, double tolerance) {
+    if (!std::isfinite(mean_fx)) return -1;
+    int best = -1;
+    double best_d = HUGE_VAL, gap = HUGE_VAL;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        const double d = std::abs(states[k].rx - mean_fx);
+        if (d < best_d) best_d = d, best = static_cast<int>(k);
+        for (std::size_t m = k + 1; m < states.size(); ++m)
+            gap = std::min(gap, std::abs(states[k].rx - states[m].rx));
+    }
+    return best >= 0 && best_d <= std::min(tolerance, gap / 3) ? best : -1;
+}
 
 RatioJob::RatioJob(const RatioRequest& req, bool with_map, const std::optional<PanelData>& reuse) {
     out_.request = req;
@@ -44,7 +65,7 @@ bool RatioJob::step() {
     const RatioRequest& req = out_.request;
     switch (stage_) {
     case Stage::start:
-        out_.current = steady_ratio(req.model, req.params);
+        out_.current = steady_ratio(req.model, req.params, current_point_options(req));
         out_.zetas = ratio_zeta_grid(req.zeta_max);
         for (double z : out_.zetas) out_.rigid_rx.push_back(rigid_ratio(z, req.params.theta).rx);
         next_stage();
@@ -54,6 +75,7 @@ bool RatioJob::step() {
         // NaN leaves a gap in the curve.
         SteadyOptions opt;
         opt.record_period = false;
+        opt.start = req.start;
         const Params p{out_.zetas[next_], req.params.theta, req.params.rdisp, req.params.i};
         const SteadyResult r = steady_ratio(Model::dahl, p, opt);
         const bool good = ok(shown_status(r));

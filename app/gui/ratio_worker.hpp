@@ -28,12 +28,19 @@ struct RatioRequest {
     Params params;
     bool map = false;    // also the (zeta, theta) map for params.rdisp, params.i (Dahl only; ~1-3 s)
     double zeta_max = 3; // the curves reach this far (further when measured points do)
+    // The history: which of coexisting steady states the current point and the curve report (the map is
+    // from rest, the paper's start).
+    Start start = Start::rest;
     bool operator==(const RatioRequest& o) const {
         return model == o.model && params.zeta == o.params.zeta && params.theta == o.params.theta &&
                params.rdisp == o.params.rdisp && params.i == o.params.i && map == o.map &&
-               zeta_max == o.zeta_max;
+               zeta_max == o.zeta_max && start == o.start;
     }
 };
+
+// The options the current point is computed with: the request's start, and every stable state listed
+// (SteadyResult::states; the Dahl model).
+SteadyOptions current_point_options(const RatioRequest& req);
 
 // The status a result is shown with: the solver's, or non_finite when it vouches for an r_x or r_y that is
 // not a finite number (as the command line reports it). Only SteadyStatus::converged is a verified value.
@@ -47,8 +54,9 @@ struct RatioCurves {
     std::vector<double> zetas, model_rx, rigid_rx; // model_rx empty for the rigid model; NaN where the
                                                    // point failed (a gap in the drawn curve)
     int model_failed = 0;                          // points of model_rx that failed (shown_status not ok)
-    SteadyResult current;                          // the steady state at request.params
-    std::optional<PanelData> map;                  // the map panel when asked for
+    SteadyResult current;         // the steady state at request.params from request.start, with every stable
+                                  // state found there in current.states (both starts searched)
+    std::optional<PanelData> map; // the map panel when asked for
 };
 
 // One request's work in small steps, on whichever thread calls step(): the steady state at the parameters
@@ -75,6 +83,30 @@ class RatioJob {
     SteadyOptions map_options_;
     std::vector<SweepPoint> cells_;
 };
+
+// The stable steady states at the current point when more than one coexists (by r_x, as the solver lists
+// them), else none: the app then shows each and which one the animation is in.
+inline const std::vector<SteadyState>& coexisting_states(const RatioCurves& c) {
+    static const std::vector<SteadyState> none;
+    return c.current.states.size() >= 2 ? c.current.states : none;
+}
+
+// The start that reaches a state, in words: "from rest", "from sliding", "from both starts" or "from neither
+// start" (a state the search found without evidence that either start's motion arrives there).
+inline const char* reached_from(const SteadyState& s) {
+    return s.from_rest && s.from_sliding ? "from both starts"
+           : s.from_rest                 ? "from rest"
+           : s.from_sliding              ? "from sliding"
+                                         : "from neither start";
+}
+
+// Which of `states` a motion whose last period's mean of F_x is `mean_fx` is in: the index of the nearest
+// r_x when it lies within `tolerance` of it and nearer to it than to any other (at most a third of the gap
+// to the next state), else -1 (still settling, or no period completed: NaN).
+int state_of_motion(const std::vector<SteadyState>& states, double mean_fx, double tolerance);
+// The app's tolerance for it: the animation steps the paper's scheme at a fixed step, whose periodic state's
+// mean differs from the solver's r_x by a few 1e-3 (docs/app.md).
+inline constexpr double kMotionStateTolerance = 1e-2;
 
 // The curves and the steady state at req.params (not the map), on the calling thread. `outdated` (may be
 // empty) is asked between the steps; when it says true the rest is skipped and the result is incomplete.

@@ -62,6 +62,15 @@ const ScriptAction kActions[] = {
      {},
      "dahl | rigid",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.model = *parse_model(s.text); }},
+    {"start",
+     ScriptArg::word,
+     {},
+     "rest | sliding: the motion starts again from it",
+     [](const ScriptEntry& s, ScriptContext& c) {
+         Start start = Start::rest;
+         parse_start(s.text, start);
+         c.edits.start = start;
+     }},
     {"vb", ScriptArg::number, kVbRange, "v_b in m/s (with the A and f in effect, as the panel's input)",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.vb_m_s = s.number; }},
     {"zss", ScriptArg::number, kZssRange, "z_ss in um (with the A in effect)",
@@ -225,6 +234,10 @@ std::string preset_ids() {
 std::string word_error(const ScriptAction& a, const std::string& v) {
     if (std::string(a.name) == "model")
         return parse_model(v) ? "" : "model = " + quoted_text(v) + "; allowed: dahl, rigid";
+    if (std::string(a.name) == "start") {
+        Start unused = Start::rest;
+        return parse_start(v, unused) ? "" : "start = " + quoted_text(v) + "; allowed: " + kStartNames;
+    }
     for (const FigureSpec* f : presets())
         if (f->id == v) return "";
     return "unknown preset " + quoted_text(v) + "; allowed: " + preset_ids();

@@ -341,6 +341,7 @@ std::string session_json(const Session& s) {
     j["theta"] = theta_degrees(s.params.theta);
     j["rdisp"] = s.params.rdisp;
     j["i"] = s.params.i;
+    j["start"] = to_string(s.start);
     j["amplitude_um"] = s.amplitude_um;
     j["frequency_khz"] = s.frequency_khz;
     j["speed"] = s.speed;
@@ -446,8 +447,8 @@ Session parse_session(const std::string& text, const std::string& file) {
         r.fail_at(pos.duplicate(),
                   "key \"" + pos.duplicate().substr(1) + "\" is given twice; each key at most once", true);
     r.only(j, "",
-           {"version", "model", "zeta", "theta", "rdisp", "i", "amplitude_um", "frequency_khz", "speed",
-            "playing", "panel", "view", "pins", "data"});
+           {"version", "model", "zeta", "theta", "rdisp", "i", "start", "amplitude_um", "frequency_khz",
+            "speed", "playing", "panel", "view", "pins", "data"});
     if (!j.contains("version"))
         r.fail_at("", "no \"version\"; a frictionviz session starts {\"version\": " +
                           std::to_string(kSessionVersion) + ", ...}");
@@ -466,6 +467,10 @@ Session parse_session(const std::string& text, const std::string& file) {
     if (j.contains("theta")) s.params.theta = theta_deg * kPi / 180;
     r.get(j, "", "rdisp", s.params.rdisp, kRdispRange);
     r.get(j, "", "i", s.params.i, kIRange);
+    // The history; a session saved before the start could be chosen has none: rest, as it was then.
+    std::string start = to_string(s.start);
+    r.get(j, "", "start", start, one_of("start", {"rest", "sliding"}));
+    parse_start(start, s.start);
     r.get(j, "", "amplitude_um", s.amplitude_um, kAmplitudeRange);
     r.get(j, "", "frequency_khz", s.frequency_khz, kFrequencyRange);
     // The physical view the app shows (v_v, v_b, z_ss) must be finite, as for the command line's flags.

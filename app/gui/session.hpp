@@ -7,6 +7,7 @@
 //     "model": "dahl",                         dahl | rigid
 //     "zeta": 0.15, "theta": 90,               the share link's keys (theta in degrees), same ranges
 //     "rdisp": 2, "i": 1,
+//     "start": "rest",                         rest | sliding: the history (which steady state)
 //     "amplitude_um": 0.7, "frequency_khz": 60, the vibration behind the physical units
 //     "speed": 0.25, "playing": true,          animation: vibration periods per second, running or paused
 //     "panel": "curves",                       lower right: curves | map | loop | why (mechanism)
@@ -39,6 +40,7 @@ inline constexpr int kSessionVersion = 1;
 struct Session {
     Model model = Model::dahl;
     Params params = UiState{}.params;
+    Start start = Start::rest; // optional in the file (sessions before it: rest)
     double amplitude_um = UiState{}.amplitude_um, frequency_khz = UiState{}.frequency_khz;
     double speed = UiState{}.speed;
     bool playing = true;
@@ -53,6 +55,7 @@ struct Session {
 template <class To, class From> void copy_session_fields(To& to, const From& from) {
     to.model = from.model;
     to.params = from.params;
+    to.start = from.start;
     to.amplitude_um = from.amplitude_um;
     to.frequency_khz = from.frequency_khz;
     to.speed = from.speed;

@@ -7,6 +7,7 @@
 
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
+#include "fv/steady_state.hpp" // Start
 
 #include <optional>
 #include <string>
@@ -17,6 +18,9 @@ namespace fv::app {
 struct UiState {
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
+    // The history (docs/model.md, "Which steady state"): where the animation starts (reset, a new start) and
+    // which of coexisting steady states the readouts and the r_x(zeta) curve report.
+    Start start = Start::rest;
     bool playing = true;
     bool show_map = false;  // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
@@ -43,6 +47,7 @@ struct UiState {
 
 struct UiEdits {
     std::optional<Model> model;
+    std::optional<Start> start; // another start restarts the animation from it
     std::optional<Params> params;
     std::optional<bool> playing, show_map, show_help, show_loop, show_mechanism, presentation;
     std::optional<double> speed, trail_periods;
@@ -70,7 +75,8 @@ struct UiEdits {
     void merge(const UiEdits& o);
     // Whether these edits may change the model or its parameters, and so the r_x(zeta) curves.
     bool moves_curves() const {
-        return model || params || amplitude_um || frequency_khz || vb_m_s || zss_um || open_session || preset;
+        return model || start || params || amplitude_um || frequency_khz || vb_m_s || zss_um ||
+               open_session || preset;
     }
 };
 
