@@ -77,6 +77,36 @@ void range_tooltip(const char* meaning, ParamRange slider, ParamRange allowed) {
                       describe(allowed).c_str());
 }
 
+// Where more than one stable steady state coexists (below the start control, which picks between them):
+// each r_x with the start that reaches it, and which one the animation is in (its last period's mean F_x
+// nearest a state's r_x), or that it is still settling.
+void draw_coexisting_states(const std::optional<RatioCurves>& curves, const LiveSim& sim) {
+    if (!curves) return;
+    const std::vector<SteadyState>& states = coexisting_states(*curves);
+    if (states.empty()) return;
+    const Params& q = curves->request.params;
+    const Params& p = sim.params();
+    // The animation is only compared with the states of its own parameters (not a result still computing).
+    const bool current = curves->request.model == sim.model() && q.zeta == p.zeta && q.theta == p.theta &&
+                         q.rdisp == p.rdisp && q.i == p.i;
+    const int in = current ? state_of_motion(states, sim.last_period_mean().x(), kMotionStateTolerance) : -1;
+    ImGui::TextColored(ImVec4(0.0f, 0.35f, 0.7f, 1.0f), "%zu stable steady states here:", states.size());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%zu periodic motions are stable at these parameters; where the motion starts "
+                          "decides which one it ends in. The readouts and the r_x(ζ) curve are the one "
+                          "reached from %s. The animation is in the state whose r_x its last period's mean "
+                          "F_x is nearest (within %.2g).",
+                          states.size(), curves->request.start == Start::sliding ? "sliding" : "rest",
+                          kMotionStateTolerance);
+    // Wrapped, never clipped: the panel's width in characters is smaller in presentation mode.
+    ImGui::Indent();
+    for (std::size_t k = 0; k < states.size(); ++k)
+        ImGui::TextWrapped("r_x %s  %s%s", format_number("%.4f", states[k].rx).c_str(),
+                           reached_from(states[k]), static_cast<int>(k) == in ? "  ← animation" : "");
+    if (in < 0 && current) ImGui::TextWrapped("the animation is still settling");
+    ImGui::Unindent();
+}
+
 } // namespace
 
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
@@ -135,6 +165,24 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "%s", "Coulomb friction, F_c against the velocity at every instant (Eq. 2; r_disp -> infinity)");
+    // The history (docs/model.md, "Which steady state"): it decides which steady state the motion reaches
+    // where two coexist. The rigid model has no deflection to start from, so no choice there.
+    if (!dahl) ImGui::BeginDisabled();
+    const char* starts[] = {"from rest (paper)", "switched on while sliding"};
+    int start = ui.start == Start::sliding ? 1 : 0;
+    if (ImGui::Combo("start", &start, starts, 2)) e.start = start == 1 ? Start::sliding : Start::rest;
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip(
+            "%s",
+            "Where the motion starts. Where two stable steady states coexist, this history decides which "
+            "one the motion ends in (a hysteresis).\n"
+            "from rest (the paper's start): sliding and vibration begin together, the asperity unstretched "
+            "(T = P, no force).\n"
+            "switched on while sliding: the body already slides steadily, the asperity fully deflected "
+            "against v_b (P - T = z_ss along v_b, the force F_c); then the vibration is switched on.\n"
+            "Choosing one starts the motion again from it; r_x and the r_x(ζ) curve are that start's.");
+    if (!dahl) ImGui::EndDisabled();
+    if (dahl) draw_coexisting_states(curves, sim);
     if (changed) {
         p.theta = theta_deg * kPi / 180;
         e.params = p;
@@ -162,7 +210,10 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         e.playing = !ui.playing;
     ImGui::SameLine();
     if (ImGui::Button("Reset [R]")) e.reset = true;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", "start again from an unstretched asperity at time 0");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s",
+                          "start again at time 0 from the start chosen above (from rest: an unstretched "
+                          "asperity; while sliding: fully deflected against v_b)");
     ImGui::SameLine();
     if (ImGui::Button("Steady state [J]")) e.jump_steady = true;
     if (ImGui::IsItemHovered())
@@ -208,12 +259,20 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     const double mean = sim.last_period_mean().x();
     if (std::isfinite(mean)) {
         const bool settled = curves && std::abs(mean - curves->current.rx) < 2e-3;
+        // Where two states coexist the motion may settle in the one the start does not reach (a parameter
+        // moved during the run): that is steady too, not a transient.
+        const int in = curves ? state_of_motion(coexisting_states(*curves), mean, kMotionStateTolerance) : -1;
+        const bool other = in >= 0 && std::abs(coexisting_states(*curves)[static_cast<std::size_t>(in)].rx -
+                                               curves->current.rx) > 1e-6;
         ImGui::Text("period mean F_x %s%s", format_number("%.4f", mean).c_str(),
-                    curves ? (settled ? " = r_x: steady" : " ≠ r_x: transient") : "");
+                    curves ? (settled ? " = r_x: steady"
+                              : other ? ": another stable state"
+                                      : " ≠ r_x: transient")
+                           : "");
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip(
                 "The mean of F_x over the last animated period (Eq. 30) approaches the steady r_x "
-                "as the motion settles from its start (an unstretched asperity). Until then "
+                "as the motion settles from its start (the start control). Until then "
                 "they differ; 'Steady state [J]' skips the transient. A few 1e-3 remain from "
                 "the animation's %d steps per period.",
                 sim.steps_per_period());

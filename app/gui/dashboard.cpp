@@ -315,6 +315,7 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
     panel.title = std::string(busy ? "updating…  " : "") +
                   "r_{x} = " + format_number("%.4f", curves->current.rx) +
                   ",  r_{y} = " + format_number("%.4f", curves->current.ry) +
+                  (curves->request.start == Start::sliding ? "  from sliding" : "") +
                   (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
     if (!curves->model_rx.empty())
         panel.series.push_back(
@@ -334,6 +335,21 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
     // The current point: a cross instead of the diamond when the solver does not vouch for it.
     panel.points.push_back(
         {Vec2(p.zeta, curves->current.rx), Ink::tip, ok(st) ? Mark::diamond : Mark::cross, "", 12});
+    // Where another stable state coexists: a circle at its r_x, each point named by the start reaching it,
+    // the label towards the other states (off the flat parts of the curve at r_x = 0 and 1).
+    const std::vector<SteadyState>& states = coexisting_states(*curves);
+    if (!states.empty()) {
+        const double mid = 0.5 * (states.front().rx + states.back().rx); // ordered by r_x
+        const std::size_t current = panel.points.size() - 1;             // the diamond
+        for (const SteadyState& s : states) {
+            const bool reported = std::abs(s.rx - curves->current.rx) <= 1e-6;
+            if (!reported) panel.points.push_back({Vec2(p.zeta, s.rx), Ink::tip, Mark::circle, "", 11});
+            PointData& point = reported ? panel.points[current] : panel.points.back();
+            point.label = reached_from(s);
+            point.label_dx = 1;
+            point.label_dy = s.rx > mid ? 1 : -1;
+        }
+    }
     return panel;
 }
 
