@@ -2,8 +2,8 @@
 # The browser's file input and downloads (tests/web/file_io.html drives the File menu with mouse events):
 # Export trace CSV reaches the browser as a text/csv Blob with the trace's header; Open data file… takes a
 # CSV through the page's file input into the same reader as the desktop app's: the page's screenshot against
-# `gui --headless --frames 600 --data FILE` (the status line names the file by another path: counted among
-# the differences), with the tolerance of app_page_vs_headless.sh. On a HiDPI screen (devicePixelRatio 2,
+# `gui --headless --frames 600 --data FILE` of the same file under the same name, with the tolerance of
+# app_page_vs_headless.sh. On a HiDPI screen (devicePixelRatio 2,
 # against --scale 2): the clicks, in CSS pixels, must land on the menu drawn at twice the pixels.
 #   file_io_page.sh SITE_DIR FRICTIONVIZ FV_PNG_COMPARE OUTDIR DATA_CSV
 set -euo pipefail
@@ -23,5 +23,7 @@ grep -q 'fv-io: download text/csv [1-9][0-9]* bytes, first line tau,Px,Py,Tx,Ty,
 grep -q 'fv-io: file input opened, accept .csv' "$out/file-io-console.txt" ||
   { echo "File > Open data file… did not open the browser's file input" >&2; fail=1; }
 [ "$fail" -eq 0 ] || exit 1
-"$exe" gui --headless --frames 600 --scale 2 --data "$data" --screenshot "$out/file-io-headless.png" >/dev/null
+# The same file name as the page's (data.csv): the status line and the panel's rows are then the same (a
+# longer name wrapped the status line onto a second row, and the panel grew a scrollbar the page did not have).
+"$exe" gui --headless --frames 600 --scale 2 --data "$tmp/data.csv" --screenshot "$out/file-io-headless.png" >/dev/null
 "$compare" "$out/file-io-web.png" "$out/file-io-headless.png" 32 0.03 "$out/file-io-web-vs-headless.diff.png"
