@@ -97,3 +97,24 @@ TEST_CASE("theta = 0: the recorded steady period follows the exact lag L(tau)", 
         CHECK(worst > 0); // a discrete scheme is never exact; guards against comparing a thing with itself
     }
 }
+
+// Just below zeta = 1 the body's velocity zeta + cos tau turns negative only for 2 acos(zeta) around
+// tau = pi (0.089 at zeta = 0.999), a fraction of the solver's longest step (0.5): the tip leaves the circle
+// there, and after it creeps back. A dip stepped over left the tip on the circle (r_x = 1, off by 2e-4 with
+// an estimate of 1e-10, seen in fig12 at zeta = 0.9984375). The exact steady state, every zeta of fig12's
+// refinement near 1 and a few more.
+TEST_CASE("theta = 0, zeta just below 1: a velocity reversal shorter than a step is not stepped over",
+          "[theta0][exact]") {
+    for (double rdisp : {2.0, 20.0, 100.0})
+        for (double zeta : {0.998, 0.9984375, 0.999, 0.99921875, 0.9995, 0.9999}) {
+            CAPTURE(rdisp, zeta);
+            const auto res = fv::steady_ratio(fv::Model::dahl, {zeta, 0.0, rdisp, 1.0}); // the ode solver
+            CAPTURE(fv::status_word(res), res.rx, res.error_estimate);
+            const double e = fv::ref::rx_theta0_i1(zeta, rdisp);
+            CAPTURE(e);
+            REQUIRE(fv::ok(res.status));
+            CHECK(e < 1); // the reversal is there
+            CHECK(std::abs(res.rx - e) <= fv::kErrorSafety * res.error_estimate + 1e-12);
+            CHECK(std::abs(res.rx - e) <= 1e-8);
+        }
+}

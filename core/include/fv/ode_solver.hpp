@@ -37,6 +37,8 @@ struct OdeOptions {
     int record_samples = 1024;       // samples at tau = 2 pi k / n, k = 1..n (like Eq. (30))
     Start start = Start::rest;       // the history whose steady state is reported
     bool list_states = false;        // search from the other start too and list every stable state found
+    bool list_states_after_failure = true; // also where this start's search failed (the map, which marks such
+                                           // a cell as failed anyway, saves the second search there)
 };
 
 // Instants where the lag's law changes.

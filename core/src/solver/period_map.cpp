@@ -99,29 +99,95 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
         // needed only where some function comes near its zero: at the step's start and at the three stages
         // (where the law is known already) each must stay on its side by a quarter of its largest size there.
         const double tn[4] = {tau, tau + RadauTableau::c1 * hh, tau + RadauTableau::c2 * hh, tau + hh};
+        // Also the cubic through the four values must stay on its side: four values well clear of zero
+        // can straddle a dip between them (v = zeta + cos tau near tau = pi for zeta just below 1).
         bool clear = true;
         for (int j = 0; j < n_ev && clear; ++j) {
-            double lo = std::numeric_limits<double>::infinity(), big = 0;
+            double lo = std::numeric_limits<double>::infinity(), big = 0, gv[4];
             for (int k = 0; k < 4; ++k) {
-                const double gk = evs[j].sign * g(j, tn[k], k == 0 ? st.p0 : st.pz[k - 1]);
-                lo = std::min(lo, gk);
-                big = std::max(big, std::abs(gk));
+                gv[k] = evs[j].sign * g(j, tn[k], k == 0 ? st.p0 : st.pz[k - 1]);
+                lo = std::min(lo, gv[k]);
+                big = std::max(big, std::abs(gv[k]));
             }
             clear = lo >= 0.25 * big + evs[j].noise;
+            for (int q = 1; q < 32 && clear; ++q) {
+                const double t = tau + q * hh / 32;
+                double cubic = 0;
+                for (int k = 0; k < 4; ++k) {
+                    double w = gv[k];
+                    for (int m = 0; m < 4; ++m)
+                        if (m != k) w *= (t - tn[m]) / (tn[k] - tn[m]);
+                    cubic += w;
+                }
+                clear = cubic >= 0.25 * lo + evs[j].noise;
+            }
         }
         int hit = -1;
         double s_lo = 0, s_hi = 0;
+        // g_j at s of the step (the dense output; the step's end is its last stage).
+        auto g_at = [&](int j, double s) {
+            return evs[j].sign * (s == 1 ? g(j, tau + hh, st.pz[2]) : g(j, tau + s * hh, st.at(s)));
+        };
         for (int k = clear ? kProbes : 1; k <= kProbes && hit < 0; ++k) {
             const double s = static_cast<double>(k) / kProbes;
-            const Vec ys = k == kProbes ? st.y1() : st.at(s);
             for (int j = 0; j < n_ev; ++j)
-                if (evs[j].sign * (k == kProbes ? g(j, tau + s * hh, st.pz[2]) : g(j, tau + s * hh, ys)) <
-                    -evs[j].noise) {
+                if (g_at(j, s) < -evs[j].noise) {
                     hit = j;
                     s_lo = static_cast<double>(k - 1) / kProbes;
                     s_hi = s;
                     break;
                 }
+        }
+        if (hit < 0 && !clear) {
+            // No probe is off its side, yet a function came near its zero: it may dip below and come back
+            // between probes (theta = 0, zeta just below 1: v = zeta + cos tau < 0 for 2 sqrt(2 (1 - zeta))
+            // around tau = pi, 0.11 at zeta = 0.9984 against steps of 0.5; missed, the tip stayed on the
+            // circle and r_x came out 1 instead of 0.99955). Each function's smallest value over the step
+            // is found (finer probes, then golden section around the least); a dip below is an event, its
+            // first crossing before the minimum.
+            constexpr int kFine = 16;
+            for (int j = 0; j < n_ev; ++j) {
+                int k_min = 0;
+                double g_min = g_at(j, 0);
+                int k_off = -1; // the first fine probe off its side
+                for (int k = 1; k <= kFine && k_off < 0; ++k) {
+                    const double gk = g_at(j, static_cast<double>(k) / kFine);
+                    if (gk < g_min) g_min = gk, k_min = k;
+                    if (gk < -evs[j].noise) k_off = k;
+                }
+                if (k_off > 0) {
+                    const double s_off = static_cast<double>(k_off) / kFine;
+                    if (hit < 0 || s_off < s_hi) {
+                        hit = j;
+                        s_hi = s_off;
+                        s_lo = static_cast<double>(k_off - 1) / kFine;
+                    }
+                    continue;
+                }
+                double a = std::max(0, k_min - 1) / static_cast<double>(kFine);
+                double b = std::min(kFine, k_min + 1) / static_cast<double>(kFine);
+                constexpr double kGold = 0.6180339887498949;
+                double c = b - kGold * (b - a), d = a + kGold * (b - a);
+                double gc = g_at(j, c), gd = g_at(j, d);
+                for (int it = 0; it < 60 && b - a > 1e-12 && gc >= -evs[j].noise && gd >= -evs[j].noise;
+                     ++it) {
+                    if (gc < gd) {
+                        b = d, d = c, gd = gc;
+                        c = b - kGold * (b - a);
+                        gc = g_at(j, c);
+                    } else {
+                        a = c, c = d, gc = gd;
+                        d = a + kGold * (b - a);
+                        gd = g_at(j, d);
+                    }
+                }
+                const double s_min = gc < gd ? c : d;
+                if (std::min(gc, gd) < -evs[j].noise && (hit < 0 || s_min < s_hi)) {
+                    hit = j;
+                    s_hi = s_min;
+                    s_lo = std::floor(s_min * kFine) / kFine; // a probe, and every probe is on its side
+                }
+            }
         }
         if (hit >= 0) {
             // Earliest crossing in (s_lo, s_hi] among the functions that leave their side there.
@@ -140,7 +206,9 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
                     double c = (a * fb - b * fa) / (fb - fa);
                     if (!(c > a && c < b)) c = 0.5 * (a + b);
                     const double fc = gj(c);
-                    if (fc > 0) {
+                    // On its side as the event test defines it: a phase that starts exactly on the
+                    // function's zero (v = 0 where the tip just left the circle) is not an event at once.
+                    if (fc >= -evs[j].noise) {
                         a = c;
                         fa = fc;
                         if (side == -1) fb *= 0.5;

@@ -260,7 +260,7 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     if (ok(state.status)) add_state(list, listed(state, r), opt.start, state.reached);
     for (const Orbit& o : others)
         if (ok(o.status)) add_state(list, listed(o, r), opt.start, false);
-    if (opt.list_states) {
+    if (opt.list_states && (opt.list_states_after_failure || ok(state.status))) {
         // The other start's state: only to list it (its period is not recorded).
         const Start other = opt.start == Start::rest ? Start::sliding : Start::rest;
         OdeOptions o2 = opt;
