@@ -295,3 +295,60 @@ TEST_CASE("Fig. 5: the rigid theta = 0 curve is sampled up to its corner at zeta
     // The table holds the samples drawn.
     CHECK(d.tables.at(0).ratios.size() >= s.x.size());
 }
+
+// The map takes the history (--start) and marks the cells one colour does not describe. References: the
+// two coexisting states at zeta = 0.075, theta = 90 deg, rdisp = 0.1, i = 5 (0.0341771 from rest, 0.9975079
+// from sliding: the brute-force RK4 integrator, tests/data/steady_reference.csv) and the period-2 orbit at
+// zeta = 0.405, theta = 32 deg, rdisp = 2, i = 10 (0.2149399, same source).
+TEST_CASE("Map: the start picks the state shown, two-state and period-k cells are marked", "[figures][map]") {
+    auto marks = [](const fv::PanelData& panel, const std::string& label) {
+        for (const fv::SeriesData& s : panel.series)
+            if (s.label.find(label) != std::string::npos) return s;
+        return fv::SeriesData{};
+    };
+    for (const fv::Start start : {fv::Start::rest, fv::Start::sliding}) {
+        fv::FigureSpec spec = fv::map_figure(0.1, 5, start);
+        CHECK(spec.start == start);
+        CHECK((spec.title.find("while sliding") != std::string::npos) == (start == fv::Start::sliding));
+        spec.zetas = {0.05, 0.075};
+        spec.theta_count = 3; // 0, 45, 90 deg
+        const auto d = fv::compute_figure(spec, 2);
+        const auto& panel = d.panels.at(0);
+        const std::size_t cell = 2 * 2 + 1; // theta 90, zeta 0.075
+        CHECK(panel.heatmap->values[cell] ==
+              Approx(start == fv::Start::rest ? 0.0341771 : 0.9975079).margin(1e-6));
+        CHECK(d.tables.at(0).ratios[cell].result.states.size() == 2);
+        const fv::SeriesData two = marks(panel, "2 stable states");
+        REQUIRE(!two.x.empty());
+        bool marked = false;
+        for (std::size_t k = 0; k < two.x.size(); ++k) marked = marked || (two.x[k] == 0.075 && two.y[k] == 90);
+        CHECK(marked);
+        CHECK(two.width == 0); // marks, no line
+    }
+    fv::FigureSpec spec = fv::map_figure(2, 10);
+    spec.zetas = {0.405, 0.5};
+    spec.theta_count = 2; // 0 and 32 deg
+    spec.theta_max_deg = 32;
+    const auto d = fv::compute_figure(spec, 2);
+    const auto& panel = d.panels.at(0);
+    CHECK(panel.heatmap->values[2] == Approx(0.2149399).margin(1e-6)); // the period-2 mean
+    const fv::SeriesData period = [&] {
+        for (const fv::SeriesData& s : panel.series)
+            if (s.label.find("period 2") != std::string::npos) return s;
+        return fv::SeriesData{};
+    }();
+    REQUIRE(period.x.size() >= 1);
+    CHECK(period.x[0] == 0.405);
+    CHECK(period.y[0] == Approx(32));
+}
+
+TEST_CASE("Scene: the start is named, and the other stable state is named and marked", "[figures]") {
+    const fv::Params p{0.075, fv::kPi / 2, 0.1, 5};
+    const auto d = fv::compute_figure(fv::scene_figure(p, fv::Start::sliding));
+    const auto& curve = d.panels.at(2);
+    CHECK(curve.title.find("2 stable states") != std::string::npos);
+    CHECK(curve.title.find("0.0342 (from rest)") != std::string::npos);
+    REQUIRE(curve.points.size() == 2); // the state shown, and the other one
+    CHECK(curve.points[0].at.y() == Approx(0.9975079).margin(1e-6));
+    CHECK(curve.points[1].at.y() == Approx(0.0341771).margin(1e-6));
+}

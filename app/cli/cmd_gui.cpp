@@ -38,9 +38,10 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (auto rdisp = rdisp_of(a.model.rdisp_opt, a.model.rdisp, u, false)) s.params.rdisp = *rdisp;
     if (cmd.get_option("--i")->count()) s.params.i = a.model.i;
     if (cmd.get_option("--model")->count()) s.model = model_of(a.model);
+    if (cmd.get_option("--start")->count()) parse_start(a.model.solver.start, s.start);
     if (cmd.get_option("--link")->count() > 0) {
         try {
-            apply_share_link(parse_share_link(a.link), s.model, s.params);
+            apply_share_link(parse_share_link(a.link), s.model, s.params, s.start);
         } catch (const LinkError& e) {
             throw UsageError("--link: " + std::string(e.what()));
         }
@@ -93,6 +94,10 @@ Command add_gui_command(CLI::App& root) {
                              ->transform(number_in(kRdispRange));
     cmd->add_option("--i", a->model.i, "initial Dahl exponent")->transform(number_in(kIRange));
     cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
+    cmd->add_option("--start", a->model.solver.start,
+                    "initial history: rest (the paper's start) or sliding (vibration switched on while "
+                    "sliding); it decides the state where two coexist")
+        ->check(CLI::IsMember({"rest", "sliding"}));
     add_unit_options(*cmd, a->model.units, UnitShape::single,
                      "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
     cmd->add_option("--data", a->data,
@@ -111,7 +116,7 @@ Command add_gui_command(CLI::App& root) {
                         "(any of the keys; or a URL with that query), instead of the model flags");
     // A session holds the whole state, a link the model and its parameters: flags for the same things
     // would contradict them.
-    for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--vb", "--zss"}) {
+    for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--start", "--vb", "--zss"}) {
         session->excludes(flag);
         link->excludes(flag);
     }

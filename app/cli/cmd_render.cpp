@@ -159,6 +159,7 @@ FigureInputs over(FigureInputs example, const FigureInputs& given) {
                             {&example.frequency_khz, &given.frequency_khz}})
         if (*from) *to = *from;
     if (!given.data.empty()) example.data = given.data;
+    if (given.start) example.start = given.start;
     return example;
 }
 
@@ -231,6 +232,11 @@ Command add_render_command(CLI::App& root) {
     a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
                          ->transform(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
+    cmd->add_option("--start", a->model.solver.start,
+                    takers("--start") +
+                        ": the history where two steady states coexist, rest (the paper's) or sliding "
+                        "(vibration switched on while sliding)")
+        ->check(CLI::IsMember({"rest", "sliding"}));
     return {
         cmd, [a, cmd] {
             if (cmd->get_option("--list")->count() > 0) {
@@ -252,6 +258,11 @@ Command add_render_command(CLI::App& root) {
             in.data = a->data;
             if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
             if (*u.frequency_opt) in.frequency_khz = u.frequency;
+            if (cmd->get_option("--start")->count()) {
+                Start start = Start::rest;
+                parse_start(a->model.solver.start, start);
+                in.start = start;
+            }
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
             // inputs.
             std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;

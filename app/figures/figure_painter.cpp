@@ -243,6 +243,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
         st.line_width = s.width;
         st.line = line_style(s.dash);
         st.marker = marker_shape(s.mark);
+        if (s.mark_size > 0) st.marker_size = s.mark_size;
         st.draw_line = s.width > 0;
         plot.add_series(s.label, s.x, s.y, st).y_err = s.y_err;
     }

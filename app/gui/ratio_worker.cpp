@@ -42,7 +42,7 @@ RatioJob::RatioJob(const RatioRequest& req, bool with_map, const std::optional<P
         if (reuse) {
             out_.map = reuse;
         } else {
-            map_spec_ = map_figure(req.params.rdisp, req.params.i);
+            map_spec_ = map_figure(req.params.rdisp, req.params.i, req.start);
             map_options_ = map_options(map_spec_);
             cells_ = map_points(map_spec_);
         }
@@ -164,10 +164,10 @@ void RatioWorker::run_slice(std::chrono::microseconds budget) {
 }
 
 RatioJob RatioWorker::make_job(const RatioRequest& req) const {
-    // The map only changes with r_disp and i: keep the previous one when those did not move.
+    // The map only changes with r_disp, i and the start: keep the previous one when those did not move.
     std::lock_guard<std::mutex> lock(mutex_);
     const bool reuse = result_ && result_->map && result_->request.params.rdisp == req.params.rdisp &&
-                       result_->request.params.i == req.params.i;
+                       result_->request.params.i == req.params.i && result_->request.start == req.start;
     return RatioJob(req, true, reuse ? result_->map : std::nullopt);
 }
 

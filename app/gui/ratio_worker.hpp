@@ -28,8 +28,7 @@ struct RatioRequest {
     Params params;
     bool map = false;    // also the (zeta, theta) map for params.rdisp, params.i (Dahl only; ~1-3 s)
     double zeta_max = 3; // the curves reach this far (further when measured points do)
-    // The history: which of coexisting steady states the current point and the curve report (the map is
-    // from rest, the paper's start).
+    // The history: which of coexisting steady states the current point, the curve and the map report.
     Start start = Start::rest;
     bool operator==(const RatioRequest& o) const {
         return model == o.model && params.zeta == o.params.zeta && params.theta == o.params.theta &&

@@ -53,7 +53,9 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
             static_cast<int>(pts.size()),
             [&](int k) {
                 auto& sp = pts[static_cast<std::size_t>(k)];
-                sp.result = steady_ratio(sp.model, sp.params);
+                SteadyOptions o;
+                o.start = spec.start;
+                sp.result = steady_ratio(sp.model, sp.params, o);
             },
             threads);
         std::vector<double> y(req.size());
@@ -102,11 +104,30 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
 
 // One steady period with samples: the continuous-time solver (1024 samples) unless the spec asks for the
 // paper's scheme at a given resolution.
-SteadyResult steady_trace(const Params& p, int steps) {
+SteadyResult steady_trace(const Params& p, int steps, Start start = Start::rest, bool list_states = false) {
     SteadyOptions o;
     o.record_period = true;
     o.steps_per_period = steps;
+    o.start = start;
+    o.list_states = list_states;
     return steady_ratio(Model::dahl, p, o);
+}
+
+// Which steady state a figure's number belongs to, where that is not plain: " (period 2)", "; 2 stable
+// states, the other r_x = 0.9975 (reached from sliding)".
+std::string state_note(const SteadyResult& r) {
+    std::string s;
+    if (r.status == SteadyStatus::periodic) s += " (period " + std::to_string(r.period_k) + ")";
+    if (r.states.size() < 2) return s;
+    s += "; " + std::to_string(r.states.size()) + " stable states, the other";
+    bool first = true;
+    for (const SteadyState& st : r.states) {
+        if (std::abs(st.rx - r.rx) <= 1e-6 && std::abs(st.ry - r.ry) <= 1e-6) continue;
+        s += std::string(first ? "" : ",") + " r_{x} = " + format_number("%.4f", st.rx);
+        if (st.from_rest != st.from_sliding) s += st.from_rest ? " (from rest)" : " (from sliding)";
+        first = false;
+    }
+    return s;
 }
 
 // P and T over one steady period with the spring drawn at 24 regular instants.
@@ -288,6 +309,33 @@ void break_at_jumps(SeriesData& s, double min_jump) {
     s = std::move(out);
 }
 
+// The map's cells that one colour does not describe, marked at their centres (in the legend only where
+// some are): motion with a longer period (the colour is its mean over the k periods), a second stable
+// steady state (the other start reaches it; the colour is the state this start reaches), and no state that
+// the solver could vouch for (the colour is its last value; the CSV names the status).
+std::vector<SeriesData> cell_marks(const std::vector<SweepPoint>& rows) {
+    SeriesData period{"period 2, 4, … (mean shown)", {}, {}, Ink::black, Dash::solid, Mark::cross, 0};
+    SeriesData two{"2 stable states", {}, {}, Ink::black, Dash::solid, Mark::circle, 0};
+    SeriesData none{"no steady state vouched for", {}, {}, Ink::tip, Dash::solid, Mark::square, 0};
+    for (const SweepPoint& sp : rows) {
+        const double z = sp.params.zeta, th = sp.params.theta * 180 / kPi;
+        SeriesData* to = !ok(sp.result.status)                        ? &none
+                         : sp.result.status == SteadyStatus::periodic ? &period
+                         : sp.result.states.size() >= 2               ? &two
+                                                                      : nullptr;
+        if (!to) continue;
+        to->x.push_back(z);
+        to->y.push_back(th);
+    }
+    std::vector<SeriesData> out;
+    for (SeriesData* s : {&period, &two, &none})
+        if (!s->x.empty()) {
+            s->mark_size = 4.5f;
+            out.push_back(std::move(*s));
+        }
+    return out;
+}
+
 std::vector<double> map_thetas(const FigureSpec& spec) {
     const double dth = spec.theta_max_deg / (spec.theta_count - 1);
     std::vector<double> thetas;
@@ -322,6 +370,8 @@ SteadyOptions map_options(const FigureSpec& spec) {
     SteadyOptions opt;
     if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
     opt.record_period = false; // as sweep() computes them
+    opt.start = spec.start;
+    opt.list_states = true; // the map marks the cells where the other start reaches another state
     return opt;
 }
 
@@ -329,7 +379,9 @@ SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& poi
     const std::size_t pos = k % spec.zetas.size(); // place in its theta row
     const SteadyResult* prev1 = pos >= 1 ? &points[k - 1].result : nullptr;
     const SteadyResult* prev2 = pos >= 2 ? &points[k - 2].result : nullptr;
-    return ode_map_cell(points[k].params, prev1, prev2, ode_options(map_options(spec)));
+    OdeOptions o = ode_options(map_options(spec));
+    o.list_states_after_failure = false; // a failed cell is marked as such, whatever the other start gives
+    return ode_map_cell(points[k].params, prev1, prev2, o);
 }
 
 PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows, std::string* best_table,
@@ -384,12 +436,14 @@ PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& ro
     }
     break_at_jumps(best, 5);
     break_at_jumps(best_rigid, 5);
+    std::vector<SeriesData> marks = cell_marks(rows);
     PanelData panel;
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
     panel.y_title = "vibration angle θ [°]";
     panel.x_min = h.x0, panel.x_max = h.x1, panel.y_min = h.y0, panel.y_max = h.y1;
     panel.heatmap = std::move(h);
     panel.series = {std::move(best), std::move(best_rigid)};
+    for (SeriesData& m : marks) panel.series.push_back(std::move(m));
     if (best_table) *best_table = std::move(table);
     return panel;
 }
@@ -483,15 +537,19 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         break;
     }
     case FigureKind::scene: {
-        const SteadyResult r = steady_trace(p, spec.steps_per_period);
+        const SteadyResult r = steady_trace(p, spec.steps_per_period, spec.start, true);
         PanelData view = top_view(p, r.period, nullptr);
         view.title = "top view";
         PanelData force = force_panel(r.period);
         force.title = "friction force over one period";
         TableData ratios{"-ratio", {}, {}, ""};
         PanelData curve = ratio_panel(spec, ratios.ratios, threads);
-        curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry);
+        curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry) +
+                      state_note(r);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
+        for (const SteadyState& st : r.states) // the other stable states at this point (named in the title)
+            if (std::abs(st.rx - r.rx) > 1e-6 || std::abs(st.ry - r.ry) > 1e-6)
+                curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
         fig.tables.push_back({"", {}, r.period, "", r.status});
         fig.tables.push_back(std::move(ratios));

@@ -68,6 +68,14 @@ std::string ode_solver(double tol = 0) {
     return "the continuous-time steady-state solver (Radau IIA, Newton on the period map), tolerance " +
            tolerance(tol > 0 ? tol : SteadyOptions{}.ode_tolerance) + " on r_x and r_y";
 }
+// The history behind a figure's steady states (scene, map).
+std::string start_text(Start start) {
+    return start == Start::sliding
+               ? "from steady sliding (the vibration switched on while sliding, the asperity fully deflected "
+                 "against v_b)"
+               : "from rest (sliding and vibration begin together, T = P: the paper's start)";
+}
+
 const char* kQuadrature = "adaptive Gauss–Kronrod quadrature of Eq. (9), tolerance 1e-13";
 
 std::string paper_scheme(int steps) {
@@ -235,12 +243,14 @@ std::string figure_parameters(const FigureSpec& spec) {
             period_source(spec.steps_per_period);
         break;
     case FigureKind::scene:
-        s = "Dahl model, " + params_text(p) + "; top view and force over " +
-            period_source(spec.steps_per_period) + "; r_x(ζ) of the Dahl model and the rigid model, " +
-            zeta_sampling(spec.zetas, spec.zeta_budget) + ", rigid r_x by " + kQuadrature;
+        s = "Dahl model, " + params_text(p) + ", steady states reached " + start_text(spec.start) +
+            "; top view and force over " + period_source(spec.steps_per_period) +
+            "; r_x(ζ) of the Dahl model and the rigid model, " + zeta_sampling(spec.zetas, spec.zeta_budget) +
+            ", rigid r_x by " + kQuadrature;
         break;
     case FigureKind::map:
-        s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + "; r_x from " +
+        s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + ", steady states reached " +
+            start_text(spec.start) + ", each cell also started from the other history; r_x from " +
             ode_solver(spec.ode_tolerance) + " on a grid of " + zeta_sampling(spec.zetas) + " × θ at " +
             std::to_string(spec.theta_count) + " evenly spaced angles from 0° to " +
             number(spec.theta_max_deg) +

@@ -28,6 +28,7 @@ struct SeriesData {
     float opacity = 1;         // < 1: faded (older parts of a trail)
     std::vector<double> y_err; // symmetric error bars (measured data); width 0 draws markers only
     int palette = -1;          // Ink::automatic: this palette entry (-1: the series' index)
+    float mark_size = 0;       // 0: the renderer's default (the map's cell marks are smaller, to fit a cell)
 };
 
 struct SegmentData {

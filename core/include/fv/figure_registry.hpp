@@ -25,6 +25,7 @@ struct FigureInputs {
     std::optional<double> zeta, theta_deg, rdisp, i;
     std::string data; // a measurements file (fig19)
     std::optional<double> amplitude_um, frequency_khz;
+    std::optional<Start> start; // --start (scene, map)
 };
 
 // A command-line flag a figure takes: "--zeta" (or its alternative "--vb"), required or not.

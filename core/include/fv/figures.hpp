@@ -4,6 +4,7 @@
 #pragma once
 
 #include "fv/params.hpp"
+#include "fv/steady_state.hpp"
 
 #include <memory>
 #include <string>
@@ -66,6 +67,9 @@ struct FigureSpec {
     // uses kMapTolerance: a colour map needs no more, and it is the 1e-6 (ratio --tolerance 1e-6
     // gives every cell).
     double ode_tolerance = 0;
+    // scene and map: the history that decides between coexisting steady states (SteadyOptions::start); every
+    // other figure is the paper's, from rest
+    Start start = Start::rest;
     // measurements: the figure, computed (data read and fitted) when the spec was made, the fit behind it,
     // and the sentence naming its parameters (figure_parameters)
     std::shared_ptr<const FigureData> precomputed;
@@ -90,13 +94,13 @@ std::vector<double> ratio_zeta_start(double zeta_max = 3);
 inline constexpr std::size_t kRatioZetaBudget = 160;
 
 // The (zeta, theta) map of r_x for one r_disp and i: 200 zeta in [0.02, 3] x 91 theta in [0, 90 deg].
-FigureSpec map_figure(double rdisp, double i);
+FigureSpec map_figure(double rdisp, double i, Start start = Start::rest);
 
 // "ζ = 0.15, θ = 90°, r_{disp} = 2, i = 1" (title markup).
 std::string params_title(const Params& p);
 
 // The dashboard of one parameter set: top view, force over a period, r_x(zeta) with the rigid curve.
-FigureSpec scene_figure(const Params& p);
+FigureSpec scene_figure(const Params& p, Start start = Start::rest);
 
 // The sign convention of every force plot (Figs. 15, 16, 18, the scene), named in their captions; their
 // y axis reads "F / F_c = (P − T) / z_ss".

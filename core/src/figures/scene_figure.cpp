@@ -11,11 +11,13 @@ FigureEntry scene_entry() {
     e.title = "any parameter set: top view, force over a period, r_x(ζ)";
     e.kind = FigureKind::scene;
     e.flags = {{"--zeta", "--vb", true}, {"--theta", "", true},      {"--rdisp", "--zss", true},
-               {"--i", "", true},        {"--amplitude", "", false}, {"--frequency", "", false}};
+               {"--i", "", true},        {"--amplitude", "", false}, {"--frequency", "", false},
+               {"--start", "", false}};
     e.example = {0.3, 30, 2, 1};
     e.make = [](const FigureInputs& in) {
         return scene_figure({in.zeta.value_or(0), in.theta_deg.value_or(0) * kPi / 180, in.rdisp.value_or(1),
-                             in.i.value_or(1)});
+                             in.i.value_or(1)},
+                            in.start.value_or(Start::rest));
     };
     return e;
 }
