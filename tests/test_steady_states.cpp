@@ -181,3 +181,27 @@ TEST_CASE("The ode solver and the paper's scheme agree from rest wherever both v
     CHECK(compared >= 12);
     CHECK(theta90_small >= 7);
 }
+
+// The paper's Figs. 10-13 lie where the steady state is unique: along every curve both starts reach one
+// state (the README says so, and the figures are the same from either start).
+TEST_CASE("Along the curves of Figs. 10-13 both starts reach one steady state", "[states]") {
+    std::vector<fv::Params> pts;
+    for (const double theta : {0.0, 90.0})
+        for (const double i : {0.0, 1.0})
+            for (const double rdisp : {0.5, 1.0, 2.0, 5.0, 20.0})
+                for (int z = 0; z < 50; ++z) pts.push_back({0.02 + 0.06 * z, theta * kDeg, rdisp, i});
+    std::vector<fv::SteadyResult> res(pts.size());
+    fv::parallel_for(static_cast<int>(pts.size()), [&](int k) {
+        fv::SteadyOptions o;
+        o.list_states = true;
+        res[static_cast<std::size_t>(k)] =
+            fv::steady_ratio(fv::Model::dahl, pts[static_cast<std::size_t>(k)], o);
+    });
+    for (std::size_t u = 0; u < pts.size(); ++u) {
+        CAPTURE(pts[u].zeta, pts[u].theta / kDeg, pts[u].rdisp, pts[u].i, fv::status_word(res[u]));
+        REQUIRE(fv::ok(res[u].status));
+        CHECK(res[u].states.size() == 1);
+        CHECK(res[u].states.at(0).from_rest);
+        CHECK(res[u].states.at(0).from_sliding);
+    }
+}

@@ -113,17 +113,17 @@ SteadyResult steady_trace(const Params& p, int steps, Start start = Start::rest,
     return steady_ratio(Model::dahl, p, o);
 }
 
-// Which steady state a figure's number belongs to, where that is not plain: " (period 2)", "; 2 stable
-// states, the other r_x = 0.9975 (reached from sliding)".
+// Which steady state a figure's number belongs to, where that is not plain: " (period 2)", "; also stable:
+// 0.9975 (from sliding)" (the other stable states' r_x and the start that reaches each).
 std::string state_note(const SteadyResult& r) {
     std::string s;
     if (r.status == SteadyStatus::periodic) s += " (period " + std::to_string(r.period_k) + ")";
     if (r.states.size() < 2) return s;
-    s += "; " + std::to_string(r.states.size()) + " stable states, the other";
+    s += "; also stable:";
     bool first = true;
     for (const SteadyState& st : r.states) {
         if (std::abs(st.rx - r.rx) <= 1e-6 && std::abs(st.ry - r.ry) <= 1e-6) continue;
-        s += std::string(first ? "" : ",") + " r_{x} = " + format_number("%.4f", st.rx);
+        s += std::string(first ? "" : ",") + " " + format_number("%.4f", st.rx);
         if (st.from_rest != st.from_sliding) s += st.from_rest ? " (from rest)" : " (from sliding)";
         first = false;
     }
