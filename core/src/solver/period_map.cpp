@@ -36,6 +36,26 @@ struct EventFn {
 
 enum class StepEnd { reached_end, event, failed };
 
+// The cubic through an event function's values at a Radau step's nodes s = 0, c1, c2, 1, at s = q/16
+// (q = 1..15): Lagrange weights, the same for every step (computed once; per step they cost more than the
+// step's own arithmetic for these small systems).
+constexpr int kCubicProbes = 15;
+struct CubicWeights {
+    double w[kCubicProbes][4];
+    CubicWeights() {
+        const double node[4] = {0, RadauTableau::c1, RadauTableau::c2, 1};
+        for (int q = 0; q < kCubicProbes; ++q) {
+            const double x = (q + 1) / 16.0;
+            for (int k = 0; k < 4; ++k) {
+                w[q][k] = 1;
+                for (int m = 0; m < 4; ++m)
+                    if (m != k) w[q][k] *= (x - node[m]) / (node[k] - node[m]);
+            }
+        }
+    }
+};
+const CubicWeights kCubic;
+
 struct PhaseOutcome {
     StepEnd how = StepEnd::reached_end;
     int event = -1;      // index into the event list
@@ -110,16 +130,10 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
                 big = std::max(big, std::abs(gv[k]));
             }
             clear = lo >= 0.25 * big + evs[j].noise;
-            for (int q = 1; q < 32 && clear; ++q) {
-                const double t = tau + q * hh / 32;
-                double cubic = 0;
-                for (int k = 0; k < 4; ++k) {
-                    double w = gv[k];
-                    for (int m = 0; m < 4; ++m)
-                        if (m != k) w *= (t - tn[m]) / (tn[k] - tn[m]);
-                    cubic += w;
-                }
-                clear = cubic >= 0.25 * lo + evs[j].noise;
+            for (int q = 0; q < kCubicProbes && clear; ++q) {
+                const double cubic = kCubic.w[q][0] * gv[0] + kCubic.w[q][1] * gv[1] +
+                                     kCubic.w[q][2] * gv[2] + kCubic.w[q][3] * gv[3];
+                clear = cubic > evs[j].noise; // the cubic predicts no crossing
             }
         }
         int hit = -1;
