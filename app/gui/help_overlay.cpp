@@ -46,6 +46,9 @@ constexpr Entry kPlots[] = {
     {Ink::automatic, "ζ, θ, r_disp, i",
      "v_b/v_v (velocity ratio), vibration angle, x_v/z_ss (amplitude over "
      "the asperity's reach), Dahl shape exponent (Eq. 12)"},
+    {Ink::automatic, "start",
+     "where the motion begins: from rest (T = P, the paper's start) or switched on while sliding (the "
+     "asperity fully stretched); where two steady states coexist it decides which one the body settles into"},
     {Ink::automatic, "keys",
      "Space play/pause, ← → one frame, J steady state, R reset, S screenshot, F1 or ? "
      "this help, Esc quit"},
