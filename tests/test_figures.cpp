@@ -321,7 +321,8 @@ TEST_CASE("Map: the start picks the state shown, two-state and period-k cells ar
         const fv::SeriesData two = marks(panel, "2 stable states");
         REQUIRE(!two.x.empty());
         bool marked = false;
-        for (std::size_t k = 0; k < two.x.size(); ++k) marked = marked || (two.x[k] == 0.075 && two.y[k] == 90);
+        for (std::size_t k = 0; k < two.x.size(); ++k)
+            marked = marked || (two.x[k] == 0.075 && two.y[k] == Approx(90));
         CHECK(marked);
         CHECK(two.width == 0); // marks, no line
     }

@@ -119,14 +119,15 @@ std::string state_note(const SteadyResult& r) {
     std::string s;
     if (r.status == SteadyStatus::periodic) s += " (period " + std::to_string(r.period_k) + ")";
     if (r.states.size() < 2) return s;
-    s += "; also stable:";
-    bool first = true;
+    std::string others;
     for (const SteadyState& st : r.states) {
         if (std::abs(st.rx - r.rx) <= 1e-6 && std::abs(st.ry - r.ry) <= 1e-6) continue;
-        s += std::string(first ? "" : ",") + " " + format_number("%.4f", st.rx);
-        if (st.from_rest != st.from_sliding) s += st.from_rest ? " (from rest)" : " (from sliding)";
-        first = false;
+        if (!st.from_rest && !st.from_sliding)
+            continue; // found, but neither start's motion shown to reach it
+        others += std::string(others.empty() ? "" : ",") + " " + format_number("%.4f", st.rx);
+        if (st.from_rest != st.from_sliding) others += st.from_rest ? " (from rest)" : " (from sliding)";
     }
+    if (!others.empty()) s += "; also stable:" + others;
     return s;
 }
 
@@ -319,9 +320,14 @@ std::vector<SeriesData> cell_marks(const std::vector<SweepPoint>& rows) {
     SeriesData none{"no steady state vouched for", {}, {}, Ink::tip, Dash::solid, Mark::square, 0};
     for (const SweepPoint& sp : rows) {
         const double z = sp.params.zeta, th = sp.params.theta * 180 / kPi;
+        // States that some start's motion is shown to reach (a state found without that evidence is not
+        // marked).
+        const long reached =
+            std::count_if(sp.result.states.begin(), sp.result.states.end(),
+                          [](const SteadyState& st) { return st.from_rest || st.from_sliding; });
         SeriesData* to = !ok(sp.result.status)                        ? &none
                          : sp.result.status == SteadyStatus::periodic ? &period
-                         : sp.result.states.size() >= 2               ? &two
+                         : reached >= 2                               ? &two
                                                                       : nullptr;
         if (!to) continue;
         to->x.push_back(z);
@@ -547,8 +553,9 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry) +
                       state_note(r);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
-        for (const SteadyState& st : r.states) // the other stable states at this point (named in the title)
-            if (std::abs(st.rx - r.rx) > 1e-6 || std::abs(st.ry - r.ry) > 1e-6)
+        for (const SteadyState& st : r.states) // the other states a start reaches here (named in the title)
+            if ((std::abs(st.rx - r.rx) > 1e-6 || std::abs(st.ry - r.ry) > 1e-6) &&
+                (st.from_rest || st.from_sliding))
                 curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
         fig.tables.push_back({"", {}, r.period, "", r.status});

@@ -53,6 +53,7 @@ Verified verify_fixed_point(const Params& p, const LagModel& m, const Search& fo
         const bool check_looser = !record;
         const double factor = check_looser ? 4.0 : 0.25;
         PeriodRequest check{factor * rq.atol, factor * rq.atol_force, false};
+        check.max_step = rq.max_step;
         // A period integrated in steps of the longest length throughout (smooth, e.g. the tip on the
         // circle far from any law change) would be integrated in the same steps at the looser tolerance,
         // and the runs' difference would not show the quadrature's error: there the check halves them.
