@@ -152,19 +152,21 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
                     break;
                 }
         }
-        if (hit < 0 && !clear) {
-            // No probe is off its side, yet a function came near its zero: it may dip below and come back
-            // between probes (theta = 0, zeta just below 1: v = zeta + cos tau < 0 for 2 sqrt(2 (1 - zeta))
-            // around tau = pi, 0.11 at zeta = 0.9984 against steps of 0.5; missed, the tip stayed on the
-            // circle and r_x came out 1 instead of 0.99955). Each function's smallest value over the step
-            // is found (finer probes, then golden section around the least); a dip below is an event, its
-            // first crossing before the minimum.
+        if (!clear) {
+            // A function came near its zero: it may dip below and come back between probes, before the
+            // first coarse probe found off its side or where none is (theta = 0, zeta just below 1: v = zeta
+            // + cos tau < 0 for 2 sqrt(2 (1 - zeta)) around tau = pi, 0.11 at zeta = 0.9984 against steps of
+            // 0.5; missed, the tip stayed on the circle and r_x came out 1 instead of 0.99955). Each
+            // function's smallest value over the step is found (finer probes, then golden section around the
+            // least); a dip below is an event, its first crossing before the minimum.
             constexpr int kFine = 16;
-            for (int j = 0; j < n_ev; ++j) {
+            // Where a coarse probe is off its side already, only the stretch before the probe ahead of it.
+            const int k_end = hit >= 0 ? static_cast<int>(s_lo * kFine + 0.5) : kFine;
+            for (int j = 0; j < n_ev && k_end > 0; ++j) {
                 int k_min = 0;
                 double g_min = g_at(j, 0);
                 int k_off = -1; // the first fine probe off its side
-                for (int k = 1; k <= kFine && k_off < 0; ++k) {
+                for (int k = 1; k <= k_end && k_off < 0; ++k) {
                     const double gk = g_at(j, static_cast<double>(k) / kFine);
                     if (gk < g_min) g_min = gk, k_min = k;
                     if (gk < -evs[j].noise) k_off = k;
@@ -179,7 +181,7 @@ PhaseOutcome integrate_phase(const Pb& pb, double& tau, double tau1, typename Pb
                     continue;
                 }
                 double a = std::max(0, k_min - 1) / static_cast<double>(kFine);
-                double b = std::min(kFine, k_min + 1) / static_cast<double>(kFine);
+                double b = std::min(k_end, k_min + 1) / static_cast<double>(kFine);
                 constexpr double kGold = 0.6180339887498949;
                 double c = b - kGold * (b - a), d = a + kGold * (b - a);
                 double gc = g_at(j, c), gd = g_at(j, d);
