@@ -38,7 +38,7 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (auto rdisp = rdisp_of(a.model.rdisp_opt, a.model.rdisp, u, false)) s.params.rdisp = *rdisp;
     if (cmd.get_option("--i")->count()) s.params.i = a.model.i;
     if (cmd.get_option("--model")->count()) s.model = model_of(a.model);
-    if (cmd.get_option("--start")->count()) parse_start(a.model.solver.start, s.start);
+    if (const auto start = given_start(cmd, a.model.solver.start)) s.start = *start;
     if (cmd.get_option("--link")->count() > 0) {
         try {
             apply_share_link(parse_share_link(a.link), s.model, s.params, s.start);
@@ -94,10 +94,9 @@ Command add_gui_command(CLI::App& root) {
                              ->transform(number_in(kRdispRange));
     cmd->add_option("--i", a->model.i, "initial Dahl exponent")->transform(number_in(kIRange));
     cmd->add_option("--model", a->model.model, "friction model")->check(CLI::IsMember({"dahl", "rigid"}));
-    cmd->add_option("--start", a->model.solver.start,
-                    "initial history: rest (the paper's start) or sliding (vibration switched on while "
-                    "sliding); it decides the state where two coexist")
-        ->check(CLI::IsMember({"rest", "sliding"}));
+    add_start_option(*cmd, a->model.solver.start,
+                     "initial history: rest (the paper's start) or sliding (vibration switched on while "
+                     "sliding); it decides the state where two coexist");
     add_unit_options(*cmd, a->model.units, UnitShape::single,
                      "shown in the window (default 0.7 um at 60 kHz, the paper's Sec. 4)");
     cmd->add_option("--data", a->data,

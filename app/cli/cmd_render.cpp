@@ -232,11 +232,10 @@ Command add_render_command(CLI::App& root) {
     a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
                          ->transform(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
-    cmd->add_option("--start", a->model.solver.start,
-                    takers("--start") +
-                        ": the history where two steady states coexist, rest (the paper's) or sliding "
-                        "(vibration switched on while sliding)")
-        ->check(CLI::IsMember({"rest", "sliding"}));
+    add_start_option(*cmd, a->model.solver.start,
+                     takers("--start") +
+                         ": the history where two steady states coexist, rest (the paper's) or sliding "
+                         "(vibration switched on while sliding)");
     return {
         cmd, [a, cmd] {
             if (cmd->get_option("--list")->count() > 0) {
@@ -258,11 +257,7 @@ Command add_render_command(CLI::App& root) {
             in.data = a->data;
             if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
             if (*u.frequency_opt) in.frequency_khz = u.frequency;
-            if (cmd->get_option("--start")->count()) {
-                Start start = Start::rest;
-                parse_start(a->model.solver.start, start);
-                in.start = start;
-            }
+            in.start = given_start(*cmd, a->model.solver.start);
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
             // inputs.
             std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;

@@ -56,12 +56,22 @@ void add_solver_options(CLI::App& cmd, SolverArgs& s) {
                    "ode scheme: the target for |r - r(dtau -> 0)| of r_x and r_y (default 1e-8; the (zeta, "
                    "theta) map uses 1e-6, so `--tolerance 1e-6` gives its cells)")
         ->transform(number_in(kToleranceRange));
-    cmd.add_option("--start", s.start,
-                   "the history, where two steady states coexist: rest (the paper's start: sliding and "
-                   "vibration begin together from an unstretched asperity) or sliding (vibration switched "
-                   "on during steady sliding: the asperity fully deflected against v_b)")
-        ->check(CLI::IsMember({"rest", "sliding"}))
+    add_start_option(cmd, s.start,
+                     "the history, where two steady states coexist: rest (the paper's start: sliding and "
+                     "vibration begin together from an unstretched asperity) or sliding (vibration switched "
+                     "on during steady sliding: the asperity fully deflected against v_b)")
         ->capture_default_str();
+}
+
+CLI::Option* add_start_option(CLI::App& cmd, std::string& start, const std::string& help) {
+    return cmd.add_option("--start", start, help)->check(CLI::IsMember({"rest", "sliding"}));
+}
+
+std::optional<Start> given_start(const CLI::App& cmd, const std::string& start) {
+    if (cmd.get_option("--start")->count() == 0) return std::nullopt;
+    Start out = Start::rest;
+    parse_start(start, out); // checked by add_start_option's IsMember
+    return out;
 }
 
 SteadyOptions solver_options(const SolverArgs& s) {

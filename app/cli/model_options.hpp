@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <optional>
 #include <string>
 
 namespace fv::cli {
@@ -32,6 +33,10 @@ struct SolverArgs {
     CLI::Option* scheme_opt = nullptr;
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& s);
+// --start rest|sliding with this help (add_solver_options; render and gui with their own words), and the
+// start given on the command line, if any.
+CLI::Option* add_start_option(CLI::App& cmd, std::string& start, const std::string& help);
+std::optional<Start> given_start(const CLI::App& cmd, const std::string& start);
 // Throws UsageError for --scheme ode together with --steps-per-period.
 SteadyOptions solver_options(const SolverArgs& s);
 

@@ -115,15 +115,22 @@ SteadyResult steady_trace(const Params& p, int steps, Start start = Start::rest,
 
 // Which steady state a figure's number belongs to, where that is not plain: " (period 2)", "; also stable:
 // 0.9975 (from sliding)" (the other stable states' r_x and the start that reaches each).
+// The stable states other than the one reported that some start's motion is shown to reach (a state found
+// without that evidence is left out).
+std::vector<SteadyState> other_reached_states(const SteadyResult& r) {
+    std::vector<SteadyState> out;
+    for (const SteadyState& st : r.states)
+        if ((std::abs(st.rx - r.rx) > 1e-6 || std::abs(st.ry - r.ry) > 1e-6) &&
+            (st.from_rest || st.from_sliding))
+            out.push_back(st);
+    return out;
+}
+
 std::string state_note(const SteadyResult& r) {
     std::string s;
     if (r.status == SteadyStatus::periodic) s += " (period " + std::to_string(r.period_k) + ")";
-    if (r.states.size() < 2) return s;
     std::string others;
-    for (const SteadyState& st : r.states) {
-        if (std::abs(st.rx - r.rx) <= 1e-6 && std::abs(st.ry - r.ry) <= 1e-6) continue;
-        if (!st.from_rest && !st.from_sliding)
-            continue; // found, but neither start's motion shown to reach it
+    for (const SteadyState& st : other_reached_states(r)) {
         others += std::string(others.empty() ? "" : ",") + " " + format_number("%.4f", st.rx);
         if (st.from_rest != st.from_sliding) others += st.from_rest ? " (from rest)" : " (from sliding)";
     }
@@ -553,10 +560,8 @@ FigureData compute_figure(const FigureSpec& spec, int threads) {
         curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry) +
                       state_note(r);
         curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
-        for (const SteadyState& st : r.states) // the other states a start reaches here (named in the title)
-            if ((std::abs(st.rx - r.rx) > 1e-6 || std::abs(st.ry - r.ry) > 1e-6) &&
-                (st.from_rest || st.from_sliding))
-                curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
+        for (const SteadyState& st : other_reached_states(r)) // named in the title
+            curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
         fig.panels = {std::move(view), std::move(force), std::move(curve)};
         fig.tables.push_back({"", {}, r.period, "", r.status});
         fig.tables.push_back(std::move(ratios));

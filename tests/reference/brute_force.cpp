@@ -15,9 +15,9 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
-constexpr int kMaxK = 16;           // periods k = 1..16 are tested
+constexpr int kMaxK = 16;             // periods k = 1..16 are tested
 constexpr double kStickSlack = 2e-14; // stick -> circle when rho^2 > 1 + kStickSlack
-constexpr double kRadialFrom = 0.5; // 0 < i < 1, s = +1: (u, phi) representation for rho >= this
+constexpr double kRadialFrom = 0.5;   // 0 < i < 1, s = +1: (u, phi) representation for rho >= this
 
 // cos and sin of an angle in degrees: exact at 0, 90 and 180, and exactly (c, s) -> (-c, s) under
 // theta -> 180 - theta when 180 - theta is exact.
@@ -73,10 +73,10 @@ struct State {
 
 struct Model {
     double zeta, ct, st_, r, i; // st_: sin theta
-    bool sub_one;          // 0 < i < 1
-    Power pow_i, pow_im1;  // x^i, x^(i-1)
-    Power pow_p, pow_1mi;  // x^(1/(1-i)), x^(1-i) (radial representation, 0 < i < 1)
-    double h = 0;          // grid step (added to |P'| in the stiffness bound)
+    bool sub_one;               // 0 < i < 1
+    Power pow_i, pow_im1;       // x^i, x^(i-1)
+    Power pow_p, pow_1mi;       // x^(1/(1-i)), x^(1-i) (radial representation, 0 < i < 1)
+    double h = 0;               // grid step (added to |P'| in the stiffness bound)
 
     Model(double zeta_, double theta_deg, double r_, double i_)
         : zeta(zeta_), r(r_), i(i_), sub_one(i_ > 0 && i_ < 1), pow_i(i_), pow_im1(i_ - 1),
@@ -192,7 +192,8 @@ struct Model {
 
     // Event functions g (the law holds while all are >= 0) and their rates dg/dtau along the flow, at
     // (t, a, b) with f = rhs there; returns their number.
-    int events(Mode m, int s, double t, double a, double b, const double f[4], double g[2], double gd[2]) const {
+    int events(Mode m, int s, double t, double a, double b, const double f[4], double g[2],
+               double gd[2]) const {
         double px, py;
         pdot(t, px, py);
         const double sin_t = std::sin(t);
@@ -231,8 +232,8 @@ struct Model {
     }
 
     // RK4 over H from (t, a, b) (f0 = rhs there): the end state y, f1 = rhs there, g and gd there.
-    int probe(Mode m, int s, double t, double a, double b, const double f0[4], double H, double y[4], double f1[4],
-              double g[2], double gd[2]) const {
+    int probe(Mode m, int s, double t, double a, double b, const double f0[4], double H, double y[4],
+              double f1[4], double g[2], double gd[2]) const {
         rk4(m, s, t, a, b, f0, H, y);
         rhs(m, s, t + H, y[0], y[1], f1);
         return events(m, s, t + H, y[0], y[1], f1, g, gd);
@@ -359,13 +360,13 @@ void check_params(double zeta, double theta_deg, double rdisp, double i) {
     if (!std::isfinite(theta_deg) || theta_deg < 0 || theta_deg > 180)
         throw std::invalid_argument("brute_force: theta must be in [0, 180] degrees");
     if (!std::isfinite(rdisp) || !(rdisp > 0)) throw std::invalid_argument("brute_force: rdisp must be > 0");
-    if (!std::isfinite(i) || i < 0 || i > 50) throw std::invalid_argument("brute_force: i must be in [0, 50]");
+    if (!std::isfinite(i) || i < 0 || i > 50)
+        throw std::invalid_argument("brute_force: i must be in [0, 50]");
 }
 
 // Illinois (regula falsi with halving) on [lo, hi] with F(lo) >= 0 > F(hi): returns a point within 1e-15 past
 // the crossing (F < 0 there). Each evaluation of F is one RK4 sub-step, counted in steps.
-template <class Fn>
-double crossing(Fn&& F, double lo, double hi, double flo, double fhi, double& steps) {
+template <class Fn> double crossing(Fn&& F, double lo, double hi, double flo, double fhi, double& steps) {
     int side = 0;
     for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
         double c = hi - fhi * (hi - lo) / (fhi - flo);
@@ -417,7 +418,18 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
 
     std::vector<double> sec_x{0.0}, sec_y{0.0}; // section states l_n, n = 0..
     md.force(st, sec_x[0], sec_y[0]);
-    std::vector<double> mean_x, mean_y;           // per-period means, period n at index n-1
+    std::vector<double> mean_x, mean_y; // per-period means, period n at index n-1
+    // r_x, r_y as the mean of the per-period means over periods [first, n) (a period-k orbit's last k, or the
+    // long-time window).
+    auto set_mean = [&](int first, int n_end) {
+        double sx = 0, sy = 0;
+        for (int m = first; m < n_end; ++m) {
+            sx += mean_x[m];
+            sy += mean_y[m];
+        }
+        out.rx = sx / (n_end - first);
+        out.ry = sy / (n_end - first);
+    };
     std::vector<std::vector<double>> dk(kMaxK + 1); // dk[k][n]
     for (auto& v : dk) v.push_back(0.0);
 
@@ -430,10 +442,11 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
     int ne0 = 0;
 
     const double inf = std::numeric_limits<double>::infinity();
-    // Contraction per k periods at section nn. Baselines m = k, 2k, 4k, ... : c_m = (d_k(nn)/d_k(nn-m))^(k/m);
-    // a baseline counts if d changed by at least 5% over it (shorter ones only measure rounding noise when the
-    // contraction is slow); the largest (slowest) counting c_m is taken, else the longest baseline's. If that
-    // is not < 1 while d is near the rounding floor, the last ratio measured with d_k(m-k) >= 1e-12.
+    // Contraction per k periods at section nn. Baselines m = k, 2k, 4k, ... : c_m =
+    // (d_k(nn)/d_k(nn-m))^(k/m); a baseline counts if d changed by at least 5% over it (shorter ones only
+    // measure rounding noise when the contraction is slow); the largest (slowest) counting c_m is taken, else
+    // the longest baseline's. If that is not < 1 while d is near the rounding floor, the last ratio measured
+    // with d_k(m-k) >= 1e-12.
     auto contraction_k = [&](int k, int nn) {
         if (dk[k][nn] == 0) return 0.0;
         double best = -1, longest = inf;
@@ -496,7 +509,8 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
                         st = md.switch_law(st, bad);
                         ++events;
                         have_start = false;
-                        if (++immediate > 20) throw std::runtime_error("brute_force: law switches without progress");
+                        if (++immediate > 20)
+                            throw std::runtime_error("brute_force: law switches without progress");
                         continue;
                     }
                 }
@@ -600,13 +614,7 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
                 out.tail = tail;
                 out.last_diff = d;
                 out.contraction = record(k, n);
-                double sx = 0, sy = 0;
-                for (int m = n - k; m < n; ++m) {
-                    sx += mean_x[m];
-                    sy += mean_y[m];
-                }
-                out.rx = sx / k;
-                out.ry = sy / k;
+                set_mean(n - k, n);
                 done = true;
             }
         }
@@ -640,8 +648,9 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
     if (!capped && decreasing) {
         out.status = "unsettled";
         out.k = kbest;
-        // the approach may be algebraic (d ~ n^-p, e.g. p = i/(i-1) for the creep towards the circle), where the
-        // geometric tail underestimates the rest by a factor ~p/(p-1): also sum a power law fitted over n/2
+        // the approach may be algebraic (d ~ n^-p, e.g. p = i/(i-1) for the creep towards the circle), where
+        // the geometric tail underestimates the rest by a factor ~p/(p-1): also sum a power law fitted over
+        // n/2
         out.tail = tail_of(kbest, n);
         const int half = (n / 2 / kbest) * kbest;
         if (dk[kbest][n] > 0 && dk[kbest][n - half] > dk[kbest][n]) {
@@ -651,13 +660,7 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
         }
         out.last_diff = dbest;
         out.contraction = std::pow(contraction_k(kbest, n), 1.0 / kbest);
-        double sx = 0, sy = 0;
-        for (int m = n - kbest; m < n; ++m) {
-            sx += mean_x[m];
-            sy += mean_y[m];
-        }
-        out.rx = sx / kbest;
-        out.ry = sy / kbest;
+        set_mean(n - kbest, n);
         return out;
     }
     out.status = capped ? "capped" : "not_periodic";
@@ -667,13 +670,7 @@ BruteForceRun brute_force_run(double zeta, double theta_deg, double rdisp, doubl
     // long-time mean over the last half, standard error by 20 batch means
     const int first = n / 2;
     const int len = n - first;
-    double sx = 0, sy = 0;
-    for (int m = first; m < n; ++m) {
-        sx += mean_x[m];
-        sy += mean_y[m];
-    }
-    out.rx = sx / len;
-    out.ry = sy / len;
+    set_mean(first, n);
     const int B = 20;
     if (len >= B) {
         const int bs = len / B;
@@ -713,9 +710,9 @@ BruteForceResult brute_force(double zeta, double theta_deg, double rdisp, double
     const int N = brute_force_steps(zeta, rdisp, options);
     BruteForceResult res;
     res.coarse = brute_force_run(zeta, theta_deg, rdisp, i, l0x, 0.0, N, options.sigma, options);
-    res.fine = options.refine ? brute_force_run(zeta, theta_deg, rdisp, i, l0x, 0.0, 2 * N, 0.5 * options.sigma,
-                                                options)
-                              : res.coarse;
+    res.fine = options.refine
+                   ? brute_force_run(zeta, theta_deg, rdisp, i, l0x, 0.0, 2 * N, 0.5 * options.sigma, options)
+                   : res.coarse;
     const BruteForceRun& c = res.coarse;
     const BruteForceRun& f = res.fine;
     res.status = f.status;

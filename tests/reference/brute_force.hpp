@@ -99,18 +99,18 @@ struct BruteForceOptions {
 
 // One run at one resolution.
 struct BruteForceRun {
-    std::string status;      // "period_<k>", "unsettled", "not_periodic", "capped"
-    int k = 0;               // period (in periods of 2 pi) for period_k and unsettled; 0 otherwise
-    int periods = 0;         // periods integrated (for period_k: periods to settle)
-    double rx = 0, ry = 0;   // mean over the last k periods, or the long-time mean (see above)
+    std::string status;        // "period_<k>", "unsettled", "not_periodic", "capped"
+    int k = 0;                 // period (in periods of 2 pi) for period_k and unsettled; 0 otherwise
+    int periods = 0;           // periods integrated (for period_k: periods to settle)
+    double rx = 0, ry = 0;     // mean over the last k periods, or the long-time mean (see above)
     double se_x = 0, se_y = 0; // batch-means standard errors (not_periodic, capped), else 0
-    double tail = 0;         // estimated distance of the last section state from the limit cycle
-    double contraction = 0;  // per-period contraction factor near the end (0: not measurable, e.g. exact)
-    double last_diff = 0;    // d_k at the end (k as reported, or k = 1 for not_periodic)
-    double lx = 0, ly = 0;   // state at the last section
-    int steps_per_period = 0; // grid N of this run
-    double steps = 0;        // RK4 steps taken, sub-steps and event location included
-    long long events = 0;    // law switches
+    double tail = 0;           // estimated distance of the last section state from the limit cycle
+    double contraction = 0;    // per-period contraction factor near the end (0: not measurable, e.g. exact)
+    double last_diff = 0;      // d_k at the end (k as reported, or k = 1 for not_periodic)
+    double lx = 0, ly = 0;     // state at the last section
+    int steps_per_period = 0;  // grid N of this run
+    double steps = 0;          // RK4 steps taken, sub-steps and event location included
+    long long events = 0;      // law switches
 };
 
 // Both resolutions and the combined result (the finer run's values).

@@ -58,7 +58,8 @@ struct Point {
 };
 
 [[noreturn]] void usage(const char* msg) {
-    std::fprintf(stderr, "brute_force_ref: %s\n(see the comment at the top of tests/tools/brute_force_ref.cpp)\n",
+    std::fprintf(stderr,
+                 "brute_force_ref: %s\n(see the comment at the top of tests/tools/brute_force_ref.cpp)\n",
                  msg);
     std::exit(2);
 }
@@ -66,7 +67,8 @@ struct Point {
 double parse_double(const std::string& s, const char* what) {
     char* end = nullptr;
     const double v = std::strtod(s.c_str(), &end);
-    if (s.empty() || *end != '\0' || !std::isfinite(v)) usage((std::string("bad number for ") + what).c_str());
+    if (s.empty() || *end != '\0' || !std::isfinite(v))
+        usage((std::string("bad number for ") + what).c_str());
     return v;
 }
 
@@ -115,8 +117,9 @@ const char* kColumns = "zeta,theta_deg,rdisp,i,start,status,k,periods,rx,ry,rx_e
 // (a) theta = 0, i = 0: 1-D stick-slip, u = F/F_c in [-1, 1], u' = r P' while |u| < 1, u = +-1 held while P'
 // pushes outwards. P = zeta tau + sin tau, P' = zeta + cos tau. For zeta >= 1, P' >= 0: u -> 1, r_x = 1.
 // For 0 < zeta < 1: P' < 0 exactly on (t1, t2) = (pi - a, pi + a), a = acos zeta; back travel
-// B = P(t1) - P(t2) = 2 (sqrt(1 - zeta^2) - zeta a), forward travel A = 2 pi zeta + B > B. In the steady state
-// u(t1) = 1 (the forward phase always ends slipping forward: it travels r A > r B, and > 2 if r B >= 2).
+// B = P(t1) - P(t2) = 2 (sqrt(1 - zeta^2) - zeta a), forward travel A = 2 pi zeta + B > B. In the steady
+// state u(t1) = 1 (the forward phase always ends slipping forward: it travels r A > r B, and > 2 if r B >=
+// 2).
 //   r B >= 2: back: u = 1 + r (P - P(t1)) until it reaches -1 at ta (P(ta) = P(t1) - 2/r), then -1 to t2;
 //             forward: u = -1 + r (P - P(t2)) until +1 at tb (P(tb) = P(t2) + 2/r), then 1 to t1 + 2 pi.
 //   r B < 2:  back: u = 1 + r (P - P(t1)) on all of [t1, t2] (ends at 1 - r B);
@@ -167,18 +170,20 @@ double exact_theta0_i0(double zeta, double r) {
 int self_test(const BruteForceOptions& opt) {
     int failures = 0;
     std::printf("# self-test (a): theta = 0, i = 0 against the exact 1-D stick-slip r_x\n");
-    const double pts_a[][2] = {{0.1, 0.5}, {0.3, 2.0}, {0.05, 5.0}, {0.5, 10.0}, {0.8, 1.0}, {0.2, 0.3}, {1.5, 2.0}};
+    const double pts_a[][2] = {{0.1, 0.5}, {0.3, 2.0}, {0.05, 5.0}, {0.5, 10.0},
+                               {0.8, 1.0}, {0.2, 0.3}, {1.5, 2.0}};
     for (const auto& p : pts_a) {
         const double ex = exact_theta0_i0(p[0], p[1]);
         for (int s = 0; s < 2; ++s) {
-            const BruteForceResult r = brute_force(p[0], 0.0, p[1], 0.0, s ? BruteStart::sliding : BruteStart::rest, opt);
+            const BruteForceResult r =
+                brute_force(p[0], 0.0, p[1], 0.0, s ? BruteStart::sliding : BruteStart::rest, opt);
             const double err = std::fabs(r.rx - ex);
             const bool ok = r.status.rfind("period_", 0) == 0 && err <= std::max(1e-10, 10 * r.rx_err) &&
                             std::fabs(r.ry) <= 1e-14;
             failures += !ok;
             std::printf("%s zeta=%g rdisp=%g %s: %s rx=%.15g exact=%.15g |diff|=%.2e est=%.2e ry=%.1e\n",
-                        ok ? "ok  " : "FAIL", p[0], p[1], s ? "sliding" : "rest", r.status.c_str(), r.rx, ex, err,
-                        r.rx_err, r.ry);
+                        ok ? "ok  " : "FAIL", p[0], p[1], s ? "sliding" : "rest", r.status.c_str(), r.rx, ex,
+                        err, r.rx_err, r.ry);
         }
     }
     // (b) theta -> 180 - theta: P(tau + pi; theta) = mirror_y(P(tau; 180 - theta)) + const, and the law is
@@ -186,7 +191,7 @@ int self_test(const BruteForceOptions& opt) {
     // r_x equal, r_y opposite (for theta = 90: r_y = 0). The starts are not mapped onto each other, so this
     // holds where the steady state is unique; the agreement is to the discretisation error of both runs.
     std::printf("# self-test (b): theta -> 180 - theta (r_x equal, r_y opposite)\n");
-    const double pts_b[][4] = {{0.3, 30, 2, 1}, {0.5, 60, 1, 0}, {0.2, 45, 5, 0.5}, {0.4, 120, 0.5, 2},
+    const double pts_b[][4] = {{0.3, 30, 2, 1}, {0.5, 60, 1, 0},   {0.2, 45, 5, 0.5}, {0.4, 120, 0.5, 2},
                                {0.3, 90, 2, 1}, {0.15, 20, 3, 10}, {0.6, 75, 0.2, 0}};
     for (const auto& p : pts_b) {
         const BruteForceResult a = brute_force(p[0], p[1], p[2], p[3], BruteStart::rest, opt);
@@ -196,8 +201,8 @@ int self_test(const BruteForceOptions& opt) {
                         std::fabs(a.rx - b.rx) <= tol && std::fabs(a.ry + b.ry) <= tol;
         failures += !ok;
         std::printf("%s zeta=%g theta=%g/%g rdisp=%g i=%g: %s/%s rx=%.15g/%.15g ry=%.15g/%.15g tol=%.1e\n",
-                    ok ? "ok  " : "FAIL", p[0], p[1], 180.0 - p[1], p[2], p[3], a.status.c_str(), b.status.c_str(),
-                    a.rx, b.rx, a.ry, b.ry, tol);
+                    ok ? "ok  " : "FAIL", p[0], p[1], 180.0 - p[1], p[2], p[3], a.status.c_str(),
+                    b.status.c_str(), a.rx, b.rx, a.ry, b.ry, tol);
     }
     std::printf("# self-test: %d failure(s)\n", failures);
     return failures ? 1 : 0;
@@ -226,24 +231,37 @@ int main(int argc, char** argv) {
             if (a + 1 >= argc) usage(("missing value after " + arg).c_str());
             return argv[++a];
         };
-        if (arg == "--start") start = parse_start(next());
-        else if (arg == "--max-periods") opt.max_periods = static_cast<int>(parse_double(next(), "--max-periods"));
-        else if (arg == "--steps") opt.steps_per_period = static_cast<int>(parse_double(next(), "--steps"));
-        else if (arg == "--sigma") opt.sigma = parse_double(next(), "--sigma");
-        else if (arg == "--tol") opt.tol = parse_double(next(), "--tol");
-        else if (arg == "--max-steps") opt.max_steps = parse_double(next(), "--max-steps");
-        else if (arg == "--no-refine") opt.refine = false;
-        else if (arg == "--output") output = next();
-        else if (arg == "--file") file = next();
-        else if (arg == "--random") random_count = static_cast<int>(parse_double(next(), "--random"));
+        if (arg == "--start")
+            start = parse_start(next());
+        else if (arg == "--max-periods")
+            opt.max_periods = static_cast<int>(parse_double(next(), "--max-periods"));
+        else if (arg == "--steps")
+            opt.steps_per_period = static_cast<int>(parse_double(next(), "--steps"));
+        else if (arg == "--sigma")
+            opt.sigma = parse_double(next(), "--sigma");
+        else if (arg == "--tol")
+            opt.tol = parse_double(next(), "--tol");
+        else if (arg == "--max-steps")
+            opt.max_steps = parse_double(next(), "--max-steps");
+        else if (arg == "--no-refine")
+            opt.refine = false;
+        else if (arg == "--output")
+            output = next();
+        else if (arg == "--file")
+            file = next();
+        else if (arg == "--random")
+            random_count = static_cast<int>(parse_double(next(), "--random"));
         else if (arg == "--seed") {
             seed = static_cast<std::uint64_t>(parse_double(next(), "--seed"));
             have_seed = true;
-        } else if (arg == "--point") point_args.push_back(next());
-        else if (arg == "--self-test") selftest = true;
+        } else if (arg == "--point")
+            point_args.push_back(next());
+        else if (arg == "--self-test")
+            selftest = true;
         else if (arg.size() > 1 && arg[0] == '-' && !(arg[1] >= '0' && arg[1] <= '9') && arg[1] != '.')
             usage(("unknown option " + arg).c_str());
-        else positional.push_back(arg);
+        else
+            positional.push_back(arg);
     }
     if (selftest) return self_test(opt);
     if (!positional.empty()) {
@@ -275,8 +293,9 @@ int main(int argc, char** argv) {
             while (ls >> w) f.push_back(w);
             if (f.empty()) continue;
             if (f.size() != 4 && f.size() != 5) usage(("bad line in " + file + ": " + line).c_str());
-            points.push_back({parse_double(f[0], "zeta"), parse_double(f[1], "theta"), parse_double(f[2], "rdisp"),
-                              parse_double(f[3], "i"), f.size() == 5 ? parse_start(f[4]) : start});
+            points.push_back({parse_double(f[0], "zeta"), parse_double(f[1], "theta"),
+                              parse_double(f[2], "rdisp"), parse_double(f[3], "i"),
+                              f.size() == 5 ? parse_start(f[4]) : start});
         }
     }
     if (random_count > 0) {
@@ -300,19 +319,22 @@ int main(int argc, char** argv) {
         if (!out) usage(("cannot write " + output).c_str());
     }
     std::fprintf(out, "# produced by: %s\n", command.c_str());
-    std::fprintf(out, "# brute-force RK4 reference, tests/reference/brute_force.hpp (model and numerics there); "
-                      "values from the fine run (2N steps per period); rx_err_estimate, ry_err_estimate = "
-                      "|fine - coarse| + geometric tail (period_k, unsettled), batch-means standard error "
-                      "(not_periodic, capped); theta in degrees; l_end = force at the last section tau = 2 pi n\n");
+    std::fprintf(
+        out, "# brute-force RK4 reference, tests/reference/brute_force.hpp (model and numerics there); "
+             "values from the fine run (2N steps per period); rx_err_estimate, ry_err_estimate = "
+             "|fine - coarse| + geometric tail (period_k, unsettled), batch-means standard error "
+             "(not_periodic, capped); theta in degrees; l_end = force at the last section tau = 2 pi n\n");
     std::fprintf(out, "# build: g++ -O2 -std=c++17 -I tests/reference tests/tools/brute_force_ref.cpp "
                       "tests/reference/brute_force.cpp -o brute_force_ref\n");
     if (random_count > 0)
-        std::fprintf(out, "# random points: %d from seed %llu: zeta = 0.01*300^U, theta = 180 U, rdisp = 0.05*2000^U, "
-                          "i = {0,0.5,1,2,5,10}[floor(6U)], U = (mt19937_64() >> 11) * 2^-53 in that order; zeta, "
-                          "rdisp to 4 significant digits, theta to 0.01\n",
-                     random_count, static_cast<unsigned long long>(seed));
-    std::fprintf(out, "# options: max_periods=%d tol=%g sigma=%g max_steps=%g steps_min=%d\n", opt.max_periods,
-                 opt.tol, opt.sigma, opt.max_steps, opt.steps_per_period);
+        std::fprintf(
+            out,
+            "# random points: %d from seed %llu: zeta = 0.01*300^U, theta = 180 U, rdisp = 0.05*2000^U, "
+            "i = {0,0.5,1,2,5,10}[floor(6U)], U = (mt19937_64() >> 11) * 2^-53 in that order; zeta, "
+            "rdisp to 4 significant digits, theta to 0.01\n",
+            random_count, static_cast<unsigned long long>(seed));
+    std::fprintf(out, "# options: max_periods=%d tol=%g sigma=%g max_steps=%g steps_min=%d\n",
+                 opt.max_periods, opt.tol, opt.sigma, opt.max_steps, opt.steps_per_period);
     std::fprintf(out, "%s\n", kColumns);
     std::fflush(out);
     std::vector<std::string> capped;
@@ -324,7 +346,8 @@ int main(int argc, char** argv) {
             BruteForceOptions po = opt;
             if (p.max_periods > 0) po.max_periods = p.max_periods;
             try {
-                r = brute_force(p.zeta, p.theta, p.rdisp, p.i, s ? BruteStart::sliding : BruteStart::rest, po);
+                r = brute_force(p.zeta, p.theta, p.rdisp, p.i, s ? BruteStart::sliding : BruteStart::rest,
+                                po);
             } catch (const std::exception& e) {
                 r.status = "error";
                 r.note = e.what();
@@ -335,12 +358,14 @@ int main(int argc, char** argv) {
             std::fprintf(out, "%s\n", line.c_str());
             std::fflush(out);
             std::fprintf(stderr, "# time %.2f s: %s\n", sec, line.c_str());
-            if (r.status == "capped" || r.coarse.status == "capped") capped.push_back(line.substr(0, line.find(",", 0)));
+            if (r.status == "capped" || r.coarse.status == "capped")
+                capped.push_back(line.substr(0, line.find(",", 0)));
         }
     }
     if (!capped.empty()) {
-        std::fprintf(out, "# capped by --max-steps (step budget ran out before settling): %zu run(s), marked "
-                          "status=capped above\n",
+        std::fprintf(out,
+                     "# capped by --max-steps (step budget ran out before settling): %zu run(s), marked "
+                     "status=capped above\n",
                      capped.size());
     }
     if (out != stdout) std::fclose(out);
