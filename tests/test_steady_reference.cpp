@@ -147,6 +147,41 @@ TEST_CASE("The solver agrees with the brute-force integrator run here (fast poin
         }
 }
 
+TEST_CASE("A state found from one start is credited to the other only where the other's motion reaches it",
+          "[reference][states]") {
+    // Two stable states along the edge of the stick region at i = 5, r_disp = 0.1: the motion from rest
+    // settles into the small one, the motion from sliding stays on the circle. The push test along the slow
+    // direction alone once credited the small state to sliding too (at the first point, through the map's
+    // shortcut; at the second, in every map cell: the map showed one state). Each point from sliding is run
+    // here with the brute-force integrator; the listing (full searches from both starts, and the map's
+    // shortcut for the other start) must mark the state the reference reaches, and only that, as reached
+    // from sliding.
+    const double pts[][2] = {{0.154773869347, 83}, {0.319497487437, 72}};
+    for (const auto& p : pts) {
+        const fv::ref::BruteForceResult b =
+            fv::ref::brute_force(p[0], p[1], 0.1, 5, fv::ref::BruteStart::sliding);
+        REQUIRE(b.status == "period_1");
+        for (const bool only_reached : {false, true}) {
+            fv::OdeOptions o;
+            o.tolerance = 1e-6; // the map's
+            o.list_states = true;
+            o.list_only_reached = only_reached;
+            const fv::SteadyResult s = fv::ode_steady({p[0], p[1] * kDeg, 0.1, 5}, o);
+            CAPTURE(p[0], p[1], only_reached, b.rx, s.rx, s.states.size());
+            REQUIRE(fv::ok(s.status));
+            int credited = 0;
+            for (const fv::SteadyState& st : s.states) {
+                CAPTURE(st.rx, st.from_rest, st.from_sliding);
+                if (!st.from_sliding) continue;
+                ++credited;
+                CHECK(std::abs(st.rx - b.rx) <= fv::kErrorSafety * st.error_estimate + b.rx_err);
+            }
+            CHECK(credited == 1);
+            CHECK(s.states.size() == 2);
+        }
+    }
+}
+
 TEST_CASE("The solver against the brute-force reference set: same state, error within its bound",
           "[reference][states][slow]") {
     const std::vector<RefRow> rows = reference_rows();

@@ -394,6 +394,7 @@ SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& poi
     const SteadyResult* prev2 = pos >= 2 ? &points[k - 2].result : nullptr;
     OdeOptions o = ode_options(map_options(spec));
     o.list_states_after_failure = false; // a failed cell is marked as such, whatever the other start gives
+    o.list_only_reached = true;          // its marks name only states a start reaches
     return ode_map_cell(points[k].params, prev1, prev2, o);
 }
 

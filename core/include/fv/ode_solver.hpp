@@ -39,6 +39,8 @@ struct OdeOptions {
     bool list_states = false;        // search from the other start too and list every stable state found
     bool list_states_after_failure = true; // also where this start's search failed (the map, which marks such
                                            // a cell as failed anyway, saves the second search there)
+    bool list_only_reached = false; // list only states a start reaches: the other start is not searched where
+                                    // its motion is shown to settle into a state found (the map's marks)
 };
 
 // Instants where the lag's law changes.

@@ -68,6 +68,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
 bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& M, int k, bool circle_state,
              int& periods);
 
+// Whether Floquet multipliers (|mu| descending) make a state stable.
+bool stable(const std::complex<double> mu[2]);
+
 // The period-1 state a verification describes (status converged only when its error estimate is within
 // the tolerance).
 Orbit orbit_of(const ReachSetup& s, const Verified& v);

@@ -192,6 +192,21 @@ void fill_result(OdeSolution& sol, const Orbit& o, const Params& p, int periods)
     res.detail = o.failure;
 }
 
+// Whether the motion from the other start is shown to settle into one of the stable states found (the
+// start's state, then the others); that state is marked reached from the other start in the listing.
+bool other_reaches_known(const ReachSetup& setup, Start other, const Orbit& state,
+                         const std::vector<Orbit>& others, int& periods, std::vector<SteadyState>& list) {
+    const Vec2 from = start_force(other);
+    auto try_orbit = [&](const Orbit& o) {
+        if (!ok(o.status) || !o.have_mu || !solver::stable(o.mu)) return false;
+        if (!solver::reaches(setup, from, o.l0, o.M, o.k, o.circle_state, periods)) return false;
+        add_state(list, listed(o, setup.p->rdisp), other, true);
+        return true;
+    };
+    if (try_orbit(state)) return true;
+    return std::any_of(others.begin(), others.end(), try_orbit);
+}
+
 OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     const LagModel m(p);
     const double r = p.rdisp;
@@ -260,9 +275,14 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     if (ok(state.status)) add_state(list, listed(state, r), opt.start, state.reached);
     for (const Orbit& o : others)
         if (ok(o.status)) add_state(list, listed(o, r), opt.start, false);
-    if (opt.list_states && (opt.list_states_after_failure || ok(state.status))) {
+    const Start other = opt.start == Start::rest ? Start::sliding : Start::rest;
+    // Where only reached states matter (the map), the other start needs no search of its own when its motion
+    // is shown to settle into a state already found: the search would find that state, and the states it
+    // passes on the way are not listed.
+    const bool other_known = opt.list_states && opt.list_only_reached &&
+                             other_reaches_known(setup, other, state, others, periods, list);
+    if (opt.list_states && !other_known && (opt.list_states_after_failure || ok(state.status))) {
         // The other start's state: only to list it (its period is not recorded).
-        const Start other = opt.start == Start::rest ? Start::sliding : Start::rest;
         OdeOptions o2 = opt;
         o2.start = other;
         o2.list_states = false;
