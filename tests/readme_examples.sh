@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Runs every example command of README.md and compares its output with the text printed under it.
-# An example is a fenced block whose line starts with "$ frictionviz "; the lines after it, up to the
-# block's end, are the expected standard output (exactly). Usage: readme_examples.sh FRICTIONVIZ README.md
+# Runs every example command of a markdown file (README.md, docs/cli.md) and compares its output with the text
+# printed under it. An example is a fenced block whose line starts with "$ frictionviz "; the lines after it, up to
+# the block's end, are the expected standard output (exactly). The commands run in the repository's top folder, so
+# that paths such as tests/data/... read as they do for a user there. Usage: readme_examples.sh FRICTIONVIZ FILE.md
+# After a deliberate change of output: python3 scripts/update-readme-examples.py (rewrites both files).
 set -uo pipefail
 exe=$1
 readme=$2
+case $exe in /*) ;; */*) exe=$PWD/$exe ;; esac
+case $readme in /*) ;; *) readme=$PWD/$readme ;; esac
+cd "$(dirname "$0")/.." || exit 1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
@@ -22,7 +27,7 @@ run_example() {
     local code=$?
     if ! cmp -s "$work/expected" "$work/actual"; then
         failed=$((failed + 1))
-        echo "README example differs: \$ $cmd (exit $code)"
+        echo "$(basename "$readme") example differs: \$ $cmd (exit $code)"
         diff "$work/expected" "$work/actual" | head -20
         cat "$work/stderr"
     fi
@@ -49,5 +54,5 @@ while IFS= read -r line || [ -n "$line" ]; do
     fi
 done <"$readme"
 
-echo "README examples: $count run, $failed differ"
+echo "$(basename "$readme") examples: $count run, $failed differ"
 [ "$count" -gt 0 ] && [ "$failed" = 0 ]

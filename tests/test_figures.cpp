@@ -214,7 +214,8 @@ TEST_CASE("Map: every cell is its single point within the map's tolerance, warm-
     }
 }
 
-TEST_CASE("Where the model disagrees with the paper's text (README, captions of Figs. 10-13)", "[figures]") {
+TEST_CASE("Where the model disagrees with the paper's text (docs/figures.md, captions of Figs. 10-13)",
+          "[figures]") {
     // Against the closed forms of the rigid model (Eqs. 10, 11), and i = 1 against i = 0.
     const double deg = fv::kPi / 180;
     auto rx = [](double zeta, double theta, double rdisp, double i) {

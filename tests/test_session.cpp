@@ -441,10 +441,10 @@ TEST_CASE("script: save-session and open-session take paths next to the script, 
     CHECK_THROWS_WITH(load_script(novalue), Catch::StartsWith(novalue + ":1: 'open-session' needs a value"));
 }
 
-TEST_CASE("README: the session example is what the app saves in its default state",
+TEST_CASE("docs/app.md: the session example is what the app saves in its default state",
           "[gui][session][readme]") {
-    const std::string readme = read(std::string(FV_TEST_DATA_DIR) + "/../../README.md");
-    const auto section = readme.find("**Session files**");
+    const std::string readme = read(std::string(FV_TEST_DATA_DIR) + "/../../docs/app.md");
+    const auto section = readme.find("## Session files");
     REQUIRE(section != std::string::npos);
     const auto from = readme.find("```json\n", section);
     REQUIRE(from != std::string::npos);

@@ -183,7 +183,7 @@ TEST_CASE("The ode solver and the paper's scheme agree from rest wherever both v
 }
 
 // The paper's Figs. 10-13 lie where the steady state is unique: along every curve both starts reach one
-// state (the README says so, and the figures are the same from either start).
+// state (docs/cli.md, "Which steady state", says so, and the figures are the same from either start).
 TEST_CASE("Along the curves of Figs. 10-13 both starts reach one steady state", "[states]") {
     std::vector<fv::Params> pts;
     for (const double theta : {0.0, 90.0})

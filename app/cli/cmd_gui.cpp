@@ -107,7 +107,7 @@ Command add_gui_command(CLI::App& root) {
         cmd->add_option(
                "--session", a->session,
                "start from a session file (JSON: parameters, model, units, animation, view, data; see "
-               "README), instead of the model, unit and --data flags")
+               "docs/app.md), instead of the model, unit and --data flags")
             ->check(file_name());
     CLI::Option* link =
         cmd->add_option("--link", a->link,

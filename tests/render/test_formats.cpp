@@ -180,9 +180,10 @@ TEST_CASE("render --format pdf: real text in embedded DejaVu Sans, no raster for
     CHECK(images("map") == 2); // the heat map and its colour bar
 }
 
-TEST_CASE("render --format svg: text as glyph outlines, as the README says", "[render][formats]") {
-    // cairo 1.16 writes no <text>: each glyph once as a <symbol> path, placed with <use> (README: take the
-    // PDF where text must be text). A cairo that writes <text> fails here: then the README is to be updated.
+TEST_CASE("render --format svg: text as glyph outlines, as docs/cli.md says", "[render][formats]") {
+    // cairo 1.16 writes no <text>: each glyph once as a <symbol> path, placed with <use> (docs/cli.md: take
+    // the PDF where text must be text). A cairo that writes <text> fails here: then docs/cli.md is to be
+    // updated.
     const std::string svg = slurp(rendered() + "/fig5.svg");
     CHECK(svg.find("<text") == std::string::npos);
     CHECK(svg.find("<symbol overflow=\"visible\" id=\"glyph") != std::string::npos);
@@ -221,8 +222,8 @@ TEST_CASE("render --scale: 2x the size at scale 2 is the same picture at twice t
 
 TEST_CASE("render --scale below 1 is a thumbnail: the 1x picture at lower resolution, same layout",
           "[render][scale]") {
-    // README: the page (--size / --scale) decides the layout and the text sizes in logical units; --scale
-    // only the pixels per unit. Below 1 that makes a thumbnail (text 13 x S pixels, 6.5 at 0.5), not a
+    // docs/figures.md: the page (--size / --scale) decides the layout and the text sizes in logical units;
+    // --scale only the pixels per unit. Below 1 that makes a thumbnail (text 13 x S pixels, 6.5 at 0.5), not a
     // legible small figure: for that, a small page at scale >= 1 (320x240 at scale 1: tick labels 7.8 px).
     const std::string& one = rendered();
     const std::string thumb = scratch("scale05");

@@ -40,8 +40,8 @@ const double kRdispFamily[] = {0.5, 1, 2, 5, 20};
 
 // Where the computed curves disagree with the paper's reading of Figs. 10-13 (compliance only weakens the
 // friction reduction, a larger r_disp lowers r_x, i = 1 drops below i = 0 at small zeta); the numbers are
-// `frictionviz ratio` (and `sweep` on a 0.005 grid of zeta for the ranges), README "Where the model
-// disagrees with the paper", tested in test_figures.cpp.
+// `frictionviz ratio` (and `sweep` on a 0.005 grid of zeta for the ranges), docs/figures.md "Where the model
+// disagrees with the paper's text", tested in test_figures.cpp.
 std::string disagreement(const std::string& id) {
     if (id == "fig10")
         return " Unlike the paper's reading (compliance only weakens the friction reduction; a larger r_disp "
