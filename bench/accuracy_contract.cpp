@@ -1,4 +1,4 @@
-// Checks the accuracy contract of the default `ratio` result (issue #2): within 1e-5 of the dtau -> 0 limit
+// Checks the accuracy contract of the default `ratio` result: within 1e-5 of the dtau -> 0 limit
 // of the paper's scheme for zeta in [0.02, 3], theta in [0, 90 deg], rdisp in [0.2, 100], i in {0, 1}.
 // The limit is estimated independently of the default's step choice: Richardson extrapolation of three runs
 // at 8x, 16x and 32x finer steps with a 100x tighter steady-state tolerance. Prints every point and the

@@ -1,4 +1,4 @@
-// Seconds for `frictionviz animate` (issue #14 item 7; budget: 2 periods at 640x400, 30 fps, in at most 5 s):
+// Seconds for `frictionviz animate` (budget: 2 periods at 640x400, 30 fps, in at most 5 s):
 // GIF and MP4, dashboard and scene view, end to end (steady state, frames rendered headless through OSMesa,
 // encoding, atomic write). Prints wall time (median of runs), the child's CPU time and the load average,
 // since other work on the machine slows the wall time. Not a test: timings never decide pass or fail.

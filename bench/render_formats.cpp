@@ -1,4 +1,4 @@
-// Time of each output format per registered figure (issue #13 item 8), in process: the figure's data
+// Time of each output format per registered figure, in process: the figure's data
 // (computed once, its own column), then per format the drawing and encoding: png = paint + GL replay +
 // readback + PNG encoding, svg / pdf = paint (display list) + cairo replay into the document. Then the whole
 // command end to end, `frictionviz render --figure all --format F` for png, svg, pdf and png,svg,pdf (wall

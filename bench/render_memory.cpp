@@ -1,6 +1,6 @@
 // Memory of `frictionviz render` against the number of figures: peak RSS (wait4, per child process) of one
 // fig8 and of N in one call, the increment per added figure, and the wall time per figure, at 1280x800
-// and 7680x4320. Medians of a few runs. Before the fix of issue #12 each added figure kept its frame
+// and 7680x4320. Medians of a few runs. When every figure kept its frame (fixed), each added one cost
 // (4 MB at 1280x800, 133 MB at 7680x4320); now the increment is what does not scale with N, spread over N.
 //   usage: fv_render_memory [--exe FRICTIONVIZ] [--runs R] [--count N] [--big-count N] [--figure ID]
 #include "child_peak_rss.hpp"

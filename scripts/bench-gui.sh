@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The app's frame times (a benchmark, not a test): 300 frames with a slider dragged every frame and every layer
 # visible (bench/gui_all_layers.txt), headless on llvmpipe, at 1280x800 and at 1920x1080 --scale 1.5
-# (issue #14 item 9: p95 <= 16 ms). Wall times measure the machine too: run it on an idle machine. The second
+# (target: p95 <= 16 ms). Wall times measure the machine too: run it on an idle machine. The second
 # run of each size draws on the app's thread (LP_NUM_THREADS=0): its CPU time per frame is the cost of a frame
 # that the machine's load hardly changes (compare builds with it on a shared machine).
 set -euo pipefail

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Times the browser build in headless Chromium (software WebGL 2, as the web tests): the first frame after
 # navigation start, and slider edits made with mouse events on the canvas, from the event to the end of the
-# frame that shows the new state. Prints the numbers; not a pass/fail test (#15's targets: first frame
+# frame that shows the new state. Prints the numbers; not a pass/fail test (targets: first frame
 # <= 3 s, slider to frame <= 33 ms). Real time, not virtual: run it on a quiet machine (uptime is printed).
 #   scripts/bench-web.sh [SITE_DIR]      (default build-web/site; scripts/build-web.sh makes it)
 set -euo pipefail

@@ -1,4 +1,4 @@
-// frictionviz animate through the real executable (issue #14 item 7): the GIF and the MP4 decoded back
+// frictionviz animate through the real executable: the GIF and the MP4 decoded back
 // (frame count = periods x frames per period, size, frames differ, GIF loops, MP4 is H.264 in yuv420p), the
 // loop is seamless (the picture repeats every period and the step from the last frame to the first is like
 // any other), and bad input exits 2 with one line, nothing written, an existing file untouched.

@@ -1,4 +1,4 @@
-// The classroom app's time and explanation (issue #14 items 1, 2), without a window: rewinding shows the past
+// The classroom app's time and explanation, without a window: rewinding shows the past
 // from the history, replay returns to the live state, the jump lands on the solver's steady state, and the
 // spring's colour is stick or slip where the 1-D law (theta = 0, i = 0) says so.
 #include "gui/app_state.hpp"

@@ -1,4 +1,4 @@
-// The app's platforms through the real executable (issue #14 items 5, 8, 9):
+// The app's platforms through the real executable:
 // - --platform picks the adapter by name; unknown names, --headless against --platform window, headless
 //   without a frame count and pages too small for the app exit 2 with one line, nothing written;
 // - --size 2Wx2H --scale 2, averaged over 2x2 pixels, is the WxH screen (the app's scale equivalence).

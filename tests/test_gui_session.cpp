@@ -1,4 +1,4 @@
-// Sessions and share links through the real executable (issue #14 item 6):
+// Sessions and share links through the real executable:
 // - a session saved in the middle of a scripted run and opened again shows the same pixels as a new run
 //   started from that file with --session (both restart the simulation from the session's state);
 // - --link gives the same screen as the equivalent flags;

@@ -1,4 +1,4 @@
-// Layout of every registered figure, read from its display list (issue #13 items 5, 7):
+// Layout of every registered figure, read from its display list:
 // - no legend box touches a plotted sample: a series' samples and the segments between them, markers;
 // - no text reads as a negative zero ("-0", "−0.0000");
 // - on a narrow page (640x400 logical, the issue's "clipped at 640x400") no text leaves the page;

@@ -1,4 +1,4 @@
-// Animation export (issue #14 item 7): the periodic steady state as a seamless loop, rendered headless
+// Animation export: the periodic steady state as a seamless loop, rendered headless
 // through OSMesa (RenderSession) and encoded as an animated GIF (giflib) or an H.264 MP4 (FFmpeg), written
 // atomically. The same code serves `frictionviz animate` and the app's File > Export animation (which runs
 // it on a worker thread with its own headless context: GL contexts are per thread).

@@ -1,4 +1,4 @@
-// File > Export animation… (issue #14 item 7): a GIF or MP4 loop of the current parameters, made in the
+// File > Export animation…: a GIF or MP4 loop of the current parameters, made in the
 // background. The app only knows the request and a function that fulfils it (GuiOptions::animation_exporter,
 // given by the command line: the encoders live in app/anim/, outside the app library); the job runs it on a
 // worker thread, which makes its own headless GL context (GL contexts are current on one thread), at low CPU

@@ -165,7 +165,7 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
         for (std::size_t k = 0; k < s.x.size(); ++k) take(s.x[k], s.y[k]);
     // The spring's zigzag scales with the view: about half the trails' height, as the frame below shows it.
     const double half_h = std::max(0.5 * (y1 - y0), 0.5) * 1.08 * view.zoom;
-    // What moves, drawn behind the trails' heads (issue #14 item 1): the body around P (it carries P and
+    // What moves, drawn behind the trails' heads: the body around P (it carries P and
     // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
     // the asperity as a spring from its tip T (held by the fixed plane while it sticks) to P, green while it
     // sticks or creeps inside the circle z < z_ss, vermillion while it slips on it.

@@ -1,4 +1,4 @@
-// render --format png,svg,pdf and --scale through the real executable (issue #13 items 2, 3, 7):
+// render --format png,svg,pdf and --scale through the real executable:
 // - for every registered figure, the SVG (rasterised by rsvg-convert) and the PDF (by pdftoppm) show the
 //   PNG's picture, within a tolerance for the two rasterisers' antialiasing and text hinting;
 // - the PDF's text is text (pdftotext finds the axis labels) in embedded DejaVu Sans, and only images are

@@ -5,7 +5,7 @@
 # of virtual time (600 frames of 1/60 s), the desktop 600 frames. The panel, the readouts and the r_x(zeta)
 # plot agree; the moving parts (top view, force plot) are a few frames apart, since the page's frame count
 # over the budget is not exact. A pixel counts as different past 32 levels in a channel, and at most 3% of
-# them may (measured 1.5% at the defaults; a missing panel row alone is 4%). First the size budget of #15:
+# them may (measured 1.5% at the defaults; a missing panel row alone is 4%). First the size budget of the page:
 # frictionviz.wasm at most 3 MB.
 #   app_page_vs_headless.sh SITE_DIR FRICTIONVIZ FV_PNG_COMPARE OUTDIR LINK
 set -euo pipefail

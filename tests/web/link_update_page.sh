@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The page keeps its address a share link (#15 item 3): opened with LINK, a click on the θ = 60° preset must
+# The page keeps its address a share link: opened with LINK, a click on the θ = 60° preset must
 # leave the address with theta=60 and the link's other values, and that address, opened as a new page, shows
 # what `gui --headless --link` shows for it (a copied address reopens the same setup).
 #   link_update_page.sh SITE_DIR FRICTIONVIZ FV_PNG_COMPARE OUTDIR LINK
