@@ -87,13 +87,13 @@ TEST_CASE("AppState: edits take effect at sync, once, the later of the same fiel
     pause(a);
     const int syncs = a.syncs();
     UiEdits queued;
-    Params p = a.ui().params;
+    Params p = a.ui().session.params;
     p.zeta = 0.3;
     UiEdits panel;
     panel.params = p;
     panel.step = true;
     queued.merge(panel);
-    CHECK(a.ui().params.zeta == 0.15); // queued, not applied
+    CHECK(a.ui().session.params.zeta == 0.15); // queued, not applied
     CHECK(a.sim().params().zeta == 0.15);
     UiEdits keys;
     keys.step = true; // a second step in the same frame is still one step
@@ -103,11 +103,11 @@ TEST_CASE("AppState: edits take effect at sync, once, the later of the same fiel
     const double tau0 = a.sim().tau();
     a.sync(queued);
     CHECK(a.syncs() == syncs + 1);
-    CHECK(a.ui().params.zeta == 0.4);
+    CHECK(a.ui().session.params.zeta == 0.4);
     CHECK(a.sim().params().zeta == 0.4);
     a.advance(1.0); // paused: only the single step, one displayed frame (1/60 s at the speed), whole steps
     const double dtau = a.sim().tau() - tau0;
-    CHECK(dtau == Approx(a.ui().speed * 2 * kPi / 60).margin(a.sim().dtau() / 2));
+    CHECK(dtau == Approx(a.ui().session.speed * 2 * kPi / 60).margin(a.sim().dtau() / 2));
     a.sync(UiEdits{});
     a.advance(1.0);
     CHECK(a.sim().tau() - tau0 == Approx(dtau)); // nothing left over from the last frame
@@ -119,17 +119,17 @@ TEST_CASE("AppState: edits take effect at sync, once, the later of the same fiel
 TEST_CASE("AppState: out-of-range edits change nothing and say the table's range", "[gui][state]") {
     AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
     pause(a);
-    const Params before = a.ui().params;
+    const Params before = a.ui().session.params;
     auto rejected = [&](const UiEdits& e, const std::string& range) {
         a.ui().status.clear();
         a.sync(e);
         CHECK(a.ui().status.find(range) != std::string::npos);
-        CHECK(a.ui().params.zeta == before.zeta);
-        CHECK(a.ui().params.rdisp == before.rdisp);
-        CHECK(a.ui().params.i == before.i);
-        CHECK(a.ui().params.theta == before.theta);
+        CHECK(a.ui().session.params.zeta == before.zeta);
+        CHECK(a.ui().session.params.rdisp == before.rdisp);
+        CHECK(a.ui().session.params.i == before.i);
+        CHECK(a.ui().session.params.theta == before.theta);
         CHECK(a.sim().params().zeta == before.zeta);
-        CHECK(a.ui().amplitude_um == 0.7);
+        CHECK(a.ui().session.amplitude_um == 0.7);
     };
     auto with = [&](auto set) {
         UiEdits e;
@@ -155,8 +155,8 @@ TEST_CASE("AppState: out-of-range edits change nothing and say the table's range
     UiEdits ok;
     ok.vb_m_s = 0.1;
     a.sync(ok);
-    CHECK(a.ui().params.zeta == Approx(0.1 / vv(0.7, 60)).epsilon(1e-14));
-    CHECK(a.sim().params().zeta == a.ui().params.zeta);
+    CHECK(a.ui().session.params.zeta == Approx(0.1 / vv(0.7, 60)).epsilon(1e-14));
+    CHECK(a.sim().params().zeta == a.ui().session.params.zeta);
 }
 
 TEST_CASE("AppState: an A or f change converts the kept v_b column, without reading the file again",
@@ -185,14 +185,14 @@ TEST_CASE("AppState: an A or f change converts the kept v_b column, without read
     UiEdits amp;
     amp.amplitude_um = 0.8;
     a.sync(amp);
-    CHECK(a.ui().amplitude_um == 0.8);
+    CHECK(a.ui().session.amplitude_um == 0.8);
     REQUIRE(a.ui().data);
     for (std::size_t k = 0; k < vbs.size(); ++k)
         CHECK(a.ui().data->points[k].zeta == Approx(vbs[k] / vv(0.8, 60)).epsilon(1e-14));
     UiEdits freq;
     freq.frequency_khz = 30;
     a.sync(freq);
-    CHECK(a.ui().frequency_khz == 30);
+    CHECK(a.ui().session.frequency_khz == 30);
     for (std::size_t k = 0; k < vbs.size(); ++k)
         CHECK(a.ui().data->points[k].zeta == Approx(vbs[k] / vv(0.8, 30)).epsilon(1e-14));
     ::rmdir(dir.c_str());
@@ -214,7 +214,7 @@ constexpr double kRxRest = 0.034177137581669, kRxSliding = 0.997507926210302;
 TEST_CASE("AppState: a start edit takes effect at sync, restarts the motion from it and asks for its state",
           "[gui][state][start]") {
     AppState a(Model::dahl, kTwoStates, 0.7, 60);
-    CHECK(a.ui().start == Start::rest);
+    CHECK(a.ui().session.start == Start::rest);
     CHECK((a.sim().P() - a.sim().T()).norm() == 0);
     pause(a);
     a.sync(UiEdits{});
@@ -231,9 +231,9 @@ TEST_CASE("AppState: a start edit takes effect at sync, restarts the motion from
     queued.merge(panel);
     queued.merge(later);
     CHECK(queued.moves_curves());
-    CHECK(a.ui().start == Start::rest); // queued, not applied
+    CHECK(a.ui().session.start == Start::rest); // queued, not applied
     a.sync(queued);
-    CHECK(a.ui().start == Start::sliding);
+    CHECK(a.ui().session.start == Start::sliding);
     CHECK(a.sim().tau() == 0);
     CHECK(a.sim().periods() == 0);
     CHECK((a.sim().P() - a.sim().T()).x() == Approx(kTwoStates.zss()).epsilon(1e-15));

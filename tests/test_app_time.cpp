@@ -50,8 +50,8 @@ TEST_CASE("App time: rewind shows the past, replay returns to the live state, a 
     UiEdits e;
     e.rewind = kPi;
     a.sync(e);
-    CHECK_FALSE(a.ui().playing); // scrubbing pauses
-    const SimMoment m = moment_at(a.sim(), a.ui().view.rewind);
+    CHECK_FALSE(a.ui().session.playing); // scrubbing pauses
+    const SimMoment m = moment_at(a.sim(), a.ui().session.view.rewind);
     CHECK(m.tau == Approx(live - kPi).margin(a.sim().dtau()));
     // The moment is the history's sample: P, T and the force of that time, not of now.
     CHECK((m.P - m.T).norm() == Approx(m.z));
@@ -64,27 +64,27 @@ TEST_CASE("App time: rewind shows the past, replay returns to the live state, a 
     a.sync(play);
     a.advance(0.25); // a quarter period at 1 period/s
     CHECK(a.sim().tau() == live);
-    CHECK(a.ui().view.rewind == Approx(kPi - kPi / 2).margin(1e-12));
+    CHECK(a.ui().session.view.rewind == Approx(kPi - kPi / 2).margin(1e-12));
     for (int k = 0; k < 60; ++k) a.advance(1.0 / 60);
-    CHECK(a.ui().view.rewind == 0);
+    CHECK(a.ui().session.view.rewind == 0);
     CHECK(a.sim().tau() > live); // live again, and running
     // One frame back pauses and shows 1/60 s of animation earlier; it never reaches past the history.
     UiEdits back;
     back.step_back = true;
     a.sync(back);
-    CHECK_FALSE(a.ui().playing);
-    CHECK(a.ui().view.rewind == Approx(a.ui().speed * 2 * kPi / 60));
+    CHECK_FALSE(a.ui().session.playing);
+    CHECK(a.ui().session.view.rewind == Approx(a.ui().session.speed * 2 * kPi / 60));
     UiEdits far;
     far.rewind = 1e6;
     a.sync(far);
-    CHECK(a.ui().view.rewind == Approx(max_rewind(a.sim())));
+    CHECK(a.ui().session.view.rewind == Approx(max_rewind(a.sim())));
     // Any parameter change shows the live state again.
     UiEdits change;
-    Params p = a.ui().params;
+    Params p = a.ui().session.params;
     p.zeta = 0.5;
     change.params = p;
     a.sync(change);
-    CHECK(a.ui().view.rewind == 0);
+    CHECK(a.ui().session.view.rewind == 0);
 }
 
 TEST_CASE("App time: 'steady state' lands on the solver's periodic state", "[gui][time]") {
@@ -178,26 +178,26 @@ TEST_CASE("App pins: up to six r_x(zeta) curves kept with their parameters, clea
     UiEdits pin;
     pin.pin = true;
     a.sync(pin, true);
-    REQUIRE(a.ui().pins.size() == 1);
-    CHECK(a.ui().pins[0].label.find("θ = 60°") != std::string::npos);
-    CHECK(a.ui().pins[0].label.find("i = 0") != std::string::npos);
+    REQUIRE(a.ui().session.pins.size() == 1);
+    CHECK(a.ui().session.pins[0].label.find("θ = 60°") != std::string::npos);
+    CHECK(a.ui().session.pins[0].label.find("i = 0") != std::string::npos);
     const auto curves = a.worker().latest();
     REQUIRE(curves);
-    CHECK(a.ui().pins[0].rx == curves->model_rx);
+    CHECK(a.ui().session.pins[0].rx == curves->model_rx);
     for (int k = 0; k < 8; ++k) {
         UiEdits e;
-        Params p = a.ui().params;
+        Params p = a.ui().session.params;
         p.theta = (10.0 + 10 * k) * kPi / 180;
         e.params = p;
         e.pin = true;
         a.sync(e, true);
     }
-    CHECK(a.ui().pins.size() == kMaxPins);
+    CHECK(a.ui().session.pins.size() == kMaxPins);
     CHECK(a.ui().status.find("clear") != std::string::npos);
     UiEdits clear;
     clear.clear_pins = true;
     a.sync(clear);
-    CHECK(a.ui().pins.empty());
+    CHECK(a.ui().session.pins.empty());
 }
 
 TEST_CASE("App presentation: every length of a panel grows by the factor, its data do not",

@@ -65,21 +65,21 @@ const std::string kZetaFile = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta9
 TEST_CASE("app units: a new amplitude or frequency keeps v_b and z_ss, zeta and r_disp follow",
           "[gui][units]") {
     UiState ui;
-    ui.params.zeta = 0.3;
-    ui.params.rdisp = 2;
-    ui.amplitude_um = 0.7;
-    ui.frequency_khz = 60;
+    ui.session.params.zeta = 0.3;
+    ui.session.params.rdisp = 2;
+    ui.session.amplitude_um = 0.7;
+    ui.session.frequency_khz = 60;
     const double vb = 0.3 * vv(0.7, 60), zss = 0.7 / 2;
     CHECK(vb_of(ui) == Approx(vb).epsilon(1e-14));
     CHECK(zss_of(ui) == Approx(zss).epsilon(1e-14));
 
     REQUIRE(set_vibration(ui, 1.4, std::nullopt).empty());
-    CHECK(ui.params.zeta == Approx(vb / vv(1.4, 60)).epsilon(1e-14)); // = 0.15
-    CHECK(ui.params.zeta == Approx(0.15).epsilon(1e-14));
-    CHECK(ui.params.rdisp == Approx(1.4 / zss).epsilon(1e-14)); // = 4
+    CHECK(ui.session.params.zeta == Approx(vb / vv(1.4, 60)).epsilon(1e-14)); // = 0.15
+    CHECK(ui.session.params.zeta == Approx(0.15).epsilon(1e-14));
+    CHECK(ui.session.params.rdisp == Approx(1.4 / zss).epsilon(1e-14)); // = 4
     REQUIRE(set_vibration(ui, std::nullopt, 20).empty());
-    CHECK(ui.params.zeta == Approx(vb / vv(1.4, 20)).epsilon(1e-14));
-    CHECK(ui.params.rdisp == Approx(4).epsilon(1e-14)); // z_ss does not depend on f
+    CHECK(ui.session.params.zeta == Approx(vb / vv(1.4, 20)).epsilon(1e-14));
+    CHECK(ui.session.params.rdisp == Approx(4).epsilon(1e-14)); // z_ss does not depend on f
     CHECK(vb_of(ui) == Approx(vb).epsilon(1e-13));
 
     SECTION("a result outside the ranges changes nothing and says why") {
@@ -87,11 +87,11 @@ TEST_CASE("app units: a new amplitude or frequency keeps v_b and z_ss, zeta and 
         const std::string err = set_vibration(ui, 1e-6, std::nullopt); // zeta ~ 1e5
         CHECK(err.find("zeta") != std::string::npos);
         CHECK(err.find("[0, 100]") != std::string::npos);
-        CHECK(ui.amplitude_um == before.amplitude_um);
-        CHECK(ui.params.zeta == before.params.zeta);
-        CHECK(ui.params.rdisp == before.params.rdisp);
+        CHECK(ui.session.amplitude_um == before.session.amplitude_um);
+        CHECK(ui.session.params.zeta == before.session.params.zeta);
+        CHECK(ui.session.params.rdisp == before.session.params.rdisp);
         CHECK(!set_vibration(ui, 1e300, 1e300).empty()); // v_v overflows
-        CHECK(ui.amplitude_um == before.amplitude_um);
+        CHECK(ui.session.amplitude_um == before.session.amplitude_um);
     }
 }
 
@@ -122,7 +122,7 @@ TEST_CASE("app data: a v_b file is converted with the app's A and f, and again w
     SECTION("an A that would put a point past zeta = 100 is refused with the file's line") {
         const std::string err = set_vibration(ui, 1e-5, std::nullopt);
         CHECK(!err.empty());
-        CHECK(ui.amplitude_um == 0.35);
+        CHECK(ui.session.amplitude_um == 0.35);
         CHECK(ui.data->points.front().zeta == Approx(vbs[0] / vv(0.35, 120)).epsilon(1e-14));
     }
 }
@@ -232,8 +232,8 @@ TEST_CASE("app script: unit and data actions, checked when loaded", "[gui][scrip
                                                     "4 clear\n");
     const Script s = load_script(good);
     UiState ui;
-    ui.amplitude_um = 1.4;
-    ui.frequency_khz = 30;
+    ui.session.amplitude_um = 1.4;
+    ui.session.frequency_khz = 30;
     const UiEdits e0 = script_edits(s, 0, ui);
     CHECK(e0.amplitude_um == 1.4);
     CHECK(e0.frequency_khz == 30);
@@ -258,7 +258,7 @@ TEST_CASE("app script: unit and data actions, checked when loaded", "[gui][scrip
 
 TEST_CASE("app fit: r_disp and i of the synthetic data are set, off the UI thread", "[gui][fit]") {
     UiState ui;
-    ui.params.theta = kPi / 2; // the file has theta_deg = 90 per point anyway
+    ui.session.params.theta = kPi / 2; // the file has theta_deg = 90 per point anyway
     load_measured(ui, kZetaFile);
     REQUIRE(ui.data);
     DataFit fit;
@@ -271,7 +271,7 @@ TEST_CASE("app fit: r_disp and i of the synthetic data are set, off the UI threa
     // Generated with r_disp = 3 and i = 0 (tests/data/make_synthetic.cpp).
     CHECK(done->params->rdisp == Approx(3).epsilon(0.02));
     CHECK(done->params->i == 0);
-    CHECK(done->params->zeta == ui.params.zeta);
+    CHECK(done->params->zeta == ui.session.params.zeta);
     CHECK(done->status.find("r_disp = ") != std::string::npos);
     CHECK(done->status.find("z_ss = ") != std::string::npos);
     CHECK(!fit.poll(ui, true)); // nothing more to collect

@@ -54,7 +54,7 @@ Session unusual() {
     s.frequency_khz = 45;
     s.speed = 2.5;
     s.playing = false;
-    s.show_map = true;
+    s.panel = LowerPanel::map;
     s.view.zoom = 2.5;
     s.view.pan = Vec2(0.3, -1.25);
     s.view.follow = false;
@@ -77,14 +77,12 @@ void check_same(const Session& a, const Session& b) {
     CHECK(a.frequency_khz == b.frequency_khz);
     CHECK(a.speed == b.speed);
     CHECK(a.playing == b.playing);
-    CHECK(a.show_map == b.show_map);
+    CHECK(a.panel == b.panel);
     CHECK(a.view.zoom == b.view.zoom);
     CHECK(a.view.pan.x() == b.view.pan.x());
     CHECK(a.view.pan.y() == b.view.pan.y());
     CHECK(a.view.follow == b.view.follow);
     CHECK(a.view.trail_periods == b.view.trail_periods);
-    CHECK(a.show_loop == b.show_loop);
-    CHECK(a.show_mechanism == b.show_mechanism);
     CHECK(a.presentation == b.presentation);
     REQUIRE(a.pins.size() == b.pins.size());
     for (std::size_t k = 0; k < a.pins.size(); ++k) {
@@ -123,7 +121,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     CHECK(s.frequency_khz != d.frequency_khz);
     CHECK(s.speed != d.speed);
     CHECK(s.playing != d.playing);
-    CHECK(s.show_map != d.show_map);
+    CHECK(s.panel != d.panel);
     CHECK(s.view.zoom != d.view.zoom);
     CHECK(s.view.pan.x() != d.view.pan.x());
     CHECK(s.view.pan.y() != d.view.pan.y());
@@ -158,17 +156,14 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
                             "\"r_x\": [0.1, null, 0.7]",
                             "\"zeta\": [0.25]"})
         CHECK(text.find(key) != std::string::npos);
-    // The other panels: show_map, show_loop and show_mechanism are one choice in the file.
-    Session loop = s;
-    loop.show_map = false;
-    loop.show_loop = true;
-    check_same(parse_session(session_json(loop), "s.json"), loop);
-    CHECK(session_json(loop).find("\"panel\": \"loop\"") != std::string::npos);
-    Session why = loop;
-    why.show_loop = false;
-    why.show_mechanism = true;
-    check_same(parse_session(session_json(why), "s.json"), why);
-    CHECK(session_json(why).find("\"panel\": \"why\"") != std::string::npos);
+    // Every panel by its name.
+    for (const LowerPanel p : kLowerPanels) {
+        Session other = s;
+        other.panel = p;
+        check_same(parse_session(session_json(other), "s.json"), other);
+        CHECK(session_json(other).find(std::string("\"panel\": \"") + panel_name(p) + "\"") !=
+              std::string::npos);
+    }
     // Numbers that are not short decimals come back bit for bit too.
     Session odd = s;
     odd.params.zeta = 0.1 + 0.2;
@@ -190,9 +185,9 @@ TEST_CASE("session JSON: missing keys take the app's defaults, a relative data p
     check_same(parse_session("{\"version\": 1}", "s.json"), Session{});
     const UiState ui;
     const Session d = parse_session("{\"version\": 1}", "s.json");
-    CHECK(d.params.zeta == ui.params.zeta);
-    CHECK(d.speed == ui.speed);
-    CHECK(d.view.trail_periods == ui.view.trail_periods);
+    CHECK(d.params.zeta == ui.session.params.zeta);
+    CHECK(d.speed == ui.session.speed);
+    CHECK(d.view.trail_periods == ui.session.view.trail_periods);
     CHECK(parse_session(R"({"version": 1, "data": "m.csv"})", "dir/sub/s.json").data_file == "dir/sub/m.csv");
     CHECK(parse_session(R"({"version": 1, "data": "../m.csv"})", "dir/sub/s.json").data_file == "dir/m.csv");
     CHECK(parse_session(R"({"version": 1, "data": "/abs/m.csv"})", "dir/s.json").data_file == "/abs/m.csv");
@@ -236,7 +231,7 @@ TEST_CASE("session JSON: the start goes through the file, a session from before 
     e.open_session = write("sliding.json", R"({"version": 1, "zeta": 0.075, "rdisp": 0.1, "i": 5,
  "start": "sliding"})");
     a.sync(e);
-    CHECK(a.ui().start == Start::sliding);
+    CHECK(a.ui().session.start == Start::sliding);
     CHECK(a.sim().tau() == 0);
     CHECK((a.sim().P() - a.sim().T()).x() == Approx(10).epsilon(1e-15));
     CHECK(session_of(a.ui()).start == Start::sliding);
@@ -420,8 +415,8 @@ TEST_CASE("AppState: a session opened with other edits in the same frame lands f
     e.open_session = write("first.json", "{\"version\": 1, \"zeta\": 0.5, \"theta\": 30}");
     e.params = Params{0.9, kPi / 2, 2, 1};
     a.sync(e);
-    CHECK(a.ui().params.zeta == 0.9);
-    CHECK(a.ui().params.theta == kPi / 2);
+    CHECK(a.ui().session.params.zeta == 0.9);
+    CHECK(a.ui().session.params.theta == kPi / 2);
 }
 
 TEST_CASE("script: save-session and open-session take paths next to the script, an unwritable save is "

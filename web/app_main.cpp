@@ -72,7 +72,7 @@ int main() {
         // keeps its address until a slider moves.
         std::string shown = fv::share_link(o.start.model, o.start.params, o.start.start);
         o.on_state = [&shown](const fv::app::UiState& ui) {
-            std::string link = fv::share_link(ui.model, ui.params, ui.start);
+            std::string link = fv::share_link(ui.session.model, ui.session.params, ui.session.start);
             if (link == shown) return;
             shown = std::move(link);
             fv_replace_page_query(shown.c_str());

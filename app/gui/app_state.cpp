@@ -39,13 +39,13 @@ AppState::AppState(Model model, const Params& params, double amplitude_um, doubl
     : AppState(start_of(model, params, amplitude_um, frequency_khz), std::move(data)) {}
 
 std::string AppState::show_session(const Session& s, std::optional<MeasurementSet> data) {
-    copy_session_fields(ui_, s);
-    ui_.view.rewind = 0; // the simulation restarts: no history to look back into
+    ui_.session = s;             // the session's state, without its data file (read by the caller)
+    ui_.session.view.rewind = 0; // the simulation restarts: no history to look back into
     ui_.data.reset();
     const std::string loaded = data ? show_measured(ui_, std::move(*data)) : "";
-    sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
-    sim_.apply(ui_.model, ui_.params);
-    sim_.reset(ui_.start);
+    sim_.set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
+    sim_.apply(ui_.session.model, ui_.session.params);
+    sim_.reset(ui_.session.start);
     step_carry_ = 0;
     step_pending_ = false;
     refresh_units();
@@ -54,8 +54,8 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
 }
 
 RatioRequest AppState::ratio_request() const {
-    return RatioRequest{ui_.model, ui_.params, ui_.show_map, ratio_zeta_max(ui_.data ? &*ui_.data : nullptr),
-                        ui_.start};
+    return RatioRequest{ui_.session.model, ui_.session.params, ui_.session.panel == LowerPanel::map,
+                        ratio_zeta_max(ui_.data ? &*ui_.data : nullptr), ui_.session.start};
 }
 
 void AppState::refresh_units() {
@@ -68,7 +68,8 @@ void AppState::refresh_units() {
             return std::nan("");
         }
     };
-    ui_.vv_m_s = value([&] { return units::vibration_velocity(ui_.amplitude_um, ui_.frequency_khz); });
+    ui_.vv_m_s =
+        value([&] { return units::vibration_velocity(ui_.session.amplitude_um, ui_.session.frequency_khz); });
     ui_.vb_m_s = value([&] { return vb_of(ui_); });
     ui_.zss_um = value([&] { return zss_of(ui_); });
 }
@@ -96,31 +97,33 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
         }
     }
     bool model_changed = false, data_changed = false;
-    if (model && *model != ui_.model) ui_.model = *model, model_changed = true;
+    if (model && *model != ui_.session.model) ui_.session.model = *model, model_changed = true;
     // Another start: the motion begins again from it (the teaching moment: switched to sliding, the
     // students see it end in the other state where two coexist), and the readouts report its state.
     bool start_changed = false;
-    if (e.start && *e.start != ui_.start) {
-        ui_.start = *e.start, start_changed = reset = true;
-        ui_.status = ui_.start == Start::sliding
+    if (e.start && *e.start != ui_.session.start) {
+        ui_.session.start = *e.start, start_changed = reset = true;
+        ui_.status = ui_.session.start == Start::sliding
                          ? "started again from steady sliding: the asperity fully deflected against v_b"
                          : "started again from rest: the asperity unstretched (the paper's start)";
     }
     // Parameters and their physical inputs: one candidate, checked once against the range table.
     if (params || e.vb_m_s || e.zss_um) {
-        Params p = params.value_or(ui_.params);
+        Params p = params.value_or(ui_.session.params);
         std::string err;
         try {
-            if (e.vb_m_s) p.zeta = units::zeta_from_vb(*e.vb_m_s, ui_.amplitude_um, ui_.frequency_khz);
-            if (e.zss_um) p.rdisp = units::rdisp_from_zss(ui_.amplitude_um, *e.zss_um);
+            if (e.vb_m_s)
+                p.zeta = units::zeta_from_vb(*e.vb_m_s, ui_.session.amplitude_um, ui_.session.frequency_khz);
+            if (e.zss_um) p.rdisp = units::rdisp_from_zss(ui_.session.amplitude_um, *e.zss_um);
         } catch (const units::UnitError& x) {
             err = x.what();
         }
         if (err.empty()) err = range_error(p);
         // What the panel shows in physical units must stay finite (rdisp 5e-324 would give z_ss = inf).
-        if (err.empty()) err = units::physical_view_error(p, ui_.amplitude_um, ui_.frequency_khz);
         if (err.empty())
-            ui_.params = p, model_changed = true;
+            err = units::physical_view_error(p, ui_.session.amplitude_um, ui_.session.frequency_khz);
+        if (err.empty())
+            ui_.session.params = p, model_changed = true;
         else
             ui_.status = err;
     }
@@ -133,7 +136,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     }
     if (e.load_data) ui_.status = load_measured(ui_, *e.load_data), data_changed = true;
     if (e.clear_data && ui_.data) ui_.data.reset(), ui_.status = "data cleared", data_changed = true;
-    if (e.fit_data && ui_.data && ui_.model == Model::dahl) {
+    if (e.fit_data && ui_.data && ui_.session.model == Model::dahl) {
         fit_.start(ui_);
         ui_.status = "fitting r_disp and i to " + std::to_string(ui_.data->points.size()) + " points…";
     }
@@ -143,65 +146,69 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
             drop_fit_ = false;
         } else {
             ui_.status = done->status;
-            if (done->params) ui_.params = *done->params, model_changed = true;
+            if (done->params) ui_.session.params = *done->params, model_changed = true;
         }
     }
     ui_.fitting = fit_.running();
-    if (e.playing) ui_.playing = *e.playing;
+    if (e.playing) ui_.session.playing = *e.playing;
     if (e.show_help) ui_.show_help = *e.show_help;
-    if (e.show_loop) ui_.show_loop = *e.show_loop;
-    if (e.show_mechanism) ui_.show_mechanism = *e.show_mechanism;
-    if (e.presentation) ui_.presentation = *e.presentation;
-    if (e.clear_pins) ui_.pins.clear(), ui_.status = "pins cleared";
+    if (e.presentation) ui_.session.presentation = *e.presentation;
+    if (e.clear_pins) ui_.session.pins.clear(), ui_.status = "pins cleared";
     bool ask_worker = false;
-    if (e.show_map && *e.show_map != ui_.show_map) ui_.show_map = *e.show_map, ask_worker = true;
-    if (e.speed) ui_.speed = std::clamp(*e.speed, kSpeedRange.lo, kSpeedRange.hi);
-    if (e.trail_periods) {
-        ui_.view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
-        sim_.set_history_periods(std::max(ui_.view.trail_periods, kHistoryPeriods));
+    if (e.panel) {
+        // The map is computed only while it is shown.
+        ask_worker = (*e.panel == LowerPanel::map) != (ui_.session.panel == LowerPanel::map);
+        ui_.session.panel = *e.panel;
     }
-    if (model_changed) sim_.apply(ui_.model, ui_.params);
+    if (e.speed) ui_.session.speed = std::clamp(*e.speed, kSpeedRange.lo, kSpeedRange.hi);
+    if (e.trail_periods) {
+        ui_.session.view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
+        sim_.set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
+    }
+    if (model_changed) sim_.apply(ui_.session.model, ui_.session.params);
     if (model_changed || ask_worker || data_changed || start_changed) worker_.request(ratio_request());
     if (e.pin) pin_current_curve(wait); // the curve of this frame's parameters (scripts wait for it)
-    if (reset) sim_.reset(ui_.start), step_carry_ = 0;
+    if (reset) sim_.reset(ui_.session.start), step_carry_ = 0;
     // Time: any change of the model or a reset shows the live state again; scrubbing and stepping back
     // pause, so that the moment stays on screen.
-    if (model_changed || reset) ui_.view.rewind = 0;
-    if (e.rewind) ui_.view.rewind = std::clamp(*e.rewind, 0.0, max_rewind(sim_)), ui_.playing = false;
+    if (model_changed || reset) ui_.session.view.rewind = 0;
+    if (e.rewind)
+        ui_.session.view.rewind = std::clamp(*e.rewind, 0.0, max_rewind(sim_)), ui_.session.playing = false;
     if (e.step_back)
-        ui_.view.rewind = std::min(ui_.view.rewind + frame_tau(), max_rewind(sim_)), ui_.playing = false;
+        ui_.session.view.rewind = std::min(ui_.session.view.rewind + frame_tau(), max_rewind(sim_)),
+        ui_.session.playing = false;
     if (e.jump_steady) jump_to_steady();
     step_pending_ = e.step;
     refresh_units();
     Actions act{e.screenshot,         e.export_csv,      e.quit, e.save_session.value_or(""),
                 e.open_export_dialog, e.export_animation};
     if (act.export_animation) {
-        act.export_animation->model = ui_.model;
-        act.export_animation->params = ui_.params;
-        act.export_animation->start = ui_.start;
+        act.export_animation->model = ui_.session.model;
+        act.export_animation->params = ui_.session.params;
+        act.export_animation->start = ui_.session.start;
         act.export_animation->vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
     }
     return act;
 }
 
 double AppState::frame_tau() const {
-    return ui_.speed * 2 * kPi / 60;
+    return ui_.session.speed * 2 * kPi / 60;
 }
 
 void AppState::advance(double dt) {
     // While rewound, playing replays the history towards the live state; then the simulation runs on.
-    if (ui_.playing && ui_.view.rewind > 0) {
-        ui_.view.rewind = std::max(0.0, ui_.view.rewind - dt * ui_.speed * 2 * kPi);
-    } else if (ui_.playing) {
-        step_carry_ += dt * ui_.speed * sim_.steps_per_period();
+    if (ui_.session.playing && ui_.session.view.rewind > 0) {
+        ui_.session.view.rewind = std::max(0.0, ui_.session.view.rewind - dt * ui_.session.speed * 2 * kPi);
+    } else if (ui_.session.playing) {
+        step_carry_ += dt * ui_.session.speed * sim_.steps_per_period();
         const int n = static_cast<int>(step_carry_);
         step_carry_ -= n;
         sim_.step(n);
     }
     // One frame forward: through the history while rewound, else the simulation's steps of one frame.
     if (step_pending_) {
-        if (ui_.view.rewind > 0)
-            ui_.view.rewind = std::max(0.0, ui_.view.rewind - frame_tau());
+        if (ui_.session.view.rewind > 0)
+            ui_.session.view.rewind = std::max(0.0, ui_.session.view.rewind - frame_tau());
         else
             sim_.step(std::max(1, static_cast<int>(std::lround(frame_tau() / sim_.dtau()))));
         step_pending_ = false;
@@ -209,7 +216,7 @@ void AppState::advance(double dt) {
 }
 
 void AppState::pin_current_curve(bool wait) {
-    if (ui_.pins.size() >= kMaxPins) {
+    if (ui_.session.pins.size() >= kMaxPins) {
         ui_.status = std::to_string(kMaxPins) + " curves pinned: clear the pins to pin more";
         return;
     }
@@ -219,29 +226,29 @@ void AppState::pin_current_curve(bool wait) {
         ui_.status = "the curve is still being computed: pin it once it is drawn";
         return;
     }
-    const Params& p = ui_.params;
-    const bool rigid = ui_.model == Model::rigid;
+    const Params& p = ui_.session.params;
+    const bool rigid = ui_.session.model == Model::rigid;
     PinnedCurve pin;
     pin.label =
         std::string(rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.3g", p.theta * 180 / kPi) + "°" +
         (rigid ? ""
                : ", r_{disp} = " + format_number("%.3g", p.rdisp) + ", i = " + format_number("%g", p.i)) +
-        (rigid || ui_.start == Start::rest ? "" : ", from sliding");
+        (rigid || ui_.session.start == Start::rest ? "" : ", from sliding");
     pin.zeta = curves->zetas;
     pin.rx = rigid ? curves->rigid_rx : curves->model_rx;
     ui_.status = "pinned: " + pin.label;
-    ui_.pins.push_back(std::move(pin));
+    ui_.session.pins.push_back(std::move(pin));
 }
 
 void AppState::jump_to_steady() {
-    ui_.view.rewind = 0;
-    if (ui_.model == Model::rigid) {
+    ui_.session.view.rewind = 0;
+    if (ui_.session.model == Model::rigid) {
         ui_.status = "the rigid model has no transient: its friction follows the velocity at once";
         return;
     }
     OdeOptions opt;
-    opt.start = ui_.start; // the state the chosen start reaches, where two coexist
-    const OdeSolution s = ode_solve(ui_.params, opt);
+    opt.start = ui_.session.start; // the state the chosen start reaches, where two coexist
+    const OdeSolution s = ode_solve(ui_.session.params, opt);
     if (!ok(s.result.status) || !std::isfinite(s.lag.x()) || !std::isfinite(s.lag.y())) {
         ui_.status =
             std::string("no verified steady state to jump to here (") + to_string(s.result.status) + ")";

@@ -46,8 +46,8 @@ class AppState {
     // session that does not load (session.hpp), the state before it kept. wait: block for a running fit
     // (scripted runs, for reproducible pictures).
     Actions sync(const UiEdits& edits, bool wait = false);
-    // Advances the simulation by dt seconds of wall time at ui().speed while playing, then the single step
-    // asked for by the last sync.
+    // Advances the simulation by dt seconds of wall time at ui().session.speed while playing, then the single
+    // step asked for by the last sync.
     void advance(double dt_seconds);
 
     const UiState& ui() const { return ui_; }

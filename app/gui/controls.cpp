@@ -21,10 +21,8 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.vb_m_s) vb_m_s = o.vb_m_s;
     if (o.zss_um) zss_um = o.zss_um;
     if (o.playing) playing = o.playing;
-    if (o.show_map) show_map = o.show_map;
+    if (o.panel) panel = o.panel;
     if (o.show_help) show_help = o.show_help;
-    if (o.show_loop) show_loop = o.show_loop;
-    if (o.show_mechanism) show_mechanism = o.show_mechanism;
     if (o.presentation) presentation = o.presentation;
     pin |= o.pin;
     if (o.clear_pins) clear_pins = true, pin = false;
@@ -120,7 +118,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     e.merge(draw_menu(ui, dialog));
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
 
-    Params p = ui.params;
+    Params p = ui.session.params;
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
     ImGui::TextUnformatted("Parameters");
@@ -138,7 +136,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    const bool dahl = ui.model == Model::dahl;
+    const bool dahl = ui.session.model == Model::dahl;
     if (!dahl) ImGui::BeginDisabled();
     changed |= slider_double("r_disp", &p.rdisp, kSliders.rdisp, "%.3g", true);
     range_tooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact", kSliders.rdisp,
@@ -169,7 +167,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     // where two coexist. The rigid model has no deflection to start from, so no choice there.
     if (!dahl) ImGui::BeginDisabled();
     const char* starts[] = {"from rest (paper)", "switched on while sliding"};
-    int start = ui.start == Start::sliding ? 1 : 0;
+    int start = ui.session.start == Start::sliding ? 1 : 0;
     if (ImGui::Combo("start", &start, starts, 2)) e.start = start == 1 ? Start::sliding : Start::rest;
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(
@@ -189,7 +187,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     }
 
     // Presentation mode folds the physical units, the presets, the search details and the data away.
-    if (!ui.presentation) {
+    if (!ui.session.presentation) {
         ImGui::Separator();
         e.merge(draw_vibration_controls(ui));
         ImGui::Separator();
@@ -204,10 +202,10 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
 
     ImGui::Separator();
     ImGui::TextUnformatted("Animation");
-    const bool rewound = ui.view.rewind > 0;
-    if (ImGui::Button(ui.playing ? (rewound ? "Pause replay" : "Pause [Space]")
-                                 : (rewound ? "Replay [Space]" : "Play [Space]")))
-        e.playing = !ui.playing;
+    const bool rewound = ui.session.view.rewind > 0;
+    if (ImGui::Button(ui.session.playing ? (rewound ? "Pause replay" : "Pause [Space]")
+                                         : (rewound ? "Replay [Space]" : "Play [Space]")))
+        e.playing = !ui.session.playing;
     ImGui::SameLine();
     if (ImGui::Button("Reset [R]")) e.reset = true;
     if (ImGui::IsItemHovered())
@@ -227,7 +225,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("one frame forward [→]");
     ImGui::SameLine();
     const double reach = max_rewind(sim) / (2 * kPi);
-    double ago = ui.view.rewind / (2 * kPi);
+    double ago = ui.session.view.rewind / (2 * kPi);
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - 64);
     // Reversed (the past on the left, now on the right), the value never hidden: "live" or "N periods ago".
     if (slider_double("##time", &ago, std::max(reach, 1e-3), 0, rewound ? "%.2f periods ago" : "live"))
@@ -238,7 +236,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
                           reach);
     ImGui::SameLine();
     ImGui::TextUnformatted("time");
-    double speed = ui.speed, trail = ui.view.trail_periods;
+    double speed = ui.session.speed, trail = ui.session.view.trail_periods;
     if (slider_double("periods/s", &speed, kSpeedRange.lo, kSpeedRange.hi, "%.2f", true)) e.speed = speed;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("animation speed: vibration periods per second of wall time, %s",
@@ -249,7 +247,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
 
     ImGui::Separator();
     // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
-    const SimMoment now = moment_at(sim, ui.view.rewind);
+    const SimMoment now = moment_at(sim, ui.session.view.rewind);
     if (sim.model() == Model::rigid)
         ImGui::Text("Now  τ/2π %.2f   rigid: F = F_c against v", now.tau / (2 * kPi));
     else
@@ -299,7 +297,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
             ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.1f, 1.0f), "r_x(ζ): %d points failed, not drawn",
                                curves->model_failed);
         // What the search did (as `frictionviz ratio` says it), not a claim about how fast it converged.
-        if (curves->request.model == Model::dahl && !ui.presentation) {
+        if (curves->request.model == Model::dahl && !ui.session.presentation) {
             const SteadyResult& r = curves->current;
             ImGui::Text("search: %d periods, %d Newton updates", r.periods, r.newton_steps);
             if (ImGui::IsItemHovered())
@@ -314,7 +312,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     }
     ImGui::Separator();
     // The lower-right panel: the r_x(zeta) curves (with pins), the (zeta, theta) map or the hysteresis loop.
-    int panel = ui.show_mechanism ? 3 : ui.show_loop ? 2 : (ui.show_map ? 1 : 0);
+    int panel = static_cast<int>(ui.session.panel); // the radio buttons in LowerPanel's order
     const int before = panel;
     ImGui::RadioButton("r_x(ζ)", &panel, 0);
     if (ImGui::IsItemHovered())
@@ -336,15 +334,15 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         ImGui::SetTooltip(
             "the mechanism (the paper's Fig. 4): the body's velocity turns with the vibration, the "
             "friction turns with it, and its mean against v_b is less than F_c");
-    if (panel != before) e.show_map = panel == 1, e.show_loop = panel == 2, e.show_mechanism = panel == 3;
+    if (panel != before) e.panel = kLowerPanels[panel];
     if (ImGui::Button("Pin curve")) e.pin = true;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("keep this r_x(ζ) curve on the plot to compare with others (up to %zu)", kMaxPins);
     ImGui::SameLine();
     if (ImGui::Button("Clear pins")) e.clear_pins = true;
     ImGui::SameLine();
-    ImGui::Text("%zu pinned", ui.pins.size());
-    if (!ui.presentation) {
+    ImGui::Text("%zu pinned", ui.session.pins.size());
+    if (!ui.session.presentation) {
         ImGui::Separator();
         e.merge(draw_data_controls(ui, dialog));
     }
@@ -360,12 +358,12 @@ UiEdits keyboard_edits(const UiState& ui) {
     UiEdits e;
     const ImGuiIO& io = ImGui::GetIO();
     if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return e;
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) e.playing = !ui.playing;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) e.playing = !ui.session.playing;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow), true)) e.step = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow), true)) e.step_back = true;
     if (ImGui::IsKeyPressed('J', false)) e.jump_steady = true;
     if (help_key_pressed()) e.show_help = !ui.show_help;
-    if (ImGui::IsKeyPressed('P', false)) e.presentation = !ui.presentation;
+    if (ImGui::IsKeyPressed('P', false)) e.presentation = !ui.session.presentation;
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;
     if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;

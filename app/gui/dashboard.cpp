@@ -470,7 +470,7 @@ DashboardTransforms paint_dashboard(gfx::Canvas& canvas, const gfx::Rect& area, 
     t.ratio = paint_panel(canvas,
                           enlarged(lower == LowerPanel::map    ? map_panel_live(sim, curves, busy)
                                    : lower == LowerPanel::loop ? loop_panel_live(sim, view.rewind)
-                                   : lower == LowerPanel::mechanism
+                                   : lower == LowerPanel::why
                                        ? mechanism_panel_live(sim, mechanism ? *mechanism : once, view.rewind)
                                        : ratio_panel_live(curves, busy, overlay),
                                    style),

@@ -3,6 +3,7 @@
 // render and the screenshots share one drawing path.
 #pragma once
 
+#include "lower_panel.hpp"
 #include "pinned_curve.hpp"
 #include "ratio_worker.hpp"
 
@@ -79,8 +80,6 @@ struct LoopData {
 LoopData hysteresis_loop(const LiveSim& sim, double rewind = 0);
 PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
 
-// What the lower-right panel shows.
-enum class LowerPanel { curves, map, loop, mechanism };
 // The mechanism panel's base: the registered fig4 (the paper's Fig. 4: the rigid model's velocity and
 // friction at tau = k pi/4, their loci, the mean friction) for the current zeta and theta, faded. Computing
 // it is a figure's sweep, so it is kept (in AppState) while zeta and theta stay.

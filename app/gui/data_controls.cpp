@@ -56,7 +56,7 @@ UiEdits draw_vibration_controls(const UiState& ui) {
     const float half = (ImGui::GetContentRegionAvail().x - st.ItemSpacing.x) / 2 -
                        ImGui::CalcTextSize("z_ss [µm]").x - st.ItemInnerSpacing.x;
     ImGui::PushItemWidth(half);
-    double a = ui.amplitude_um, f = ui.frequency_khz;
+    double a = ui.session.amplitude_um, f = ui.session.frequency_khz;
     if (input_positive("A [µm]", &a, "%.4g")) e.amplitude_um = a;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("vibration amplitude x_v in µm, allowed %s; v_b and z_ss stay, ζ and r_disp follow",
@@ -72,13 +72,13 @@ UiEdits draw_vibration_controls(const UiState& ui) {
         ImGui::SetTooltip("sliding velocity of the body in m/s, allowed %s; sets ζ = v_b / v_v (ζ in %s)",
                           describe(kVbRange).c_str(), describe(kZetaRange).c_str());
     ImGui::SameLine();
-    if (ui.model == Model::rigid) ImGui::BeginDisabled();
+    if (ui.session.model == Model::rigid) ImGui::BeginDisabled();
     if (input_positive("z_ss [µm]", &zss, "%.4g")) e.zss_um = zss;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("steady deflection of the asperity F_c / σ₀ in µm, Eq. (15), allowed %s; sets "
                           "r_disp = A / z_ss (r_disp in %s)",
                           describe(kZssRange).c_str(), describe(kRdispRange).c_str());
-    if (ui.model == Model::rigid) ImGui::EndDisabled();
+    if (ui.session.model == Model::rigid) ImGui::EndDisabled();
     ImGui::PopItemWidth();
     return e;
 }
@@ -98,7 +98,7 @@ UiEdits draw_data_controls(const UiState& ui, FileDialogs& dialog) {
     if (ImGui::Button("Open…")) dialog.data.open_requested = true;
     if (ui.data) {
         ImGui::SameLine();
-        const bool can_fit = !ui.fitting && ui.model == Model::dahl;
+        const bool can_fit = !ui.fitting && ui.session.model == Model::dahl;
         if (!can_fit) ImGui::BeginDisabled();
         if (ImGui::Button(ui.fitting ? "Fitting…" : "Fit r_disp, i")) e.fit_data = true;
         if (!can_fit) ImGui::EndDisabled();
@@ -129,7 +129,8 @@ UiEdits draw_menu(const UiState& ui, FileDialogs& dialog) {
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
-        if (ImGui::MenuItem("Presentation mode", "P", ui.presentation)) e.presentation = !ui.presentation;
+        if (ImGui::MenuItem("Presentation mode", "P", ui.session.presentation))
+            e.presentation = !ui.session.presentation;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
@@ -219,7 +220,7 @@ UiEdits draw_file_dialogs(FileDialogs& dialog) {
 }
 
 void draw_share_link(const UiState& ui) {
-    std::string link = share_link(ui.model, ui.params, ui.start);
+    std::string link = share_link(ui.session.model, ui.session.params, ui.session.start);
     // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
     // height, so the panel's rows below stay where they are.
     const ImGuiStyle& st = ImGui::GetStyle();

@@ -41,13 +41,6 @@ std::string trace_csv(const LiveSim& sim) {
     return s;
 }
 
-LowerPanel lower_panel(const UiState& ui) {
-    return ui.show_mechanism ? LowerPanel::mechanism
-           : ui.show_loop    ? LowerPanel::loop
-           : ui.show_map     ? LowerPanel::map
-                             : LowerPanel::curves;
-}
-
 // The ImGui context for the app's lifetime: fonts from the session's atlas (rasterised at the pixel ratio),
 // input from the platform.
 class ImGuiScope {
@@ -174,21 +167,21 @@ class GuiLoop {
     void build_ui() {
         const gfx::Vec2 logical = session_.logical_page();
         const UiState& ui = app_.ui();
-        const float panel_w = panel_w_ = ui.presentation ? 450 : kPanelWidth;
-        ImGui::GetIO().FontDefault = session_.fonts().font_for(ui.presentation ? 22 : 15);
+        const float panel_w = panel_w_ = ui.session.presentation ? 450 : kPanelWidth;
+        ImGui::GetIO().FontDefault = session_.fonts().font_for(ui.session.presentation ? 22 : 15);
         platform_->imgui_new_frame(logical);
         if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
         queued_.merge(draw_controls(ui, app_.sim(), app_.worker().latest(), app_.worker().busy(), panel_w,
                                     logical.y, dialog_));
-        queued_.export_animation = draw_export_dialog(export_dialog_, ui.speed, animation_.running());
+        queued_.export_animation = draw_export_dialog(export_dialog_, ui.session.speed, animation_.running());
         queued_.merge(keyboard_edits(ui));
         // Without threads (the browser) the curves are computed here, a few milliseconds a frame; not in a
         // frame that moves the model's parameters: the sync below supersedes the job in progress, so the
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
         if (!queued_.moves_curves()) app_.worker().run_slice(std::chrono::milliseconds(6));
-        handle_dashboard_mouse(app_.ui().view, app_.sim(), transforms_);
+        handle_dashboard_mouse(app_.ui().session.view, app_.sim(), transforms_);
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
             queued_.show_help = false;
         ImGui::Render();
@@ -205,7 +198,7 @@ class GuiLoop {
         }
         if (events_.help_key) queued_.show_help = !app_.ui().show_help;
         queued_.merge(script_edits(script_, frame, app_.ui()));
-        if (o_.bench_frames > 0) queued_.params = bench_params(app_.ui().params, frame);
+        if (o_.bench_frames > 0) queued_.params = bench_params(app_.ui().session.params, frame);
         act_ = app_.sync(queued_, scripted_);
         if (act_.quit) return false;
         if (o_.on_state) o_.on_state(app_.ui());
@@ -238,15 +231,15 @@ class GuiLoop {
     void draw() {
         const gfx::Vec2 logical = session_.logical_page();
         const UiState& ui = app_.ui();
-        const bool present = ui.presentation;
+        const bool present = ui.session.presentation;
         const float panel_w = panel_w_; // the panel's as built (presentation may have changed since)
         const auto curves = app_.worker().latest();
         const bool busy = app_.worker().busy();
         gfx::Canvas& canvas = session_.canvas();
         canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
         transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app_.sim(),
-                                      ui.view, curves, busy, lower_panel(ui),
-                                      {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.pins},
+                                      ui.session.view, curves, busy, ui.session.panel,
+                                      {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins},
                                       present ? kPresentationScale : 1.0f, &app_.mechanism());
         times_.layout = Clock::now();
         canvas.end();

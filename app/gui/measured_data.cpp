@@ -13,8 +13,8 @@ namespace {
 
 ReadOptions read_options(const UiState& ui) {
     ReadOptions o;
-    o.amplitude_um = ui.amplitude_um;
-    o.frequency_khz = ui.frequency_khz;
+    o.amplitude_um = ui.session.amplitude_um;
+    o.frequency_khz = ui.session.frequency_khz;
     return o;
 }
 
@@ -22,8 +22,8 @@ std::string describe(const MeasurementSet& d, const UiState& ui) {
     std::string s = "loaded " + std::filesystem::path(d.file).filename().string() + ": " +
                     std::to_string(d.points.size()) + " point" + (d.points.size() == 1 ? "" : "s");
     if (d.from_vb)
-        s += ", v_b converted with A = " + format_number("%g", ui.amplitude_um) +
-             " µm, f = " + format_number("%g", ui.frequency_khz) + " kHz";
+        s += ", v_b converted with A = " + format_number("%g", ui.session.amplitude_um) +
+             " µm, f = " + format_number("%g", ui.session.frequency_khz) + " kHz";
     return s;
 }
 
@@ -48,23 +48,27 @@ std::string load_measured(UiState& ui, const std::string& path) {
 std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
                           std::optional<double> frequency_khz) {
     UiState next = ui;
-    if (amplitude_um) next.amplitude_um = *amplitude_um;
-    if (frequency_khz) next.frequency_khz = *frequency_khz;
+    if (amplitude_um) next.session.amplitude_um = *amplitude_um;
+    if (frequency_khz) next.session.frequency_khz = *frequency_khz;
     try {
         // Same v_b and z_ss under the new vibration.
-        next.params.zeta = units::zeta_from_vb(vb_of(ui), next.amplitude_um, next.frequency_khz);
-        next.params.rdisp = units::rdisp_from_zss(next.amplitude_um, zss_of(ui));
+        next.session.params.zeta =
+            units::zeta_from_vb(vb_of(ui), next.session.amplitude_um, next.session.frequency_khz);
+        next.session.params.rdisp = units::rdisp_from_zss(next.session.amplitude_um, zss_of(ui));
     } catch (const units::UnitError& e) {
         return e.what();
     }
-    std::string bad = range_error(next.params);
-    if (bad.empty()) bad = units::physical_view_error(next.params, next.amplitude_um, next.frequency_khz);
+    std::string bad = range_error(next.session.params);
+    if (bad.empty())
+        bad = units::physical_view_error(next.session.params, next.session.amplitude_um,
+                                         next.session.frequency_khz);
     if (!bad.empty())
-        return "A = " + format_number("%g", next.amplitude_um) +
-               " µm, f = " + format_number("%g", next.frequency_khz) +
+        return "A = " + format_number("%g", next.session.amplitude_um) +
+               " µm, f = " + format_number("%g", next.session.frequency_khz) +
                " kHz at the same v_b and z_ss: " + bad;
     if (next.data && next.data->from_vb)
-        if (std::string why = convert_vb(*next.data, next.amplitude_um, next.frequency_khz); !why.empty())
+        if (std::string why = convert_vb(*next.data, next.session.amplitude_um, next.session.frequency_khz);
+            !why.empty())
             return why;
     ui = std::move(next);
     return "";
@@ -96,9 +100,9 @@ std::string convert_vb(MeasurementSet& data, double amplitude_um, double frequen
 void DataFit::start(const UiState& ui) {
     if (running() || !ui.data) return;
     FitOptions o;
-    o.theta_deg = ui.params.theta * 180 / kPi;
+    o.theta_deg = ui.session.params.theta * 180 / kPi;
     o.shape = ShapeChoice::automatic;
-    o.amplitude_um = ui.amplitude_um;
+    o.amplitude_um = ui.session.amplitude_um;
     o.threads = 1; // the renderer keeps the other core
     job_ = std::async(std::launch::async, [data = *ui.data, o] {
         Job j;
@@ -121,7 +125,7 @@ std::optional<DataFit::Outcome> DataFit::poll(const UiState& ui, bool wait) {
         return out;
     }
     const FitCandidate& b = j.fit->best;
-    Params p = ui.params;
+    Params p = ui.session.params;
     p.rdisp = b.rdisp;
     p.i = b.i;
     out.params = p;
@@ -135,11 +139,11 @@ std::optional<DataFit::Outcome> DataFit::poll(const UiState& ui, bool wait) {
 }
 
 double vb_of(const UiState& ui) {
-    return units::vb_from_zeta(ui.params.zeta, ui.amplitude_um, ui.frequency_khz);
+    return units::vb_from_zeta(ui.session.params.zeta, ui.session.amplitude_um, ui.session.frequency_khz);
 }
 
 double zss_of(const UiState& ui) {
-    return units::zss_from_rdisp(ui.params.rdisp, ui.amplitude_um);
+    return units::zss_from_rdisp(ui.session.params.rdisp, ui.session.amplitude_um);
 }
 
 } // namespace fv::app

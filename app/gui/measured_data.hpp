@@ -32,7 +32,7 @@ std::string convert_vb(MeasurementSet& data, double amplitude_um, double frequen
 std::string set_vibration(UiState& ui, std::optional<double> amplitude_um,
                           std::optional<double> frequency_khz);
 
-// ui.params in physical units: v_b in m/s and z_ss in um.
+// ui.session.params in physical units: v_b in m/s and z_ss in um.
 double vb_of(const UiState& ui);
 double zss_of(const UiState& ui);
 

@@ -1,7 +1,7 @@
 // Where the app's frames go and where its input comes from (MuJoCo's PlatformUIAdapter, polyscope's backends
-// by name). The loop in gui_app.cpp sees only this interface; the window and web adapters (platform_window.cpp,
-// platform_web.cpp, with what they share in platform_glfw.*, the GLFW context in the render layer) are the only
-// code that calls GLFW or an ImGui platform backend.
+// by name). The loop in gui_app.cpp sees only this interface; the window and web adapters
+// (platform_window.cpp, platform_web.cpp, with what they share in platform_glfw.*, the GLFW context in the
+// render layer) are the only code that calls GLFW or an ImGui platform backend.
 #pragma once
 
 #include "fv/gfx/context.hpp"

@@ -41,10 +41,6 @@ void set_param(ScriptContext& c, double Params::*field, double v) {
     c.params_changed = true;
 }
 
-void show_panel(UiEdits& e, bool map, bool loop, bool why) {
-    e.show_map = map, e.show_loop = loop, e.show_mechanism = why;
-}
-
 constexpr ParamRange kRewindRange{0, 1e6};
 
 // Every action, once: the parser, the help, the messages and the edits all read this table.
@@ -124,22 +120,22 @@ const ScriptAction kActions[] = {
      ScriptArg::none,
      {},
      "lower panel: the r_x(zeta) curves",
-     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, false, false); }},
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.panel = LowerPanel::curves; }},
     {"map",
      ScriptArg::none,
      {},
      "lower panel: the (zeta, theta) map",
-     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, true, false, false); }},
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.panel = LowerPanel::map; }},
     {"loop",
      ScriptArg::none,
      {},
      "lower panel: the hysteresis loop",
-     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, true, false); }},
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.panel = LowerPanel::loop; }},
     {"why",
      ScriptArg::none,
      {},
      "lower panel: why friction drops (Fig. 4)",
-     [](const ScriptEntry&, ScriptContext& c) { show_panel(c.edits, false, false, true); }},
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.panel = LowerPanel::why; }},
     {"help",
      ScriptArg::none,
      {},
@@ -149,7 +145,7 @@ const ScriptAction kActions[] = {
      ScriptArg::none,
      {},
      "presentation mode on or off",
-     [](const ScriptEntry&, ScriptContext& c) { c.edits.presentation = !c.ui.presentation; }},
+     [](const ScriptEntry&, ScriptContext& c) { c.edits.presentation = !c.ui.session.presentation; }},
     {"pin",
      ScriptArg::none,
      {},
@@ -207,7 +203,7 @@ const ScriptAction kActions[] = {
      [](const ScriptEntry& s, ScriptContext& c) {
          AnimationRequest r;
          r.path = s.text;
-         r.speed = c.ui.speed;
+         r.speed = c.ui.session.speed;
          c.edits.export_animation = r;
      }},
 };
@@ -309,7 +305,7 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
     UiEdits e;
     const auto it = s.lines.find(frame);
     if (it == s.lines.end()) return e;
-    Params p = ui.params;
+    Params p = ui.session.params;
     bool params_changed = false;
     ScriptContext c{ui, e, p, params_changed};
     for (const ScriptEntry& entry : it->second) entry.action->apply(entry, c);

@@ -290,7 +290,7 @@ std::pair<std::string, ParamRange> number_key(const std::string& ptr) {
 
 Session session_of(const UiState& ui) {
     Session s;
-    copy_session_fields(s, ui);
+    static_cast<SessionState&>(s) = ui.session;
     if (ui.data) {
         std::error_code ec;
         const auto abs = std::filesystem::absolute(ui.data->file, ec);
@@ -327,10 +327,6 @@ void pretty(const Json& j, int indent, std::string& out) {
     out += std::string(static_cast<std::size_t>(indent), ' ') + (j.is_object() ? "}" : "]");
 }
 
-const char* panel_name(const Session& s) {
-    return s.show_mechanism ? "why" : s.show_loop ? "loop" : s.show_map ? "map" : "curves";
-}
-
 } // namespace
 
 std::string session_json(const Session& s) {
@@ -346,7 +342,7 @@ std::string session_json(const Session& s) {
     j["frequency_khz"] = s.frequency_khz;
     j["speed"] = s.speed;
     j["playing"] = s.playing;
-    j["panel"] = panel_name(s);
+    j["panel"] = panel_name(s.panel);
     j["view"] = Json{{"zoom", s.view.zoom},
                      {"pan", {s.view.pan.x(), s.view.pan.y()}},
                      {"follow", s.view.follow},
@@ -458,7 +454,7 @@ Session parse_session(const std::string& text, const std::string& file) {
                                   std::to_string(kSessionVersion));
 
     Session s;
-    std::string model = to_string(s.model), panel = panel_name(s);
+    std::string model = to_string(s.model), panel = panel_name(s.panel);
     r.get(j, "", "model", model, one_of("model", {"dahl", "rigid"}));
     s.model = *parse_model(model);
     double theta_deg = s.params.theta * 180 / kPi;
@@ -484,10 +480,10 @@ Session parse_session(const std::string& text, const std::string& file) {
     }
     r.get(j, "", "speed", s.speed, kSpeedRange);
     r.get(j, "", "playing", s.playing, nullptr);
-    r.get(j, "", "panel", panel, one_of("panel", {"curves", "map", "loop", "why"}));
-    s.show_map = panel == "map";
-    s.show_loop = panel == "loop";
-    s.show_mechanism = panel == "why";
+    std::vector<std::string> panels;
+    for (LowerPanel p : kLowerPanels) panels.push_back(panel_name(p));
+    r.get(j, "", "panel", panel, one_of("panel", panels));
+    s.panel = *panel_from_name(panel);
 
     if (j.contains("view")) {
         const Json& v = j["view"];

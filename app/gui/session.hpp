@@ -37,36 +37,10 @@ namespace fv::app {
 
 inline constexpr int kSessionVersion = 1;
 
-struct Session {
-    Model model = Model::dahl;
-    Params params = UiState{}.params;
-    Start start = Start::rest; // optional in the file (sessions before it: rest)
-    double amplitude_um = UiState{}.amplitude_um, frequency_khz = UiState{}.frequency_khz;
-    double speed = UiState{}.speed;
-    bool playing = true;
-    bool show_map = false, show_loop = false, show_mechanism = false;
-    bool presentation = false; // larger type and lines, the advanced panels folded away (View menu)
-    ViewState view;            // rewind is not saved: the simulation restarts
-    std::vector<PinnedCurve> pins;
+// A session: the app's setup and the measured data file it shows.
+struct Session : SessionState {
     std::string data_file; // empty: no data
 };
-
-// The fields a Session shares with UiState (same names), copied from one to the other.
-template <class To, class From> void copy_session_fields(To& to, const From& from) {
-    to.model = from.model;
-    to.params = from.params;
-    to.start = from.start;
-    to.amplitude_um = from.amplitude_um;
-    to.frequency_khz = from.frequency_khz;
-    to.speed = from.speed;
-    to.playing = from.playing;
-    to.show_map = from.show_map;
-    to.show_loop = from.show_loop;
-    to.show_mechanism = from.show_mechanism;
-    to.presentation = from.presentation;
-    to.view = from.view;
-    to.pins = from.pins;
-}
 
 // One line "FILE:LINE:COL: message".
 struct SessionError : std::runtime_error {

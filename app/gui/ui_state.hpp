@@ -4,6 +4,7 @@
 
 #include "animation_export.hpp"
 #include "dashboard.hpp"
+#include "lower_panel.hpp"
 
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
@@ -15,28 +16,32 @@
 
 namespace fv::app {
 
-struct UiState {
+// What a session file holds (session.hpp) apart from its data file: the setup a teacher hands a class. The
+// app keeps it as one value (UiState::session): saving writes it, opening a session replaces it.
+struct SessionState {
     Model model = Model::dahl;
     Params params{0.15, kPi / 2, 2, 1};
     // The history (docs/model.md, "Which steady state"): where the animation starts (reset, a new start) and
     // which of coexisting steady states the readouts and the r_x(zeta) curve report.
     Start start = Start::rest;
-    bool playing = true;
-    bool show_map = false;  // lower-right panel: r_x(zeta) curves, or the (zeta, theta) map
-    bool show_help = false; // the overlay that explains every symbol (F1, ?)
-    bool show_loop = false; // lower-right panel: the asperity's hysteresis loop (before the map and curves)
-    bool show_mechanism = false; // lower-right panel: the mechanism (Fig. 4) live (before all others)
-    bool presentation = false;   // larger type, thicker lines, the advanced panels folded away (View menu, P)
-    std::vector<PinnedCurve> pins;
-    double speed = 0.25; // vibration periods per second of wall time
-    ViewState view;
-    std::string status; // last message (file written, ...)
-
     // The physical view of zeta and r_disp: v_b = zeta 2 pi f A, z_ss = A / r_disp (units.hpp). Default:
     // the experiment of the paper's Fig. 19 (Littmann et al., Sec. 4: 0.7 um at 60 kHz).
     double amplitude_um = 0.7, frequency_khz = 60;
-    // The physical view of params under A and f, converted once per frame (AppState::sync): v_v = 2 pi f A
-    // and v_b in m/s, z_ss in um. What the panel shows; its inputs send UiEdits::vb_m_s and zss_um.
+    double speed = 0.25; // vibration periods per second of wall time
+    bool playing = true;
+    LowerPanel panel = LowerPanel::curves;
+    bool presentation = false; // larger type, thicker lines, the advanced panels folded away (View menu, P)
+    ViewState view;            // its rewind is not saved: an opened session restarts the simulation
+    std::vector<PinnedCurve> pins;
+};
+
+struct UiState {
+    SessionState session;
+    bool show_help = false; // the overlay that explains every symbol (F1, ?)
+    std::string status;     // last message (file written, ...)
+
+    // The physical view of session.params under A and f, converted once per frame (AppState::sync): v_v = 2
+    // pi f A and v_b in m/s, z_ss in um. What the panel shows; its inputs send UiEdits::vb_m_s and zss_um.
     double vv_m_s = 0, vb_m_s = 0, zss_um = 0;
 
     // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`). A file that
@@ -49,7 +54,8 @@ struct UiEdits {
     std::optional<Model> model;
     std::optional<Start> start; // another start restarts the animation from it
     std::optional<Params> params;
-    std::optional<bool> playing, show_map, show_help, show_loop, show_mechanism, presentation;
+    std::optional<LowerPanel> panel;
+    std::optional<bool> playing, show_help, presentation;
     std::optional<double> speed, trail_periods;
     // A or f: v_b and z_ss stay, zeta and r_disp follow (as when an experimenter turns up the amplitude).
     std::optional<double> amplitude_um, frequency_khz;
