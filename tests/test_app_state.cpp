@@ -116,13 +116,49 @@ TEST_CASE("AppState: edits take effect at sync, once, the later of the same fiel
     CHECK(a.ui().zss_um == Approx(0.7 / 2).epsilon(1e-14));
 }
 
+TEST_CASE("AppState: the mouse's view edits and the loop's status go through the sync like every edit",
+          "[gui][state]") {
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    UiEdits e;
+    e.zoom = 3;
+    e.pan = Vec2(0.5, -2);
+    e.status = "wrote a.png";
+    CHECK(a.ui().session.view.zoom == 1); // nothing before the sync
+    a.sync(e);
+    CHECK(a.ui().session.view.zoom == 3);
+    CHECK(a.ui().session.view.pan == Vec2(0.5, -2));
+    CHECK(a.ui().status == "wrote a.png");
+    // Clamped to the ranges a session file is held to.
+    UiEdits far;
+    far.zoom = 1e9;
+    far.pan = Vec2(-1e9, 1e9);
+    a.sync(far);
+    CHECK(a.ui().session.view.zoom == kZoomRange.hi);
+    CHECK(a.ui().session.view.pan == Vec2(kPanRange.lo, kPanRange.hi));
+    // A double-click: the default view, live, the trail kept; this frame's own message wins over the loop's.
+    UiEdits trail;
+    trail.trail_periods = 3;
+    a.sync(trail);
+    UiEdits reset;
+    reset.reset_view = true;
+    reset.status = "older";
+    reset.clear_pins = true;
+    a.sync(reset);
+    CHECK(a.ui().session.view.zoom == 1);
+    CHECK(a.ui().session.view.pan == Vec2(0, 0));
+    CHECK(a.ui().session.view.follow);
+    CHECK(a.ui().session.view.trail_periods == 3);
+    CHECK(a.ui().status == "pins cleared");
+}
+
 TEST_CASE("AppState: out-of-range edits change nothing and say the table's range", "[gui][state]") {
     AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
     pause(a);
     const Params before = a.ui().session.params;
     auto rejected = [&](const UiEdits& e, const std::string& range) {
-        a.ui().status.clear();
-        a.sync(e);
+        UiEdits cleared = e;
+        cleared.status = ""; // what this sync says about e shows over it
+        a.sync(cleared);
         CHECK(a.ui().status.find(range) != std::string::npos);
         CHECK(a.ui().session.params.zeta == before.zeta);
         CHECK(a.ui().session.params.rdisp == before.rdisp);

@@ -166,7 +166,8 @@ TEST_CASE("ODE: theta = 0, i = 0: located events match the closed-form switching
     fv::OdeOptions o;
     o.tolerance = 1e-10;
     o.record_period = true;
-    for (auto [zeta, rdisp] : {std::pair{0.3, 2.0}, std::pair{0.6, 0.5}, std::pair{0.15, 10.0}}) {
+    for (const auto& point : {std::pair{0.3, 2.0}, std::pair{0.6, 0.5}, std::pair{0.15, 10.0}}) {
+        const double zeta = point.first, rdisp = point.second; // named (lambdas capture no bindings in C++17)
         const double z = 1 / rdisp, s = std::sqrt(1 - zeta * zeta), alpha = std::acos(zeta);
         const double tau1 = kPi - alpha, tau2 = kPi + alpha;
         auto d_b = [&](double h) { return zeta * (h - std::sin(h)) - s * (1 - std::cos(h)); };

@@ -76,6 +76,7 @@ void AppState::refresh_units() {
 
 AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     ++syncs_;
+    if (e.status) ui_.status = *e.status; // older than what this frame's edits say below
     if (e.open_session) {
         try {
             LoadedSession l = load_session(*e.open_session);
@@ -161,6 +162,11 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
         ui_.session.panel = *e.panel;
     }
     if (e.speed) ui_.session.speed = std::clamp(*e.speed, kSpeedRange.lo, kSpeedRange.hi);
+    ViewState& view = ui_.session.view;
+    if (e.reset_view) view = ViewState{1, {0, 0}, true, view.trail_periods};
+    if (e.zoom) view.zoom = std::clamp(*e.zoom, kZoomRange.lo, kZoomRange.hi);
+    if (e.pan)
+        for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp((*e.pan)[k], kPanRange.lo, kPanRange.hi);
     if (e.trail_periods) {
         ui_.session.view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
         sim_.set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));

@@ -51,7 +51,6 @@ class AppState {
     void advance(double dt_seconds);
 
     const UiState& ui() const { return ui_; }
-    UiState& ui() { return ui_; } // the view (zoom, pan) is edited in place by the mouse
     const LiveSim& sim() const { return sim_; }
     RatioWorker& worker() { return worker_; }
     MechanismBase& mechanism() { return mechanism_; } // the mechanism panel's base, kept between frames

@@ -29,6 +29,10 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.speed) speed = o.speed;
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
+    if (o.zoom) zoom = o.zoom;
+    if (o.pan) pan = o.pan;
+    reset_view |= o.reset_view;
+    if (o.status) status = o.status;
     if (o.amplitude_um) amplitude_um = o.amplitude_um;
     if (o.frequency_khz) frequency_khz = o.frequency_khz;
     if (o.load_data) load_data = o.load_data, clear_data = false;

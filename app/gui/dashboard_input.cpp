@@ -9,21 +9,19 @@ namespace fv::app {
 
 // Wheel zooms, left-drag pans (and stops following the drift), double-click resets the view. Over the force
 // plot a tooltip reads the values under the cursor.
-void handle_dashboard_mouse(ViewState& view, const LiveSim& sim, const DashboardTransforms& t) {
+UiEdits dashboard_mouse_edits(const ViewState& view, const LiveSim& sim, const DashboardTransforms& t) {
+    UiEdits e;
     ImGuiIO& io = ImGui::GetIO();
-    if (io.WantCaptureMouse) return;
+    if (io.WantCaptureMouse) return e;
     const gfx::Vec2 m{io.MousePos.x, io.MousePos.y};
     const auto& tv = t.top_view;
     if (tv.area.contains(m)) {
-        if (io.MouseWheel != 0)
-            view.zoom = std::clamp(view.zoom * std::pow(0.85, io.MouseWheel), kZoomRange.lo, kZoomRange.hi);
+        if (io.MouseWheel != 0) e.zoom = view.zoom * std::pow(0.85, io.MouseWheel);
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
             const double sx = (tv.x1 - tv.x0) / tv.area.width(), sy = (tv.y1 - tv.y0) / tv.area.height();
-            view.pan += Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy);
-            for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp(view.pan[k], kPanRange.lo, kPanRange.hi);
+            e.pan = Vec2(view.pan + Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy));
         }
-        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left))
-            view = ViewState{1, {0, 0}, true, view.trail_periods};
+        e.reset_view = ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
     }
     const auto& fp = t.force;
     if (fp.area.contains(m) && !sim.history().empty()) {
@@ -36,6 +34,7 @@ void handle_dashboard_mouse(ViewState& view, const LiveSim& sim, const Dashboard
                               it->F.norm());
         }
     }
+    return e;
 }
 
 } // namespace fv::app

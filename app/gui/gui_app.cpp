@@ -72,14 +72,16 @@ class ImGuiScope {
     ImGuiContext* ctx_;
 };
 
-// The files a frame's actions ask for; the status line says what was written or why not. The S key and the
+// The files a frame's actions ask for; the status line says what was written or why not (through `next`, the
+// next frame's edits). The S key and the
 // trail export take the next free number and never replace a file (this run's or an earlier one's); an
 // explicit path (--screenshot, a session) is replaced atomically. Returns false when a write failed.
 bool write_requested_files(const AppState::Actions& act, const std::string& screenshot_path,
-                           const RenderSession& session, Platform& platform, AppState& app) {
+                           const RenderSession& session, Platform& platform, const AppState& app,
+                           UiEdits& next) {
     bool ok = true;
     auto report = [&](const std::string& path, const std::string& err, const char* what) {
-        app.ui().status = err.empty() ? "wrote " + path + what : err;
+        next.status = err.empty() ? "wrote " + path + what : err;
         if (!err.empty()) std::fprintf(stderr, "frictionviz: %s\n", err.c_str());
         if (err.empty()) platform.file_written(path);
         ok = ok && err.empty();
@@ -181,7 +183,7 @@ class GuiLoop {
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
         if (!queued_.moves_curves()) app_.worker().run_slice(std::chrono::milliseconds(6));
-        handle_dashboard_mouse(app_.ui().session.view, app_.sim(), transforms_);
+        queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
             queued_.show_help = false;
         ImGui::Render();
@@ -205,12 +207,12 @@ class GuiLoop {
         queued_ = UiEdits{};
         if (act_.open_export_dialog) export_dialog_.open_requested = true;
         if (act_.export_animation) {
-            app_.ui().status = animation_.start(*act_.export_animation);
+            queued_.status = animation_.start(*act_.export_animation); // shown from the next frame
             if (scripted_) animation_.wait(); // the file is there before the next frame
         }
-        if (auto status = animation_.poll()) app_.ui().status = *status;
+        if (auto status = animation_.poll()) queued_.status = *status;
         if (animation_.take_failure()) {
-            std::fprintf(stderr, "frictionviz: %s\n", app_.ui().status.c_str());
+            std::fprintf(stderr, "frictionviz: %s\n", queued_.status.value_or(app_.ui().status).c_str());
             ++failed_writes_;
         }
         return true;
@@ -252,7 +254,7 @@ class GuiLoop {
     void finish(int frame) {
         const bool last_frame = total_frames_ > 0 && frame + 1 == total_frames_;
         if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_,
-                                   app_))
+                                   app_, queued_))
             ++failed_writes_;
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();

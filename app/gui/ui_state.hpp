@@ -75,6 +75,14 @@ struct UiEdits {
     bool open_export_dialog = false;
     std::optional<AnimationRequest> export_animation;
     bool pin = false, clear_pins = false; // pin the current r_x(zeta) curve; remove all pins
+    // The mouse over the top view: zoom, pan (data units, added to the followed centre); reset_view: zoom 1,
+    // no pan, following P, live (double-click). Clamped to kZoomRange and kPanRange.
+    std::optional<double> zoom;
+    std::optional<Vec2> pan;
+    bool reset_view = false;
+    // A message for the status line from outside the state (a file the loop wrote or could not write, the
+    // animation export's progress): shown unless this frame's own edits say something newer.
+    std::optional<std::string> status;
     std::optional<std::string> preset;
 
     // Later edits of the same field win; actions accumulate.
