@@ -337,7 +337,7 @@ TEST_CASE("CLI: fit of a malformed file exits 2 with FILE:LINE:COL: message", "[
     CHECK(run("fit --theta 90").code == 2); // --data is required
 }
 
-TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "[cli][render][map]") {
+TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "[cli][render][map][long]") {
     const std::string dir = scratch_dir() + "/map";
     REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
     const Run r = run("render --figure map --rdisp 1 --i 0 --size 640x400 --out " + dir);
@@ -350,7 +350,7 @@ TEST_CASE("CLI: render --figure map writes the grid and the best-angle curve", "
 }
 
 TEST_CASE("CLI: render --figure fig19 plots data over the fitted models, bad data is a usage error",
-          "[cli][render][fit]") {
+          "[cli][render][fit][long]") {
     const std::string dir = scratch_dir() + "/fig19";
     REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
     const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
@@ -382,7 +382,7 @@ TEST_CASE("CLI: render --figure fig19 plots data over the fitted models, bad dat
 
 TEST_CASE("CLI: fig19 applies --amplitude and --frequency (v_b axis, z_ss) and calls only files that say so "
           "synthetic",
-          "[cli][render][fit]") {
+          "[cli][render][fit][long]") {
     const std::string dir = scratch_dir() + "/fig19-units";
     REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
     const std::string data = std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv";
@@ -494,7 +494,7 @@ TEST_CASE("CLI registry: render --list prints every figure once, --figure and it
 }
 
 TEST_CASE("CLI registry: --figure all renders every listed id with its CSV and a caption JSON",
-          "[cli][render][registry]") {
+          "[cli][render][registry][long]") {
     const std::vector<std::string> ids = listed_ids();
     const std::string dir = scratch_dir() + "/registry-all";
     REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
@@ -780,7 +780,7 @@ TEST_CASE("CLI units: trace with --vb/--zss equals trace with the converted zeta
 }
 
 TEST_CASE("CLI units: render scene and map with --vb/--zss give the bytes of the equivalent --zeta/--rdisp",
-          "[cli][units][render]") {
+          "[cli][units][render][long]") {
     // Exact in floating point: v_b = v_v/2 with v_v = 2 pi f A computed as fv::units does, so that
     // zeta = v_b/v_v = 1/2 exactly; r_disp = 0.75/0.25 = 3 exactly.
     const double vv = 2 * 3.14159265358979323846 * 40 * 0.75 * 1e-3;

@@ -246,7 +246,7 @@ TEST_CASE("fig14: panels (a) i = 1 and (b) i = 0 on shared axes, P follows Eqs. 
 
 TEST_CASE("fig19: synthetic data are labelled so, the top axis is v_b = zeta 2 pi f A for --amplitude, "
           "--frequency",
-          "[figures][references]") {
+          "[figures][references][long]") {
     fv::FigureInputs in;
     in.data = std::string(FV_TEST_DATA_DIR) + "/synthetic_two_angles_rdisp2_i0.csv";
     in.amplitude_um = 1.4;

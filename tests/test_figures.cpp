@@ -77,7 +77,8 @@ TEST_CASE("Registry: every figure registered once, in paper order, each defined 
     CHECK(fv::plain_text("r_{disp} = 2, F_{x}, 10^{3}") == "r_disp = 2, F_x, 10^3");
 }
 
-TEST_CASE("Figs. 10 and 12: the rigid reference curves are the closed forms (11) and (10)", "[figures]") {
+TEST_CASE("Figs. 10 and 12: the rigid reference curves are the closed forms (11) and (10)",
+          "[figures][long]") {
     for (const char* id : {"fig10", "fig12"}) {
         const auto d = fv::compute_figure(*fv::find_figure(id));
         const auto& rigid = d.panels.at(0).series.back();
@@ -183,7 +184,7 @@ TEST_CASE("Map: the rigid best angle is 0 below zeta ~ 0.95 and 90 deg above zet
 }
 
 TEST_CASE("Map: every cell is its single point within the map's tolerance, warm-started rows included",
-          "[figures][map]") {
+          "[figures][map][long]") {
     // The map solves each theta row along zeta, starting a cell from its neighbours' periodic states where
     // the cold start is slow (small rdisp, dense zeta: where that happens most). Every cell must still be
     // the point solved on its own at the map's tolerance (`ratio --tolerance 1e-6`) within that tolerance,
@@ -301,7 +302,8 @@ TEST_CASE("Fig. 5: the rigid theta = 0 curve is sampled up to its corner at zeta
 // two coexisting states at zeta = 0.075, theta = 90 deg, rdisp = 0.1, i = 5 (0.0341771 from rest, 0.9975079
 // from sliding: the brute-force RK4 integrator, tests/data/steady_reference.csv) and the period-2 orbit at
 // zeta = 0.405, theta = 32 deg, rdisp = 2, i = 10 (0.2149399, same source).
-TEST_CASE("Map: the start picks the state shown, two-state and period-k cells are marked", "[figures][map]") {
+TEST_CASE("Map: the start picks the state shown, two-state and period-k cells are marked",
+          "[figures][map][long]") {
     auto marks = [](const fv::PanelData& panel, const std::string& label) {
         for (const fv::SeriesData& s : panel.series)
             if (s.label.find(label) != std::string::npos) return s;

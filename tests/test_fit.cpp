@@ -12,7 +12,7 @@ const std::string kData = FV_TEST_DATA_DIR;
 
 } // namespace
 
-TEST_CASE("fit: recovers r_disp = 3, i = 0 of the synthetic theta = 90 deg data (weighted)", "[fit]") {
+TEST_CASE("fit: recovers r_disp = 3, i = 0 of the synthetic theta = 90 deg data (weighted)", "[fit][long]") {
     const fv::MeasurementSet data = fv::read_measurements(kData + "/synthetic_theta90_rdisp3_i0.csv");
     fv::FitOptions opt;
     opt.amplitude_um = 0.7;
@@ -68,7 +68,8 @@ TEST_CASE("fit: recovers r_disp = 1, i = 1 of the synthetic theta = 0 v_b data (
                          << ", RSS = " << r.candidates[0].chi2);
 }
 
-TEST_CASE("fit: one r_disp and i for points at two angles (the layout of the paper's Fig. 19)", "[fit]") {
+TEST_CASE("fit: one r_disp and i for points at two angles (the layout of the paper's Fig. 19)",
+          "[fit][long]") {
     const fv::MeasurementSet data = fv::read_measurements(kData + "/synthetic_two_angles_rdisp2_i0.csv");
     REQUIRE(data.has_theta);
     REQUIRE(data.points.size() == 24);

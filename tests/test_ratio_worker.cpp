@@ -52,7 +52,8 @@ void check_curves_equal(const RatioCurves& a, const RatioCurves& b) {
 
 } // namespace
 
-TEST_CASE("Ratio job: the curve is sweep()'s and the map compute_figure's, point for point", "[gui][ratio]") {
+TEST_CASE("Ratio job: the curve is sweep()'s and the map compute_figure's, point for point",
+          "[gui][ratio][long]") {
     const RatioRequest req = request_at(0.45, 30, true);
     RatioJob job(req, true);
     int steps = 0;

@@ -340,7 +340,7 @@ TEST_CASE("a. theta = 0: the issue's cases", "[solver-ref][theta0]") {
 // ---------------------------------------------------------------------------------------------------------
 
 TEST_CASE("b. theta = 0, i = 0.5, 2, 5, 10: steady_ratio meets the separable 1-D law over the whole domain",
-          "[solver-ref][theta0][general-i]") {
+          "[solver-ref][theta0][general-i][long]") {
     Failures f;
     std::vector<double> rdisps = kRdisps;
     rdisps.push_back(1e3);
@@ -460,7 +460,7 @@ TEST_CASE("d. rdisp -> 0, i = 0: r_x -> 1 at every angle (the tip slips at full 
 }
 
 TEST_CASE("d. rdisp -> 0, theta = 0: r_x -> zeta / mean|zeta + cos tau| (i = 1), (1 - q)/(1 + q) (any i)",
-          "[solver-ref][compliant-limit]") {
+          "[solver-ref][compliant-limit][long]") {
     Failures f;
     for (double zeta : {1e-3, 0.01, 0.1, 0.5, 0.9, 0.99, 1.0, 1.5, 10.0})
         for (double rdisp : {1e-10, 1e-9, 1e-6}) {
@@ -527,7 +527,7 @@ fv::Vec2 small_amplitude_reference(double zeta, double theta, double i) {
 
 TEST_CASE(
     "d. rdisp -> 0 down to the smallest subnormal: every i, theta, zeta meets the small-amplitude limit",
-    "[solver-ref][compliant-limit]") {
+    "[solver-ref][compliant-limit][long]") {
     // The exact state differs from the limit by O(rdisp): allowed 100 rdisp on top of the error estimate.
     Failures f;
     for (double rdisp : {5e-10, 1e-12, 1e-15, 1e-20, 1e-100, 1e-300, 5e-324})
@@ -748,7 +748,7 @@ TEST_CASE("h. property: 300 random points over the domain: finite, ok, |F| bound
 // ---------------------------------------------------------------------------------------------------------
 
 TEST_CASE("i. the whole benchmark grid (5880 points): contract, bounds, exact at 0/180 deg, mirror pairs",
-          "[solver-ref][grid][slow]") {
+          "[solver-ref][grid][slow][long]") {
     std::vector<double> zetas{0.0};
     for (int k = 0; k <= 8; ++k) zetas.push_back(std::pow(10.0, -3.0 + 5.0 * k / 8));
     // Not judged: zeta = 10^(-15/8) = 0.075, theta = 30 and 150 deg, rdisp = 100, i = 10. There the motion

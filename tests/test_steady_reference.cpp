@@ -183,7 +183,7 @@ TEST_CASE("A state found from one start is credited to the other only where the 
 }
 
 TEST_CASE("The solver against the brute-force reference set: same state, error within its bound",
-          "[reference][states][slow]") {
+          "[reference][states][slow][long]") {
     const std::vector<RefRow> rows = reference_rows();
     REQUIRE(rows.size() == 146); // 13 hard points and 60 random ones, both starts
     int compared = 0, failed_honestly = 0;

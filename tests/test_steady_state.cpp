@@ -11,7 +11,7 @@ using fv::Params;
 using fv::SteadyStatus;
 using fv::Vec2;
 
-TEST_CASE("r_disp -> infinity approaches the rigid model", "[steady][limit]") {
+TEST_CASE("r_disp -> infinity approaches the rigid model", "[steady][limit][long]") {
     // A stiff asperity (z_ss -> 0) slips all the time with |F| = F_c along the velocity: Eq. (9).
     for (double i : {0.0, 1.0})
         for (double th : {0.0, kPi / 4, kPi / 2})

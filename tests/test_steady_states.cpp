@@ -117,7 +117,8 @@ TEST_CASE("A looser tolerance never fails where the default succeeds", "[states]
 
 // The issue's check, on a whole i = 10 grid (1050 points over the period-k and slow bands): wherever the
 // default tolerance verifies a state, 1e-6 does too, within 1e-6 (plus the default's own estimate) of it.
-TEST_CASE("A looser tolerance never fails where the default succeeds: the i = 10 grid", "[states][slow]") {
+TEST_CASE("A looser tolerance never fails where the default succeeds: the i = 10 grid",
+          "[states][slow][long]") {
     std::vector<fv::Params> pts;
     for (const double rdisp : {0.1, 1.0, 2.0, 10.0, 100.0, 1000.0})
         for (int t = 0; t <= 6; ++t)
@@ -149,7 +150,7 @@ TEST_CASE("A looser tolerance never fails where the default succeeds: the i = 10
 // i >= 2, where the start decides the state (the ode solver once reported the saturated state there), and the
 // i = 10 band of period-k and slow cells.
 TEST_CASE("The ode solver and the paper's scheme agree from rest wherever both vouch for a state",
-          "[states]") {
+          "[states][long]") {
     std::vector<fv::Params> pts;
     for (const double rdisp : {0.001, 0.01})
         for (const double i : {2.0, 5.0, 10.0})
@@ -184,7 +185,7 @@ TEST_CASE("The ode solver and the paper's scheme agree from rest wherever both v
 
 // The paper's Figs. 10-13 lie where the steady state is unique: along every curve both starts reach one
 // state (docs/cli.md, "Which steady state", says so, and the figures are the same from either start).
-TEST_CASE("Along the curves of Figs. 10-13 both starts reach one steady state", "[states]") {
+TEST_CASE("Along the curves of Figs. 10-13 both starts reach one steady state", "[states][long]") {
     std::vector<fv::Params> pts;
     for (const double theta : {0.0, 90.0})
         for (const double i : {0.0, 1.0})

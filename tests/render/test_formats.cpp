@@ -122,7 +122,30 @@ const std::string& rendered() {
 
 } // namespace
 
-TEST_CASE("render --format: the SVG and the PDF, rasterised, show the PNG's picture", "[render][formats]") {
+TEST_CASE("render --format png,svg,pdf of one figure: the SVG and the PDF rasterised show the PNG's picture",
+          "[render][formats]") {
+    // One cheap figure through all three backends (the [long] cases below do every figure); run in the
+    // sanitizer build too, where it is the cairo replay's test.
+    const std::string d = scratch("one");
+    const Run r = render("--figure fig5 --format png,svg,pdf --size 640x400 --out " + d);
+    INFO(r.err);
+    REQUIRE(r.code == 0);
+    CHECK(slurp(d + "/fig5.svg").rfind("<?xml", 0) == 0);
+    CHECK(slurp(d + "/fig5.pdf").rfind("%PDF-", 0) == 0);
+    REQUIRE(sh("rsvg-convert -w 640 -h 400 -b white -o '" + d + "/svg.png' '" + d + "/fig5.svg'").code == 0);
+    // As in the test of every figure: the PDF at 144 dpi averaged over 2x2 pixels (hinted glyphs at 72).
+    REQUIRE(sh("pdftoppm -r 144 -png -singlefile '" + d + "/fig5.pdf' '" + d + "/pdf2x'").code == 0);
+    write_png(d + "/pdf.png", half(load_png(d + "/pdf2x.png")));
+    const fv::gfx::Image png = load_png(d + "/fig5.png");
+    for (const char* raster : {"/svg.png", "/pdf.png"}) {
+        const auto cmp = fv::gfx::compare_images(load_png(d + raster), png, kChannel, 1.5 * kShare);
+        INFO(raster << ": " << cmp.differing_share * 100 << "% of pixels differ");
+        CHECK(cmp.passed);
+    }
+}
+
+TEST_CASE("render --format: the SVG and the PDF, rasterised, show the PNG's picture",
+          "[render][formats][long]") {
     const std::string& d = rendered();
     for (const std::string& id : figure_ids()) {
         const std::string base = d + "/" + id;
@@ -152,7 +175,7 @@ TEST_CASE("render --format: the SVG and the PDF, rasterised, show the PNG's pict
 }
 
 TEST_CASE("render --format pdf: real text in embedded DejaVu Sans, no raster for vector content",
-          "[render][formats]") {
+          "[render][formats][long]") {
     const std::string& d = rendered();
     const Run text = sh("pdftotext '" + d + "/fig5.pdf' -");
     REQUIRE(text.code == 0);
@@ -180,7 +203,7 @@ TEST_CASE("render --format pdf: real text in embedded DejaVu Sans, no raster for
     CHECK(images("map") == 2); // the heat map and its colour bar
 }
 
-TEST_CASE("render --format svg: text as glyph outlines, as docs/cli.md says", "[render][formats]") {
+TEST_CASE("render --format svg: text as glyph outlines, as docs/cli.md says", "[render][formats][long]") {
     // cairo 1.16 writes no <text>: each glyph once as a <symbol> path, placed with <use> (docs/cli.md: take
     // the PDF where text must be text). A cairo that writes <text> fails here: then docs/cli.md is to be
     // updated.
@@ -191,7 +214,7 @@ TEST_CASE("render --format svg: text as glyph outlines, as docs/cli.md says", "[
 }
 
 TEST_CASE("render --scale: 2x the size at scale 2 is the same picture at twice the resolution",
-          "[render][scale]") {
+          "[render][scale][long]") {
     // Every figure: the 1x pictures are those of the format test.
     const std::string& one = rendered();
     const std::string two = scratch("scale2");
@@ -221,10 +244,10 @@ TEST_CASE("render --scale: 2x the size at scale 2 is the same picture at twice t
 }
 
 TEST_CASE("render --scale below 1 is a thumbnail: the 1x picture at lower resolution, same layout",
-          "[render][scale]") {
+          "[render][scale][long]") {
     // docs/figures.md: the page (--size / --scale) decides the layout and the text sizes in logical units;
-    // --scale only the pixels per unit. Below 1 that makes a thumbnail (text 13 x S pixels, 6.5 at 0.5), not a
-    // legible small figure: for that, a small page at scale >= 1 (320x240 at scale 1: tick labels 7.8 px).
+    // --scale only the pixels per unit. Below 1 that makes a thumbnail (text 13 x S pixels, 6.5 at 0.5), not
+    // a legible small figure: for that, a small page at scale >= 1 (320x240 at scale 1: tick labels 7.8 px).
     const std::string& one = rendered();
     const std::string thumb = scratch("scale05");
     for (const char* id : {"fig4", "fig5", "fig14"}) {
