@@ -36,11 +36,14 @@ std::string scratch_dir() {
     return dir;
 }
 
-// `env`: assignments put before the command, e.g. "FV_TEST_FORCE_STATUS=not_converged".
+// `env`: assignments put before the command, e.g. "FV_TEST_FORCE_STATUS=not_converged" (which runs the
+// executable with the test hooks, frictionviz_forced: the shipped one ignores the variable).
 Run run(const std::string& args, const std::string& env = "") {
     const std::string o = scratch_dir() + "/stdout", e = scratch_dir() + "/stderr";
-    const std::string cmd = (env.empty() ? "" : "env " + env + " ") + std::string(FV_EXE) + " " + args +
-                            " >" + o + " 2>" + e + " </dev/null";
+    const bool forced = env.find("FV_TEST_FORCE_STATUS") != std::string::npos;
+    const std::string cmd = (env.empty() ? "" : "env " + env + " ") +
+                            std::string(forced ? FV_EXE_FORCED : FV_EXE) + " " + args + " >" + o + " 2>" + e +
+                            " </dev/null";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(o), slurp(e)};
 }
@@ -970,6 +973,17 @@ TEST_CASE("CLI status: a normal run exits 0 with status ok everywhere", "[cli][s
     CHECK(nlohmann::json::parse(tr.out)["status"] == "ok");
     // The hook set to nothing changes nothing.
     CHECK(run(std::string("ratio ") + kGood, "FV_TEST_FORCE_STATUS=").code == 0);
+    // The shipped executable has no test hooks: the variable, even a bad value, is ignored.
+    const std::string o = scratch_dir() + "/shipped";
+    const int status = std::system(("env FV_TEST_FORCE_STATUS=not_converged " + std::string(FV_EXE) +
+                                    " ratio " + kGood + " --format csv >" + o + " 2>&1 </dev/null")
+                                       .c_str());
+    CHECK(WIFEXITED(status));
+    CHECK(WEXITSTATUS(status) == 0);
+    CHECK(parse_csv(slurp(o)).at(0).at("status") == "ok");
+    CHECK(std::system(("env FV_TEST_FORCE_STATUS=bogus " + std::string(FV_EXE) + " ratio " + kGood +
+                       " >/dev/null 2>&1 </dev/null")
+                          .c_str()) == 0);
 }
 
 TEST_CASE("CLI status: ratio writes a failed result with its status and exits 3", "[cli][status]") {

@@ -5,6 +5,7 @@
 
 #include "commands.hpp"
 #include "errors.hpp"
+#include "test_hook.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,11 @@ void say(const std::string& what) {
 }
 
 } // namespace
+
+ResultHooks& result_hooks() {
+    static ResultHooks hooks;
+    return hooks;
+}
 
 int run_cli(int argc, char** argv, const RunOptions& options) {
     CLI::App app{"frictionviz - friction reduction by in-plane vibrations (Tsai & Tseng 2006)",

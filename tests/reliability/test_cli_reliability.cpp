@@ -28,9 +28,11 @@ struct Run {
 Run run(const Scratch& cwd, const std::string& args, bool capture_stdout = true,
         const std::string& stdin_from = "/dev/null", const std::string& env = "") {
     const std::string o = cwd / ".stdout", e = cwd / ".stderr";
+    // FV_TEST_FORCE_STATUS: the executable with the test hooks (app/cli/test_hook.hpp).
+    const bool forced = env.find("FV_TEST_FORCE_STATUS") != std::string::npos;
     const std::string cmd = "cd '" + cwd.dir() + "' && " + (env.empty() ? "" : "env " + env + " ") +
-                            std::string(FV_EXE) + " " + args + (capture_stdout ? " >" + o : std::string()) +
-                            " 2>" + e + " <" + stdin_from;
+                            std::string(forced ? FV_EXE_FORCED : FV_EXE) + " " + args +
+                            (capture_stdout ? " >" + o : std::string()) + " 2>" + e + " <" + stdin_from;
     const auto t0 = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

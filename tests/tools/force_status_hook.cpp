@@ -1,8 +1,16 @@
-#include "test_hook.hpp"
+// frictionviz with the test hooks of app/cli/test_hook.hpp installed: FV_TEST_FORCE_STATUS=REASON[@ZETA]
+// marks results as failed after they were computed. REASON is not_converged, integration_failed or non_finite
+// (the last also sets r_x and r_y to NaN, as a real non-finite result would show). Unset or empty: nothing
+// happens. Any other value is a usage error, so that a typo in a test cannot pass silently. Built with the
+// tests only (tests/CMakeLists.txt: frictionviz_forced); tests/test_cli.cpp and the reliability tests run it.
+#include "cli/errors.hpp"
+#include "cli/run_cli.hpp"
+#include "cli/test_hook.hpp"
 
-#include "errors.hpp"
+#include "fv/atomic_file.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <optional>
@@ -51,28 +59,29 @@ void apply(const Forced& f, SweepPoint& row) {
         row.result.rx = row.result.ry = std::numeric_limits<double>::quiet_NaN();
 }
 
-} // namespace
-
-void apply_test_hook(SweepPoint& row) {
+void force_row(SweepPoint& row) {
     if (const auto f = forced()) apply(*f, row);
 }
 
-void apply_test_hook(std::vector<SweepPoint>& rows) {
-    if (const auto f = forced())
-        for (SweepPoint& r : rows) apply(*f, r);
-}
-
-void apply_test_hook(TableData& table) {
+void force_table(TableData& table) {
     const auto f = forced();
     if (!f) return;
     for (SweepPoint& r : table.ratios) apply(*f, r);
     if (!table.trace.empty() && !f->zeta) table.status = f->status;
 }
 
-void apply_test_hook(FitResult& fit) {
+void force_fit(FitResult& fit) {
     if (!forced()) return;
     for (FitCandidate& c : fit.candidates) c.unsteady = c.evaluations;
     fit.best.unsteady = fit.best.evaluations;
 }
 
+} // namespace
 } // namespace fv::cli
+
+int main(int argc, char** argv) {
+    std::setvbuf(stdout, nullptr, _IOLBF, 0); // as app/main.cpp
+    fv::install_interrupt_cleanup();
+    fv::cli::result_hooks() = {fv::cli::force_row, fv::cli::force_table, fv::cli::force_fit};
+    return fv::cli::run_cli(argc, argv);
+}
