@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
-#include <thread>
 
 namespace fv::app {
 namespace {
@@ -261,11 +260,7 @@ class GuiLoop {
         if (o_.bench_frames > 0)
             stats_.record(ms, Ms(times_.sim - times_.start).count(), Ms(times_.layout - times_.sim).count(),
                           Ms(times_.gl - times_.layout).count(), thread_cpu_ms() - cpu_start_);
-            // Without vsync (e.g. Xvfb) do not spin: about 60 frames per second are plenty. (The web platform
-            // paces its frames in present(), where it hands control back to the browser.)
-#if !defined(__EMSCRIPTEN__)
-        if (real_time_ && ms < 15) std::this_thread::sleep_for(Ms(15 - ms));
-#endif
+        if (real_time_) platform_->rest_after_frame(ms);
     }
 
     const GuiOptions& o_;

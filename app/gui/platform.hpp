@@ -7,9 +7,11 @@
 #include "fv/gfx/context.hpp"
 #include "fv/gfx/types.hpp"
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 namespace fv::app {
@@ -55,6 +57,13 @@ class Platform {
     virtual void imgui_new_frame(gfx::Vec2 logical) = 0;
     // Shows the frame (swap buffers; nothing headless).
     virtual void present() = 0;
+    // After a real-time frame that took frame_ms: without vsync (e.g. Xvfb) do not spin, about 60 frames per
+    // second are plenty. The web platform paces its frames in present(), where it hands control back to the
+    // browser, and does nothing here.
+    virtual void rest_after_frame(double frame_ms) {
+        if (frame_ms < 15)
+            std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(15 - frame_ms));
+    }
 
     // The platform's own file chooser for a file of the kind `accept` (".csv"), where it has one (the web
     // page's file input): true when it opened; the file chosen arrives later among PlatformEvents::dropped,

@@ -96,6 +96,8 @@ class WebPlatform final : public GlfwPlatform {
         last_present_ = emscripten_get_now();
     }
 
+    void rest_after_frame(double /*frame_ms*/) override {} // present() paced the frame
+
     bool choose_file(const std::string& accept) override {
         fv_web_choose_file(accept.c_str());
         return true;

@@ -1,3 +1,5 @@
+#include "port.hpp"
+
 #include "fv/gfx/context.hpp"
 
 #include <cstring>
@@ -39,11 +41,7 @@ std::unique_ptr<GpuContext> create_context(const ContextOptions& options) {
     case Backend::Headless:
         break;
     }
-#if defined(__EMSCRIPTEN__)
-    throw std::runtime_error("no headless (OSMesa) backend in the browser build");
-#else
-    return std::make_unique<HeadlessContext>(options.width, options.height, options.scale);
-#endif
+    return port::make_headless(options);
 }
 
 } // namespace fv::gfx

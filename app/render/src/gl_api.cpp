@@ -14,21 +14,6 @@ void GlApi::load(ProcLoader loader) {
     DrawElementsBaseVertex = reinterpret_cast<PfnDrawElementsBaseVertex>(loader("glDrawElementsBaseVertex"));
 }
 
-#if defined(__EMSCRIPTEN__)
-void* linked_gl_proc(const char* name) {
-    struct Entry {
-        const char* name;
-        void* proc;
-    };
-#define FV_GL_ENTRY(type, member, symbol) {#symbol, reinterpret_cast<void*>(&::symbol)},
-    static const Entry table[] = {FV_GL_FUNCTIONS(FV_GL_ENTRY)};
-#undef FV_GL_ENTRY
-    for (const Entry& e : table)
-        if (std::strcmp(e.name, name) == 0) return e.proc;
-    return nullptr;
-}
-#endif
-
 std::string GlApi::describe() const {
     auto str = [this](GLenum e) {
         const GLubyte* s = GetString(e);

@@ -2,7 +2,7 @@
 // GL function table. Nothing in fvrender calls gl* symbols directly: headless mode resolves
 // entry points from a dlopen'ed OSMesa, a window from GLFW. Linking libGL and libOSMesa
 // together clashes (both export every gl* symbol), so the table is the only way in.
-// The browser build fills the same table from emscripten's WebGL 2 library (linked_gl_proc): WebGL 2 is
+// The browser build fills the same table from emscripten's WebGL 2 library (src/port_web.cpp): WebGL 2 is
 // OpenGL ES 3.0, whose headers declare the same calls and PFN types as desktop GL's glcorearb.h.
 #if defined(__EMSCRIPTEN__)
 #include <GLES3/gl3.h>
@@ -105,11 +105,5 @@ struct GlApi {
     /// "OpenGL 4.5 (Core Profile) Mesa ..., llvmpipe" style one-line description.
     std::string describe() const;
 };
-
-#if defined(__EMSCRIPTEN__)
-/// The browser build's ProcLoader: the entry points of FV_GL_FUNCTIONS as linked from emscripten's WebGL 2
-/// library, by name (null for any other name).
-void* linked_gl_proc(const char* name);
-#endif
 
 } // namespace fv::gfx
