@@ -15,6 +15,28 @@
 namespace fv::app {
 namespace {
 
+gfx::LegendPosition legend_position(Legend l) {
+    switch (l) {
+    case Legend::best:
+        return gfx::LegendPosition::Best;
+    case Legend::none:
+        return gfx::LegendPosition::None;
+    case Legend::top_left:
+        return gfx::LegendPosition::TopLeft;
+    case Legend::top_right:
+        return gfx::LegendPosition::TopRight;
+    case Legend::bottom_left:
+        return gfx::LegendPosition::BottomLeft;
+    case Legend::bottom_right:
+        return gfx::LegendPosition::BottomRight;
+    case Legend::outside:
+        return gfx::LegendPosition::Outside;
+    case Legend::above:
+        return gfx::LegendPosition::Above;
+    }
+    return gfx::LegendPosition::Best;
+}
+
 gfx::LineStyle line_style(Dash d) {
     switch (d) {
     case Dash::dashed:
@@ -212,20 +234,7 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     plot.font_size *= panel.text_scale;
     plot.top_scale = panel.top_scale;
     plot.top_title = panel.top_title;
-    if (panel.legend == "none")
-        plot.legend = gfx::LegendPosition::None;
-    else if (panel.legend == "top-left")
-        plot.legend = gfx::LegendPosition::TopLeft;
-    else if (panel.legend == "top-right")
-        plot.legend = gfx::LegendPosition::TopRight;
-    else if (panel.legend == "bottom-left")
-        plot.legend = gfx::LegendPosition::BottomLeft;
-    else if (panel.legend == "bottom-right")
-        plot.legend = gfx::LegendPosition::BottomRight;
-    else if (panel.legend == "outside")
-        plot.legend = gfx::LegendPosition::Outside;
-    else if (panel.legend == "above")
-        plot.legend = gfx::LegendPosition::Above;
+    plot.legend = legend_position(panel.legend);
     if (panel.heatmap) {
         const HeatmapData& h = *panel.heatmap;
         gfx::HeatMap m;

@@ -115,7 +115,7 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     const bool slip = m.slip;
     PanelData panel;
     panel.equal_aspect = true;
-    panel.legend = "outside"; // the trail moves: a legend inside would cover it sooner or later
+    panel.legend = Legend::outside; // the trail moves: a legend inside would cover it sooner or later
     panel.x_title = "x / x_{v}";
     panel.y_title = "y / x_{v}";
     panel.title = std::string("top view: ") +
@@ -224,7 +224,7 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     panel.x_title = "time τ = ωt";
     panel.y_title = "F / F_{c}";
     // The curves scroll through every part of the axes: a legend inside would cover them sooner or later.
-    panel.legend = "above";
+    panel.legend = Legend::above;
     const auto& h = sim.history();
     const double t1 = std::max(moment_at(sim, rewind).tau, 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
     panel.x_min = t0;
@@ -287,7 +287,7 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
     panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
     if (overlay.vv_m_s > 0) panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
     panel.y_title = "friction ratio r_{x}";
-    panel.legend = "best";
+    panel.legend = Legend::best;
     panel.x_min = 0;
     panel.x_max = ratio_zeta_max(overlay.data);
     panel.y_min = 0;
@@ -367,7 +367,7 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
     p.title = std::string(busy ? "updating…  " : "") +
               "r_{x}(ζ, θ), r_{disp} = " + format_number("%.3g", q.rdisp) +
               ", i = " + format_number("%g", q.i);
-    p.legend = "none";
+    p.legend = Legend::none;
     const double theta_deg = std::min(90.0, std::abs(90 - std::abs(q.theta * 180 / kPi - 90)));
     p.points.push_back({Vec2(std::min(q.zeta, 3.0), theta_deg), Ink::tip, Mark::diamond, "", 12});
     return p;
@@ -402,7 +402,7 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     panel.x_title = "vibration displacement u / x_{v} = sin τ";
     panel.y_title = "F along the vibration / F_{c}";
     panel.x_min = -1.1, panel.x_max = 1.1, panel.y_min = -1.15, panel.y_max = 1.15;
-    panel.legend = "none";
+    panel.legend = Legend::none;
     const LoopData loop = hysteresis_loop(sim, rewind);
     if (!loop.complete) {
         panel.title = "hysteresis loop: after the first period";
@@ -443,7 +443,7 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
                   "): v turns, friction follows";
     panel.arrows.push_back({Vec2::Zero(), v, Ink::body, "v", 3.0f});
     panel.arrows.push_back({Vec2::Zero(), f, Ink::tip, "friction", 3.0f});
-    panel.legend = "none"; // the loci are explained by the help overlay; a legend would cover arrows
+    panel.legend = Legend::none; // the loci are explained by the help overlay; a legend would cover arrows
     return panel;
 }
 

@@ -79,7 +79,7 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
     plane.x_min = x0 - 0.45, plane.x_max = x1 + 0.45;
     plane.y_min = std::min(-1.0, std::min(v0.y(), v1.y())) - 0.25;
     plane.y_max = std::max(1.0, std::max(v0.y(), v1.y())) + 0.25;
-    plane.legend = "bottom-left";
+    plane.legend = Legend::bottom_left;
 
     PanelData time;
     time.title = "friction against v_{b} over one period";
@@ -115,7 +115,7 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
     // A band below the curve for the legend (the curve fills the corners above it for most angles).
     time.y_min = std::min(0.0, lowest) - 0.5;
     time.y_max = 1.1;
-    time.legend = "bottom-right";
+    time.legend = Legend::bottom_right;
 
     fig.panels = {std::move(plane), std::move(time)};
     TableData t;
@@ -132,10 +132,10 @@ void dahl_curve_panels(const FigureSpec& spec, FigureData& fig) {
         pd->y_title = "friction force F / F_{c}";
     }
     load.x_min = 0, load.x_max = kDahlCurveTurn, load.y_min = 0, load.y_max = 1.1;
-    load.legend = "bottom-right";
+    load.legend = Legend::bottom_right;
     cycle.x_min = -kDahlCurveTurn - 0.3, cycle.x_max = kDahlCurveTurn + 0.3;
     cycle.y_min = -1.15, cycle.y_max = 1.15;
-    cycle.legend = "none"; // the colours of (a)
+    cycle.legend = Legend::none; // the colours of (a)
     std::string table = "i,leg,x_over_zss,F_over_Fc\n";
     // Every 100th step is drawn and written (0.01 z_ss apart), and each leg's end.
     constexpr int kEvery = 100;

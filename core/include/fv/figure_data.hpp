@@ -82,6 +82,18 @@ struct BandData {
     float opacity = 0.15f;
 };
 
+// Where a panel's legend goes (the painter maps it to the render layer's placement).
+enum class Legend {
+    best,     // a free place inside the axes, else outside
+    none,     // no legend
+    top_left, // inside, in that corner
+    top_right,
+    bottom_left,
+    bottom_right,
+    outside, // right of the axes
+    above,   // between the title and the axes, in rows
+};
+
 struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
     bool equal_aspect = false;
@@ -93,10 +105,8 @@ struct PanelData {
     std::vector<ArrowData> arrows;
     std::optional<HeatmapData> heatmap;
     std::vector<BandData> bands; // behind the series
-    std::string legend = "best"; // best (a free place inside, else outside), none, top-left, top-right,
-                                 // bottom-left, bottom-right, outside (right of the axes), above (between
-                                 // the title and the axes, in rows)
-    float text_scale = 1;        // all of the panel's text (the app's presentation mode)
+    Legend legend = Legend::best;
+    float text_scale = 1; // all of the panel's text (the app's presentation mode)
     // A second x axis along the top: top value = top_scale * x (fig19: v_b in m/s beside zeta); 0: none.
     double top_scale = 0;
     std::string top_title;
