@@ -1,5 +1,6 @@
 #include "dashboard.hpp"
 
+#include "fv/axis_titles.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
@@ -116,8 +117,8 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     PanelData panel;
     panel.equal_aspect = true;
     panel.legend = Legend::outside; // the trail moves: a legend inside would cover it sooner or later
-    panel.x_title = "x / x_{v}";
-    panel.y_title = "y / x_{v}";
+    panel.x_title = titles::kTopViewX;
+    panel.y_title = titles::kTopViewY;
     panel.title = std::string("top view: ") +
                   (rigid ? "rigid body, friction opposes the velocity"
                          : (slip ? "tip T slips: z = z_{ss} (on the circle)"
@@ -284,9 +285,9 @@ double ratio_zeta_max(const MeasurementSet* data) {
 
 PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, const RatioOverlay& overlay) {
     PanelData panel;
-    panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
+    panel.x_title = titles::kZeta;
     if (overlay.vv_m_s > 0) panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
-    panel.y_title = "friction ratio r_{x}";
+    panel.y_title = titles::kRx;
     panel.legend = Legend::best;
     panel.x_min = 0;
     panel.x_max = ratio_zeta_max(overlay.data);
@@ -357,8 +358,8 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
     if (!curves || !curves->map) {
         PanelData p;
         p.title = sim.model() == Model::rigid ? "(ζ, θ) map: Dahl model only" : "(ζ, θ) map: computing…";
-        p.x_title = "velocity ratio ζ = v_{b}/v_{v}";
-        p.y_title = "vibration angle θ [°]";
+        p.x_title = titles::kZeta;
+        p.y_title = titles::kTheta;
         p.x_min = 0, p.x_max = 3, p.y_min = 0, p.y_max = 90;
         return p;
     }

@@ -1,4 +1,5 @@
 #include "fv/figure_data.hpp"
+#include "fv/axis_titles.hpp"
 
 #include "figure_panels.hpp"
 
@@ -20,14 +21,11 @@ std::string curve_label(const Curve& c, bool vary_theta) {
     return "r_{disp} = " + format_number("%g", c.rdisp);
 }
 
-const char* kZetaTitle = "velocity ratio ζ = v_{b}/v_{v}";
-const char* kRxTitle = "friction ratio r_{x}";
-
 // r_x(zeta) curves; one table row per point.
 PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int threads) {
     PanelData panel;
-    panel.x_title = kZetaTitle;
-    panel.y_title = spec.side_force ? "side-force ratio r_{y}" : kRxTitle;
+    panel.x_title = titles::kZeta;
+    panel.y_title = spec.side_force ? titles::kRy : titles::kRx;
     const std::vector<double>& zetas = spec.zetas;
     panel.x_min = std::min(0.0, zetas.front());
     panel.x_max = zetas.back();
@@ -142,8 +140,8 @@ std::string state_note(const SteadyResult& r) {
 PanelData top_view(const Params& p, const std::vector<Sample>& period, const std::vector<Sample>* other) {
     PanelData panel;
     panel.equal_aspect = true;
-    panel.x_title = "x / x_{v}";
-    panel.y_title = "y / x_{v}";
+    panel.x_title = titles::kTopViewX;
+    panel.y_title = titles::kTopViewY;
     SeriesData P{"body point P", {}, {}, Ink::body, Dash::solid, Mark::none, 2.5f};
     SeriesData T{"asperity tip T", {}, {}, Ink::tip, Dash::solid, Mark::none, 2.5f};
     // Start the paths at the period's start (the sample before the first of Eq. (30)'s k = 1..n).
@@ -248,8 +246,8 @@ PanelData step_panel(const Params& p, int n, std::vector<Sample>& rows) {
 
     PanelData panel;
     panel.equal_aspect = true;
-    panel.x_title = "x / x_{v}";
-    panel.y_title = "y / x_{v}";
+    panel.x_title = titles::kTopViewX;
+    panel.y_title = titles::kTopViewY;
     // P's path around the step, finely resolved.
     SeriesData path{"path of P", {}, {}, Ink::body, Dash::solid, Mark::none, 1.5f};
     for (int j = -40; j <= 60; ++j) {
@@ -452,8 +450,8 @@ PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& ro
     break_at_jumps(best_rigid, 5);
     std::vector<SeriesData> marks = cell_marks(rows);
     PanelData panel;
-    panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
-    panel.y_title = "vibration angle θ [°]";
+    panel.x_title = titles::kZeta;
+    panel.y_title = titles::kTheta;
     panel.x_min = h.x0, panel.x_max = h.x1, panel.y_min = h.y0, panel.y_max = h.y1;
     panel.heatmap = std::move(h);
     panel.series = {std::move(best), std::move(best_rigid)};

@@ -1,4 +1,5 @@
 #include "fv/fit_figure.hpp"
+#include "fv/axis_titles.hpp"
 
 #include "fv/format.hpp"
 #include "fv/rigid.hpp"
@@ -71,8 +72,8 @@ FigureData measurement_figure(const MeasurementSet& data, const FitOptions& opt,
         if (angles.size() > 1)
             panel.title = "(" + std::string(1, static_cast<char>('a' + a)) +
                           ") θ = " + format_number("%g", theta_deg) + "°";
-        panel.x_title = "velocity ratio ζ = v_{b}/v_{v}";
-        panel.y_title = "friction ratio r_{x}";
+        panel.x_title = titles::kZeta;
+        panel.y_title = titles::kRx;
         panel.x_min = 0;
         panel.x_max = zetas.back();
         panel.y_min = 0;

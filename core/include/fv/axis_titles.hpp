@@ -1,0 +1,15 @@
+// The axis titles of the quantities that the figures and the app's live panels share: one text per quantity,
+// so that a figure and the live panel showing the same thing label it the same way. (Markup: _{} subscripts.)
+#pragma once
+
+namespace fv::titles {
+
+inline constexpr const char* kZeta = "velocity ratio ζ = v_{b}/v_{v}";
+inline constexpr const char* kTheta = "vibration angle θ [°]";
+inline constexpr const char* kRx = "friction ratio r_{x}";
+inline constexpr const char* kRy = "side-force ratio r_{y}";
+// The top view: positions in units of the vibration amplitude.
+inline constexpr const char* kTopViewX = "x / x_{v}";
+inline constexpr const char* kTopViewY = "y / x_{v}";
+
+} // namespace fv::titles
