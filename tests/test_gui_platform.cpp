@@ -59,7 +59,7 @@ TEST_CASE("gui --platform: bad choices exit 2 with one line naming what is allow
 }
 
 TEST_CASE("gui --scale: 2x the size at scale 2 is the same screen at twice the resolution",
-          "[gui][platform][scale]") {
+          "[gui][platform][scale][long]") {
     const std::string one = root() + "/scale1.png", two = root() + "/scale2.png";
     // The same frames (a fixed 1/60 s each), the same parameters; only the pixel density differs.
     REQUIRE(gui("--headless --frames 20 --size 1280x800 --screenshot " + one).code == 0);

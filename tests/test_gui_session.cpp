@@ -57,7 +57,7 @@ int lines(const std::string& s) {
 } // namespace
 
 TEST_CASE("gui session: saved mid-run and opened again, the same pixels as a run started from the file",
-          "[gui][session]") {
+          "[gui][session][long]") {
     // The starting session moves the view, which no script action does, and names its data file relative
     // to itself.
     write("data.csv", read(std::string(FV_TEST_DATA_DIR) + "/synthetic_theta90_rdisp3_i0.csv"));
