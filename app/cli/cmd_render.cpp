@@ -37,6 +37,25 @@
 namespace fv::cli {
 namespace {
 
+// `render --list markdown`: the README's figure table, one row per registered figure linking its picture in
+// screenshots/ (the CTest readme_figure_table holds the README to it). Cells on one line, '|' escaped.
+std::string figure_table_markdown() {
+    auto cell = [](const std::string& text) {
+        std::string out;
+        for (char c : text) {
+            if (c == '|') out += '\\';
+            out += c == '\n' ? ' ' : c;
+        }
+        return out;
+    };
+    std::string s = "| figure | what it shows |\n| --- | --- |\n";
+    for (const FigureEntry& e : figure_registry()) {
+        const std::string text = !e.summary.empty() ? e.summary : e.make(e.example).caption;
+        s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + cell(text) + " |\n";
+    }
+    return s;
+}
+
 // PNG encodings run in parallel as long as their frames fit in this budget: each holds about two frames (the
 // pixels and stb's filtered copy of them). At least one runs, at most one per core: 2 at 1280x800 (3.9 MiB
 // frames), 1 above 2^20 pixels (1920x1080, 7680x4320). tests/reliability/render_memory_test.cpp holds the

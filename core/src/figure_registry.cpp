@@ -138,15 +138,6 @@ std::string ratio_solvers(const FigureSpec& spec) {
     return s;
 }
 
-std::string escape_cell(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '|') out += '\\';
-        out += c == '\n' ? ' ' : c;
-    }
-    return out;
-}
-
 } // namespace
 
 RegisterFigure::RegisterFigure(FigureEntry entry) {
@@ -184,15 +175,6 @@ std::string figure_ids() {
 std::string figure_list_tsv() {
     std::string s;
     for (const FigureEntry& e : figure_registry()) s += e.id + "\t" + e.title + "\n";
-    return s;
-}
-
-std::string figure_table_markdown() {
-    std::string s = "| figure | what it shows |\n| --- | --- |\n";
-    for (const FigureEntry& e : figure_registry()) {
-        const std::string text = !e.summary.empty() ? e.summary : e.make(e.example).caption;
-        s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + escape_cell(text) + " |\n";
-    }
     return s;
 }
 

@@ -69,9 +69,6 @@ std::string figure_ids();
 // `render --list`: "ID<TAB>TITLE" per line.
 std::string figure_list_tsv();
 
-// The README's figure table (markdown): one row per figure, linking screenshots/ID.png.
-std::string figure_table_markdown();
-
 // One sentence naming every parameter behind a figure: model(s), ζ, θ, r_disp, i, the solver and its
 // tolerance, the sampling. Goes into the caption of ID.json.
 std::string figure_parameters(const FigureSpec& spec);
