@@ -10,9 +10,10 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$(pwd)
 # intercept_tls_get_addr=0: the sanitizer runtime's __tls_get_addr interceptor (GCC's up to 13, clang 14's)
-# can take a malloc'd dynamic TLS block for a pre-2.25 glibc header and read garbage as its bounds; LeakSanitizer's tracer then dies at exit
-# ("Tracer caught signal 11", exit 1, no leak reported). Measured here: 3 of 24 `gui --headless` runs under load
-# without it, 0 of 48 with it. (Mudlet hit the same: github.com/Mudlet/Mudlet/pull/9930.)
+# can take a malloc'd dynamic TLS block for a pre-2.25 glibc header and read garbage as its bounds;
+# LeakSanitizer's tracer then dies at exit ("Tracer caught signal 11", exit 1, no leak reported). Measured
+# here: 3 of 24 `gui --headless` runs under load without it, 0 of 48 with it. (Mudlet hit the same:
+# github.com/Mudlet/Mudlet/pull/9930.)
 export ASAN_OPTIONS="abort_on_error=0:halt_on_error=1:detect_stack_use_after_return=1:strict_string_checks=1:check_initialization_order=1:intercept_tls_get_addr=0"
 export LSAN_OPTIONS="suppressions=$root/tests/sanitize/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"

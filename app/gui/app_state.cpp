@@ -168,8 +168,8 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     if (e.pan)
         for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp((*e.pan)[k], kPanRange.lo, kPanRange.hi);
     if (e.trail_periods) {
-        ui_.session.view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
-        sim_.set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
+        view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
+        sim_.set_history_periods(std::max(view.trail_periods, kHistoryPeriods));
     }
     if (model_changed) sim_.apply(ui_.session.model, ui_.session.params);
     if (model_changed || ask_worker || data_changed || start_changed) worker_.request(ratio_request());

@@ -72,9 +72,9 @@ class ImGuiScope {
 };
 
 // The files a frame's actions ask for; the status line says what was written or why not (through `next`, the
-// next frame's edits). The S key and the
-// trail export take the next free number and never replace a file (this run's or an earlier one's); an
-// explicit path (--screenshot, a session) is replaced atomically. Returns false when a write failed.
+// next frame's edits). The S key and the trail export take the next free number and never replace a file
+// (this run's or an earlier one's); an explicit path (--screenshot, a session) is replaced atomically.
+// Returns false when a write failed.
 bool write_requested_files(const AppState::Actions& act, const std::string& screenshot_path,
                            const RenderSession& session, Platform& platform, const AppState& app,
                            UiEdits& next) {

@@ -120,6 +120,30 @@ const std::string& rendered() {
     return dir;
 }
 
+// Rasterises BASE.svg (rsvg-convert) and BASE.pdf (pdftoppm) at width x height and compares each with
+// BASE.png (the GL picture); a failed comparison leaves BASE.KIND.diff.png beside them.
+void check_vector_rasters(const std::string& base, int width, int height) {
+    REQUIRE(sh("rsvg-convert -w " + std::to_string(width) + " -h " + std::to_string(height) + " -b white '" +
+               base + ".svg' -o '" + base + ".svg.png'")
+                .code == 0);
+    // pdftoppm's glyphs at 72 dpi are hinted to whole pixels (the GL atlas and rsvg-convert are not):
+    // rasterised at 144 dpi and averaged over 2x2 pixels, text compares like lines do.
+    REQUIRE(sh("pdftoppm -r 144 -png -singlefile '" + base + ".pdf' '" + base + ".pdf2x'").code == 0);
+    write_png(base + ".pdf.png", half(load_png(base + ".pdf2x.png")));
+    const fv::gfx::Image png = load_png(base + ".png");
+    for (const char* kind : {"svg", "pdf"}) {
+        const fv::gfx::Image other = load_png(base + "." + kind + ".png");
+        // poppler draws the round dots of dotted lines a little larger than cairo's SVG and GL do: a
+        // figure with long dotted curves (fig19) differs on ~0.5% of its pixels there.
+        const double share = std::string(kind) == "pdf" ? 1.5 * kShare : kShare;
+        const auto cmp = fv::gfx::compare_images(other, png, kChannel, share);
+        INFO(base << "." << kind << ": " << cmp.differing_share * 100 << "% of pixels differ by more than "
+                  << kChannel << " (allowed " << share * 100 << "%)");
+        CHECK(cmp.passed);
+        if (!cmp.passed && !cmp.diff.empty()) write_png(base + "." + kind + ".diff.png", cmp.diff);
+    }
+}
+
 } // namespace
 
 TEST_CASE("render --format png,svg,pdf of one figure: the SVG and the PDF rasterised show the PNG's picture",
@@ -132,41 +156,14 @@ TEST_CASE("render --format png,svg,pdf of one figure: the SVG and the PDF raster
     REQUIRE(r.code == 0);
     CHECK(slurp(d + "/fig5.svg").rfind("<?xml", 0) == 0);
     CHECK(slurp(d + "/fig5.pdf").rfind("%PDF-", 0) == 0);
-    REQUIRE(sh("rsvg-convert -w 640 -h 400 -b white -o '" + d + "/svg.png' '" + d + "/fig5.svg'").code == 0);
-    // As in the test of every figure: the PDF at 144 dpi averaged over 2x2 pixels (hinted glyphs at 72).
-    REQUIRE(sh("pdftoppm -r 144 -png -singlefile '" + d + "/fig5.pdf' '" + d + "/pdf2x'").code == 0);
-    write_png(d + "/pdf.png", half(load_png(d + "/pdf2x.png")));
-    const fv::gfx::Image png = load_png(d + "/fig5.png");
-    for (const char* raster : {"/svg.png", "/pdf.png"}) {
-        const auto cmp = fv::gfx::compare_images(load_png(d + raster), png, kChannel, 1.5 * kShare);
-        INFO(raster << ": " << cmp.differing_share * 100 << "% of pixels differ");
-        CHECK(cmp.passed);
-    }
+    check_vector_rasters(d + "/fig5", 640, 400);
 }
 
 TEST_CASE("render --format: the SVG and the PDF, rasterised, show the PNG's picture",
           "[render][formats][long]") {
     const std::string& d = rendered();
     for (const std::string& id : figure_ids()) {
-        const std::string base = d + "/" + id;
-        REQUIRE(sh("rsvg-convert -w 960 -h 600 -b white '" + base + ".svg' -o '" + base + ".svg.png'").code ==
-                0);
-        // pdftoppm's glyphs at 72 dpi are hinted to whole pixels (the GL atlas and rsvg-convert are not):
-        // rasterised at 144 dpi and averaged over 2x2 pixels, text compares like lines do.
-        REQUIRE(sh("pdftoppm -r 144 -png -singlefile '" + base + ".pdf' '" + base + ".pdf2x'").code == 0);
-        write_png(base + ".pdf.png", half(load_png(base + ".pdf2x.png")));
-        const fv::gfx::Image png = load_png(base + ".png");
-        for (const char* kind : {"svg", "pdf"}) {
-            const fv::gfx::Image other = load_png(base + "." + kind + ".png");
-            // poppler draws the round dots of dotted lines a little larger than cairo's SVG and GL do: a
-            // figure with long dotted curves (fig19) differs on ~0.5% of its pixels there.
-            const double share = std::string(kind) == "pdf" ? 1.5 * kShare : kShare;
-            const auto cmp = fv::gfx::compare_images(other, png, kChannel, share);
-            INFO(id << "." << kind << ": " << cmp.differing_share * 100 << "% of pixels differ by more than "
-                    << kChannel << " (allowed " << share * 100 << "%)");
-            CHECK(cmp.passed);
-            if (!cmp.passed && !cmp.diff.empty()) write_png(base + "." + kind + ".diff.png", cmp.diff);
-        }
+        check_vector_rasters(d + "/" + id, 960, 600);
     }
     // The tolerance does not let another picture through.
     const auto wrong = fv::gfx::compare_images(load_png(d + "/fig5.pdf.png"), load_png(d + "/fig12.png"),

@@ -79,15 +79,15 @@ double angle_between(const Vec2& a, const Vec2& b) {
 bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, const Eigen::RowVector2d& w,
                     int& periods) {
     const PeriodRequest rq = state_only(s);
-    const Eigen::RowVector2d u = (y - x).transpose();
-    const double sign_w = w.dot(y - x) > 0 ? 1 : -1;
+    const Vec2 d = y - x;
+    const double wd = w.dot(d); // the push along w must have its sign (none where w is across the segment)
     auto towards = [&](const Vec2& z) {
         Vec2 z1 = z;
         const bool ok = advance_k(s, z1, k, rq);
         periods += k;
-        return ok && sign_w * w.dot(z1 - z) > 0 && u.dot(z1 - z) > 0;
+        return ok && wd * w.dot(z1 - z) > 0 && d.dot(z1 - z) > 0;
     };
-    if (!(w.dot(y - x) != 0) || !towards(x)) return false;
+    if (!towards(x)) return false;
     for (int j = 15; j >= 1; --j)
         if (!towards(y + (j / 16.0) * (x - y))) return false;
     return true;
