@@ -163,7 +163,7 @@ TEST_CASE("Legends: the app's live force plot covers none of its curves as they 
         if (frame % 7 != 0) continue;
         fv::gfx::Canvas& canvas = session().canvas();
         canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
-        fv::app::paint_panel(canvas, fv::app::force_panel_live(a.sim(), a.worker().latest()), force);
+        fv::app::paint_panel(canvas, fv::force_panel_live(a.sim(), a.worker().latest()), force);
         canvas.end_recording();
         const DisplayList& list = canvas.display_list();
         for (const fv::gfx::Region& r : list.regions) {
@@ -184,13 +184,13 @@ TEST_CASE("Legends: a label too long for the axes is elided, the box stays insid
     // ran off the plot). The ratio panel at the app's 1280x800 layout.
     fv::app::AppState a(fv::Model::dahl, fv::Params{0.3, fv::kPi / 3, 2, 0}, 0.7, 60);
     a.worker().wait_idle();
-    const std::vector<fv::app::PinnedCurve> pins{
+    const std::vector<fv::PinnedCurve> pins{
         {std::string(40, 'W') + std::string(40, 'M'), {0.1, 1, 2}, {0.9, 0.5, 0.4}}};
     const Rect ratio = fv::app::layout_dashboard({346, 4, 1276, 796}).ratio;
     fv::gfx::Canvas& canvas = session().canvas();
     canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
     const fv::gfx::PlotTransform tf = fv::app::paint_panel(
-        canvas, fv::app::ratio_panel_live(a.worker().latest(), false, {nullptr, 0, &pins}), ratio);
+        canvas, fv::ratio_panel_live(a.worker().latest(), false, {nullptr, 0, &pins}), ratio);
     canvas.end_recording();
     int legends = 0;
     bool elided = false;

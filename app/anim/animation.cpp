@@ -3,12 +3,13 @@
 #include "gif_encoder.hpp"
 #include "mp4_encoder.hpp"
 
+#include "figures/dashboard_painter.hpp"
 #include "figures/figure_painter.hpp"
 #include "figures/render_session.hpp"
-#include "gui/dashboard.hpp"
 
 #include "fv/atomic_file.hpp"
 #include "fv/format.hpp"
+#include "fv/live_panels.hpp"
 #include "fv/steady_state.hpp"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ std::string caption_of(const Spec& s, double rx) {
 } // namespace
 
 std::optional<Format> format_for_path(const std::string& path) {
-    return app::animation_format(path);
+    return animation_format(path);
 }
 
 const char* allowed_extensions() {
@@ -104,8 +105,8 @@ Frames::Frames(const Spec& spec)
     const SteadyResult steady = steady_ratio(spec.model, spec.params, spec.steady);
     rx_ = steady.rx;
     if (spec.view == View::dashboard)
-        curves_ = app::compute_ratio_curves(
-            {spec.model, spec.params, false, app::ratio_zeta_max(nullptr), spec.steady.start});
+        curves_ = compute_ratio_curves(
+            {spec.model, spec.params, false, ratio_zeta_max(nullptr), spec.steady.start});
     // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
     // stepping settle on its fixed point, a whole number of periods at a time.
     Vec2 lag = Vec2::Zero();
@@ -154,25 +155,24 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
 
     // The top view in the frame moving with the body's mean velocity v_b: the camera fixed on where P would
     // be without vibrating, the axis reading x - v_b t. The trails stay where they were laid down.
-    app::ViewState view;
+    ViewState view;
     const double centre = sim.vibration_centre().x();
     view.follow = false;
     view.pan = Vec2(centre, 0);
-    PanelData top = app::top_view_panel(sim, view);
+    PanelData top = top_view_panel(sim, view);
     shift_x(top, -centre);
     top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
         return;
     }
-    const app::DashboardLayout l = app::layout_dashboard(area);
-    app::paint_panel(canvas, top, l.top_view);
     // The force plot's time axis counts back from now, so that it reads the same every period.
-    PanelData force = app::force_panel_live(sim, curves_);
+    PanelData force = force_panel_live(sim, curves_);
     shift_x(force, -sim.tau());
     force.x_title = "time τ − τ_{now}";
-    app::paint_panel(canvas, force, l.force);
-    app::paint_panel(canvas, app::ratio_panel_live(curves_, false, {nullptr, spec_.vv_m_s}), l.ratio);
+    app::paint_dashboard(
+        canvas, area,
+        {std::move(top), std::move(force), ratio_panel_live(curves_, false, {nullptr, spec_.vv_m_s})});
 }
 
 std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress) {
@@ -224,30 +224,6 @@ std::string export_animation(const Spec& spec, const std::string& path, const Pr
         return e.what();
     }
     return write_file_atomic(path, bytes);
-}
-
-app::AnimationExporter app_exporter() {
-    return [](const app::AnimationRequest& r, const std::function<void(int, int)>& progress,
-              const std::atomic<bool>& cancel) -> std::string {
-        const std::optional<Format> format = format_for_path(r.path);
-        if (!format) return "'" + r.path + "': allowed: " + allowed_extensions();
-        Spec s;
-        s.format = *format;
-        s.model = r.model;
-        s.params = r.params;
-        s.steady.start = r.start;
-        s.periods = r.periods;
-        s.fps = r.fps;
-        s.speed = r.speed;
-        s.width = r.width;
-        s.height = r.height;
-        s.view = r.scene ? View::scene : View::dashboard;
-        s.vv_m_s = r.vv_m_s;
-        even_size(s);
-        if (std::string why = check_spec(s); !why.empty()) return why;
-        if (std::string why = check_writable(r.path); !why.empty()) return why;
-        return export_animation(s, r.path, {progress, &cancel});
-    };
 }
 
 } // namespace fv::anim

@@ -4,13 +4,11 @@
 // it on a worker thread with its own headless context: GL contexts are per thread).
 #pragma once
 
-#include "gui/animation_export.hpp"
-#include "gui/ratio_worker.hpp"
+#include "figures/animation_spec.hpp"
 
 #include "fv/gfx/canvas.hpp"
 #include "fv/live_sim.hpp"
-#include "fv/params.hpp"
-#include "fv/steady_state.hpp"
+#include "fv/ratio_curves.hpp"
 
 #include <atomic>
 #include <functional>
@@ -19,30 +17,15 @@
 
 namespace fv::anim {
 
-using Format = app::AnimationFormat;
-// scene: the top view alone over the whole frame. dashboard: the app's picture without its control panel
-// (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x.
-enum class View { scene, dashboard };
+using Format = AnimationFormat;
+using View = AnimationView;
+using Spec = AnimationSpec;
 
 inline constexpr int kMinPeriods = 1, kMaxPeriods = 20;
 inline constexpr double kMinFps = 1, kMaxFps = 60;
 inline constexpr double kMaxGifFps = 50; // a GIF frame lasts a whole number of 1/100 s, at least 2
 inline constexpr double kMinSpeed = 0.05, kMaxSpeed = 10; // vibration periods per second (the app's range)
 inline constexpr int kMaxFrames = 3600;
-
-struct Spec {
-    Model model = Model::dahl;
-    Params params{0.15, kPi / 2, 2, 1};
-    int periods = 2;    // steady periods in the loop
-    double fps = 30;    // frames per second
-    double speed = 0.5; // vibration periods per second of the animation (slow motion: 2 s per period)
-    int width = 960, height = 600; // pixels (MP4: even, see even_size())
-    float scale = 1;               // pixels per logical unit
-    View view = View::dashboard;
-    Format format = Format::gif;
-    SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point
-    double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
-};
 
 // The format a file name asks for by its extension (.gif, .mp4; any case), if any.
 std::optional<Format> format_for_path(const std::string& path);
@@ -76,7 +59,7 @@ class Frames {
     Spec spec_;
     int count_ = 0;
     double rx_ = 0;
-    std::optional<app::RatioCurves> curves_;
+    std::optional<RatioCurves> curves_;
     LiveSim start_, sim_;
     int at_ = 0; // the frame sim_ is at
 };
@@ -90,9 +73,5 @@ struct Progress {
 // and its format match the path. Returns "" or a one-line error (nothing written then). Throws
 // std::runtime_error when no headless GL context can be made.
 std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress = {});
-
-// The app's File > Export animation…: a request (format by extension, view, periods, speed, the parameters)
-// checked like the command line's flags and exported as above.
-app::AnimationExporter app_exporter();
 
 } // namespace fv::anim

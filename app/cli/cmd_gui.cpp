@@ -12,6 +12,7 @@
 #include "gui/platform.hpp"
 #include "gui/script.hpp"
 
+#include "fv/atomic_file.hpp"
 #include "fv/measurements.hpp"
 #include "fv/share_link.hpp"
 #include "fv/units.hpp"
@@ -26,6 +27,22 @@ std::string no_window_message(const std::string& why) {
            "; run the app without a window with `frictionviz gui --headless --frames N --screenshot FILE`, "
            "render the figures with `frictionviz render --figure all --out DIR`, or run under `xvfb-run -a "
            "frictionviz gui`";
+}
+
+// File > Export animation… in the app: the request the app made (the format by the file's extension), checked
+// as `animate` checks its flags and exported by the same code.
+app::AnimationExporter animation_exporter() {
+    return [](const app::AnimationRequest& r, const std::function<void(int, int)>& progress,
+              const std::atomic<bool>& cancel) -> std::string {
+        const std::optional<anim::Format> format = anim::format_for_path(r.path);
+        if (!format) return "'" + r.path + "': allowed: " + anim::allowed_extensions();
+        anim::Spec s = r.spec;
+        s.format = *format;
+        anim::even_size(s);
+        if (std::string why = anim::check_spec(s); !why.empty()) return why;
+        if (std::string why = check_writable(r.path); !why.empty()) return why;
+        return anim::export_animation(s, r.path, {progress, &cancel});
+    };
 }
 
 // The starting state from the model, unit and data flags (or a --link), the rest from Fig. 14a's parameters.
@@ -203,7 +220,7 @@ Command add_gui_command(CLI::App& root) {
             } else {
                 start_from_flags(*a, *cmd, o);
             }
-            o.animation_exporter = anim::app_exporter();
+            o.animation_exporter = animation_exporter();
             try {
                 const int rc = app::run_gui(o);
                 if (rc != 0) throw RuntimeFailure("the window closed with an error");

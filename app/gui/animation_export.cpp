@@ -5,7 +5,6 @@
 #include <imgui_stdlib.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 
 #if defined(__linux__)
@@ -15,18 +14,6 @@
 #endif
 
 namespace fv::app {
-
-std::optional<AnimationFormat> animation_format(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    const auto slash = path.find_last_of('/');
-    const std::size_t name = slash == std::string::npos ? 0 : slash + 1;
-    if (dot == std::string::npos || dot <= name) return std::nullopt; // no extension, or a dot file
-    std::string ext = path.substr(dot + 1);
-    for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (ext == "gif") return AnimationFormat::gif;
-    if (ext == "mp4") return AnimationFormat::mp4;
-    return std::nullopt;
-}
 
 AnimationExportJob::AnimationExportJob(AnimationExporter exporter) : exporter_(std::move(exporter)) {}
 
@@ -147,9 +134,9 @@ std::optional<AnimationRequest> draw_export_dialog(ExportDialog& d, double speed
         } else {
             AnimationRequest r;
             r.path = d.path;
-            r.scene = d.view == 1;
-            r.periods = d.periods;
-            r.speed = std::clamp(speed, 0.05, 10.0);
+            r.spec.view = d.view == 1 ? AnimationView::scene : AnimationView::dashboard;
+            r.spec.periods = d.periods;
+            r.spec.speed = std::clamp(speed, 0.05, 10.0);
             out = r;
             ImGui::CloseCurrentPopup();
         }

@@ -5,8 +5,7 @@
 // priority so that the window keeps its frame rate; progress and the result go to the status line.
 #pragma once
 
-#include "fv/params.hpp"
-#include "fv/steady_state.hpp" // Start
+#include "figures/animation_spec.hpp"
 
 #include <atomic>
 #include <functional>
@@ -17,20 +16,11 @@
 
 namespace fv::app {
 
-enum class AnimationFormat { gif, mp4 };
-// The format a file name asks for by its extension (.gif, .mp4, any case), if any.
-std::optional<AnimationFormat> animation_format(const std::string& path);
-
+// An export asked for: the file (its extension picks the format) and what to animate (the export dialog sets
+// the view, periods and speed; AppState::sync fills in the parameters in effect).
 struct AnimationRequest {
-    std::string path;   // FILE.gif or FILE.mp4: the format by the extension
-    bool scene = false; // the top view alone, else the dashboard without the panel
-    int periods = 2;
-    double fps = 30, speed = 0.5; // frames per second; vibration periods per second of the animation
-    int width = 960, height = 600;
-    Model model = Model::dahl; // filled in by AppState::sync: the parameters in effect
-    Params params;
-    Start start = Start::rest; // the history: which of coexisting steady states the loop shows
-    double vv_m_s = 0;
+    std::string path;
+    AnimationSpec spec;
 };
 
 // Renders and writes the animation on the calling thread; progress(done, total) after each frame; stops when

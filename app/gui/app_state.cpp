@@ -189,10 +189,11 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     Actions act{e.screenshot,         e.export_csv,      e.quit, e.save_session.value_or(""),
                 e.open_export_dialog, e.export_animation};
     if (act.export_animation) {
-        act.export_animation->model = ui_.session.model;
-        act.export_animation->params = ui_.session.params;
-        act.export_animation->start = ui_.session.start;
-        act.export_animation->vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
+        AnimationSpec& spec = act.export_animation->spec;
+        spec.model = ui_.session.model;
+        spec.params = ui_.session.params;
+        spec.steady.start = ui_.session.start;
+        spec.vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
     }
     return act;
 }

@@ -238,10 +238,11 @@ class GuiLoop {
         const bool busy = app_.worker().busy();
         gfx::Canvas& canvas = session_.canvas();
         canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
-        transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, app_.sim(),
-                                      ui.session.view, curves, busy, ui.session.panel,
-                                      {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins},
-                                      present ? kPresentationScale : 1.0f, &app_.mechanism());
+        const DashboardPanels panels =
+            dashboard_panels(app_.sim(), ui.session.view, curves, busy, ui.session.panel,
+                             {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins}, &app_.mechanism());
+        transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, panels,
+                                      present ? kPresentationScale : 1.0f);
         times_.layout = Clock::now();
         canvas.end();
         session_.imgui().render(*ImGui::GetDrawData());

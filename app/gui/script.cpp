@@ -203,7 +203,7 @@ const ScriptAction kActions[] = {
      [](const ScriptEntry& s, ScriptContext& c) {
          AnimationRequest r;
          r.path = s.text;
-         r.speed = c.ui.session.speed;
+         r.spec.speed = c.ui.session.speed;
          c.edits.export_animation = r;
      }},
 };

@@ -2,6 +2,7 @@
 #include "fv/axis_titles.hpp"
 
 #include "figure_panels.hpp"
+#include "scene_parts.hpp"
 
 #include "fv/adaptive_sampling.hpp"
 #include "fv/format.hpp"
@@ -87,8 +88,7 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
                 if (spec.curves[cj].model == c.model) ++s.palette;
             if (c.model == Model::rigid) s.dash = Dash::dashed;
         } else if (c.model == Model::rigid && !all_rigid) {
-            s.ink = Ink::rigid;
-            s.dash = Dash::dashed;
+            s = scene::rigid_curve({}, {});
         }
         for (const SweepPoint& sp : pts) {
             s.x.push_back(sp.params.zeta);
@@ -138,12 +138,8 @@ std::string state_note(const SteadyResult& r) {
 
 // P and T over one steady period with the spring drawn at 24 regular instants.
 PanelData top_view(const Params& p, const std::vector<Sample>& period, const std::vector<Sample>* other) {
-    PanelData panel;
-    panel.equal_aspect = true;
-    panel.x_title = titles::kTopViewX;
-    panel.y_title = titles::kTopViewY;
-    SeriesData P{"body point P", {}, {}, Ink::body, Dash::solid, Mark::none, 2.5f};
-    SeriesData T{"asperity tip T", {}, {}, Ink::tip, Dash::solid, Mark::none, 2.5f};
+    PanelData panel = scene::top_view_axes();
+    SeriesData P = scene::body_path(2.5f), T = scene::tip_path(2.5f);
     // Start the paths at the period's start (the sample before the first of Eq. (30)'s k = 1..n).
     const Sample& last = period.back();
     const Vec2 shift(-2 * kPi * p.zeta, 0);
@@ -175,8 +171,8 @@ PanelData top_view(const Params& p, const std::vector<Sample>& period, const std
         }
         panel.series.push_back(std::move(T0));
     }
-    panel.points.push_back({last.P + shift, Ink::body, Mark::circle, "P", 9});
-    panel.points.push_back({last.T + shift, Ink::tip, Mark::square, "T", 9});
+    panel.points.push_back(scene::body_mark(last.P + shift, 9));
+    panel.points.push_back(scene::tip_mark(last.T + shift, Ink::tip, 9));
     // Frame both paths with a margin, so the labels of the start points stay inside the plot.
     double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
     for (const SeriesData& s : panel.series)
@@ -190,27 +186,14 @@ PanelData top_view(const Params& p, const std::vector<Sample>& period, const std
 }
 
 PanelData force_panel(const std::vector<Sample>& period) {
-    PanelData panel;
-    panel.x_title = "time τ = ωt over one period";
-    panel.y_title = "F / F_{c} = (P − T) / z_{ss}"; // the convention; the captions say what it means
-    panel.y_min = -1.15;
-    panel.y_max = 1.15;
+    // The convention of F: the captions say what it means.
+    PanelData panel = scene::force_axes(std::string(titles::kTime) + " over one period");
     panel.x_min = 0;
     panel.x_max = 2 * kPi;
-    SeriesData fx{"F_{x}", {}, {}, Ink::force, Dash::solid, Mark::none, 2};
-    SeriesData fy{"F_{y}", {}, {}, Ink::pull, Dash::dashed, Mark::none, 2};
-    SeriesData fm{"|F|", {}, {}, Ink::magnitude, Dash::solid, Mark::none, 2.5f};
+    scene::ForceCurves f;
     const double t0 = period.front().tau - (period[1].tau - period[0].tau);
-    for (const auto& s : period) {
-        const double t = s.tau - t0;
-        fx.x.push_back(t);
-        fx.y.push_back(s.F.x());
-        fy.x.push_back(t);
-        fy.y.push_back(s.F.y());
-        fm.x.push_back(t);
-        fm.y.push_back(s.F.norm());
-    }
-    panel.series = {std::move(fm), std::move(fx), std::move(fy)};
+    for (const auto& s : period) f.add(s.tau - t0, s.F);
+    panel.series = f.take();
     return panel;
 }
 

@@ -1,5 +1,6 @@
 #include "figure_panels.hpp"
 
+#include "fv/axis_titles.hpp"
 #include "fv/format.hpp"
 #include "fv/paper_scheme.hpp"
 #include "fv/rigid.hpp"
@@ -83,7 +84,7 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
 
     PanelData time;
     time.title = "friction against v_{b} over one period";
-    time.x_title = "time τ = ωt";
+    time.x_title = titles::kTime;
     time.y_title = "−F_{x}/F_{c}  (Eq. 3)";
     SeriesData fx{"−F_{x}/F_{c}", {}, {}, Ink::tip, Dash::solid, Mark::none, 2.5f};
     SeriesData phases{"", {}, {}, Ink::tip, Dash::solid, Mark::circle, 0};

@@ -11,5 +11,9 @@ inline constexpr const char* kRy = "side-force ratio r_{y}";
 // The top view: positions in units of the vibration amplitude.
 inline constexpr const char* kTopViewX = "x / x_{v}";
 inline constexpr const char* kTopViewY = "y / x_{v}";
+// Time in radians of the vibration's phase.
+inline constexpr const char* kTime = "time τ = ωt";
+// The spring's pull on the tip, in units of F_c: what every force plot shows (fv::kForceConvention).
+inline constexpr const char* kForce = "F / F_{c} = (P − T) / z_{ss}";
 
 } // namespace fv::titles

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace fv::app {
+namespace fv {
 
 struct PinnedCurve {
     std::string label; // "Dahl, θ = 60°, r_{disp} = 2, i = 0" (plot markup)
@@ -13,4 +13,4 @@ struct PinnedCurve {
 };
 inline constexpr std::size_t kMaxPins = 6;
 
-} // namespace fv::app
+} // namespace fv

@@ -1,0 +1,37 @@
+// What an animation shows and how it is encoded: the one description that the command line's `animate`, the
+// app's File > Export animation and the encoder (app/anim/) share. Data only; anim/animation.hpp checks it
+// (ranges, frame count) and renders it.
+#pragma once
+
+#include "fv/params.hpp"
+#include "fv/steady_state.hpp"
+
+#include <optional>
+#include <string>
+
+namespace fv {
+
+enum class AnimationFormat { gif, mp4 };
+// The format a file name asks for by its extension (.gif, .mp4, any case), if any.
+std::optional<AnimationFormat> animation_format(const std::string& path);
+
+// scene: the top view alone over the whole frame. dashboard: the app's picture without its control panel
+// (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x.
+enum class AnimationView { scene, dashboard };
+
+struct AnimationSpec {
+    Model model = Model::dahl;
+    Params params{0.15, kPi / 2, 2, 1};
+    int periods = 2;    // steady periods in the loop
+    double fps = 30;    // frames per second
+    double speed = 0.5; // vibration periods per second of the animation (slow motion: 2 s per period)
+    int width = 960, height = 600; // pixels (MP4: even)
+    float scale = 1;               // pixels per logical unit
+    AnimationView view = AnimationView::dashboard;
+    AnimationFormat format = AnimationFormat::gif;
+    SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point (its start: the
+                          // history that picks between coexisting steady states)
+    double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
+};
+
+} // namespace fv

@@ -1,0 +1,83 @@
+// The app's live panels as figure data: the top view of the running simulation (P, T, spring, z_ss circle,
+// arrows, fading trails), the force over the last periods, the r_x(zeta) curves with the current point, the
+// (zeta, theta) map, the hysteresis loop and the mechanism. Built from the same pieces as the static scene
+// figure (scene_parts.hpp), painted by the figures layer (app/figures/dashboard_painter.hpp) in the window,
+// the headless app and the animation export alike.
+#pragma once
+
+#include "fv/figure_data.hpp"
+#include "fv/live_sim.hpp"
+#include "fv/measurements.hpp"
+#include "fv/pinned_curve.hpp"
+#include "fv/ratio_curves.hpp"
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace fv {
+
+struct ViewState {
+    double zoom = 1;    // > 1 shows less
+    Vec2 pan{0, 0};     // data units, added to the followed centre
+    bool follow = true; // keep P's drift in view
+    double trail_periods = 1.5;
+    double rewind = 0; // dimensionless time behind the live simulation that is shown (0: live)
+};
+
+// The state shown at `rewind` behind the live simulation (from its history; the live state at 0).
+struct SimMoment {
+    double tau = 0;
+    Vec2 P{0, 0}, T{0, 0}, F{0, 0}, velocity{0, 0};
+    Vec2 centre{0, 0}; // where P would be without the vibration
+    double z = 0;
+    bool slip = false;
+};
+SimMoment moment_at(const LiveSim& sim, double rewind);
+// How far back the history reaches (dimensionless time).
+double max_rewind(const LiveSim& sim);
+
+PanelData top_view_panel(const LiveSim& sim, const ViewState& view);
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind = 0);
+// What the ratio plot shows besides the model: measured points and the physical scale of zeta.
+struct RatioOverlay {
+    const MeasurementSet* data = nullptr; // measured r_x(zeta), or none
+    double vv_m_s = 0;                    // v_v = 2 pi f A; > 0 adds the v_b scale to the axis title
+    const std::vector<PinnedCurve>* pins = nullptr; // curves kept to compare with
+};
+
+// The zeta range the ratio plot spans: [0, 3], wider when measured points lie further out.
+double ratio_zeta_max(const MeasurementSet* data);
+
+PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy,
+                           const RatioOverlay& overlay = {});
+
+// The map panel with the current (zeta, theta) marked.
+PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy);
+
+// The asperity's hysteresis over the period before the shown moment: the friction force along the vibration
+// against the vibration displacement u = sin tau, and the work of the body against friction over that period
+// (F_c x_v units): W = sum of F . dP, and the loop's area, the sum of F_par du (the vibration's share).
+struct LoopData {
+    std::vector<double> u, f;
+    double work = 0, vibration_work = 0;
+    bool complete = false; // a whole period was recorded
+};
+LoopData hysteresis_loop(const LiveSim& sim, double rewind = 0);
+PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
+
+// The mechanism panel's base: the registered fig4 (the paper's Fig. 4: the rigid model's velocity and
+// friction at tau = k pi/4, their loci, the mean friction) for the current zeta and theta, faded. Computing
+// it is a figure's sweep, so it is kept (in AppState) while zeta and theta stay.
+class MechanismBase {
+  public:
+    const PanelData& for_params(const Params& p);
+
+  private:
+    std::optional<std::pair<Vec2, PanelData>> cached_; // (zeta, theta) and the panel
+};
+// The mechanism (the paper's Fig. 4) live: the velocity and the friction on the body at the shown instant
+// over the base.
+PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double rewind = 0);
+
+} // namespace fv

@@ -1,0 +1,423 @@
+#include "fv/live_panels.hpp"
+
+#include "scene_parts.hpp"
+
+#include "fv/axis_titles.hpp"
+#include "fv/figure_registry.hpp"
+#include "fv/fit_figure.hpp"
+#include "fv/format.hpp"
+#include "fv/paper_scheme.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace fv {
+namespace {
+
+// Every k-th sample so that a history never costs more than ~max points to draw.
+std::size_t stride_for(std::size_t n, std::size_t max) {
+    return std::max<std::size_t>(1, (n + max - 1) / max);
+}
+
+SeriesData hline(const std::string& label, double x0, double x1, double y, Ink ink, Dash dash) {
+    SeriesData s;
+    s.label = label;
+    s.x = {x0, x1};
+    s.y = {y, y};
+    s.ink = ink;
+    s.dash = dash;
+    s.width = 1.5f;
+    return s;
+}
+
+// The asperity as a spring from T to P: a zigzag of `coils` turns, `amp` wide, straight ends.
+SeriesData spring_series(const Vec2& T, const Vec2& P, double amp, Ink ink) {
+    SeriesData s;
+    s.ink = ink;
+    s.width = 2.4f;
+    const Vec2 d = P - T;
+    const double len = d.norm();
+    if (!(len > 0)) return s;
+    const Vec2 u = d / len, n{-u.y(), u.x()};
+    constexpr int kCoils = 6;
+    const double a = std::min(amp, 0.5 * len);
+    s.x.push_back(T.x()), s.y.push_back(T.y());
+    for (int k = 0; k <= 2 * kCoils; ++k) {
+        const double f = 0.15 + 0.7 * k / (2.0 * kCoils);
+        const double side = k == 0 || k == 2 * kCoils ? 0 : (k % 2 ? 1 : -1);
+        const Vec2 q = T + f * d + side * a * n;
+        s.x.push_back(q.x()), s.y.push_back(q.y());
+    }
+    s.x.push_back(P.x()), s.y.push_back(P.y());
+    return s;
+}
+
+// An outline through the corners (closed), for the body.
+SeriesData box_series(const Vec2& c, double hw, double hh, const std::string& label) {
+    SeriesData s;
+    s.label = label;
+    s.ink = Ink::spring;
+    s.dash = Dash::dashed;
+    s.width = 1.4f;
+    s.x = {c.x() - hw, c.x() + hw, c.x() + hw, c.x() - hw, c.x() - hw};
+    s.y = {c.y() - hh, c.y() - hh, c.y() + hh, c.y() + hh, c.y() - hh};
+    return s;
+}
+
+// A legend entry with no data.
+SeriesData key(const std::string& label, Ink ink, float width, float opacity = 1, Dash dash = Dash::solid) {
+    SeriesData s;
+    s.label = label;
+    s.ink = ink;
+    s.width = width;
+    s.opacity = opacity;
+    s.dash = dash;
+    return s;
+}
+
+} // namespace
+
+SimMoment moment_at(const LiveSim& sim, double rewind) {
+    SimMoment m;
+    const Params& p = sim.params();
+    const auto& h = sim.history();
+    if (rewind > 0 && !h.empty()) {
+        const double t = std::max(sim.tau() - rewind, h.front().tau);
+        auto it =
+            std::upper_bound(h.begin(), h.end(), t, [](double v, const LiveSample& s) { return v < s.tau; });
+        const LiveSample& s = it == h.begin() ? *it : *std::prev(it);
+        m.tau = s.tau, m.P = s.P, m.T = s.T, m.F = s.F, m.slip = s.slip;
+        m.velocity = body_velocity(p, s.tau);
+        m.centre = s.P - std::sin(s.tau) * Vec2(std::cos(p.theta), std::sin(p.theta));
+        m.z = (s.P - s.T).norm();
+        return m;
+    }
+    m.tau = sim.tau(), m.P = sim.P(), m.T = sim.T(), m.F = sim.force(), m.slip = sim.slipping();
+    m.velocity = sim.velocity(), m.centre = sim.vibration_centre(), m.z = sim.z();
+    return m;
+}
+
+double max_rewind(const LiveSim& sim) {
+    return sim.history().empty() ? 0 : sim.tau() - sim.history().front().tau;
+}
+
+PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
+    const Params& p = sim.params();
+    const bool rigid = sim.model() == Model::rigid;
+    const SimMoment m = moment_at(sim, view.rewind);
+    const bool slip = m.slip;
+    PanelData panel = scene::top_view_axes();
+    panel.legend = Legend::outside; // the trail moves: a legend inside would cover it sooner or later
+    panel.title = std::string("top view: ") +
+                  (rigid ? "rigid body, friction opposes the velocity"
+                         : (slip ? "tip T slips: z = z_{ss} (on the circle)"
+                                 : (p.i == 0 ? "tip T sticks: z < z_{ss} (inside the circle)"
+                                             : "tip T creeps: z < z_{ss} (inside the circle)")));
+
+    // Fading trails: older fifths of the history drawn more transparent.
+    const auto& h = sim.history();
+    const std::size_t stride = stride_for(h.size(), 600);
+    const double t_now = m.tau, span = view.trail_periods * 2 * kPi;
+    constexpr int kChunks = 5;
+    for (int who = 0; who < (rigid ? 1 : 2); ++who) {
+        for (int c = 0; c < kChunks; ++c) {
+            SeriesData s = who == 0 ? scene::body_path(2.2f) : scene::tip_path(2.2f);
+            s.opacity = 0.2f + 0.8f * static_cast<float>(c + 1) / kChunks;
+            if (c != kChunks - 1) s.label.clear(); // the newest part names the path
+            const double lo = t_now - span * (kChunks - c) / kChunks,
+                         hi = t_now - span * (kChunks - c - 1) / kChunks;
+            const double overlap = static_cast<double>(stride) * sim.dtau();
+            for (std::size_t k = 0; k < h.size(); k += stride) {
+                // Include the sample just past each chunk's end so that the chunks join.
+                if (h[k].tau < lo - overlap || h[k].tau > std::min(hi + overlap, t_now)) continue;
+                const Vec2& q = who == 0 ? h[k].P : h[k].T;
+                s.x.push_back(q.x());
+                s.y.push_back(q.y());
+            }
+            if (c == kChunks - 1) {
+                const Vec2 q = who == 0 ? m.P : m.T;
+                s.x.push_back(q.x());
+                s.y.push_back(q.y());
+            }
+            if (!s.x.empty()) panel.series.push_back(std::move(s));
+        }
+    }
+    const Vec2 P = m.P, T = m.T;
+    // The frame (below): the trails' extent so far, P included.
+    double x0 = P.x(), x1 = P.x(), y0 = P.y(), y1 = P.y();
+    auto take = [&](double x, double y) {
+        if (!std::isfinite(x) || !std::isfinite(y)) return;
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    };
+    for (const SeriesData& s : panel.series)
+        for (std::size_t k = 0; k < s.x.size(); ++k) take(s.x[k], s.y[k]);
+    // The spring's zigzag scales with the view: about half the trails' height, as the frame below shows it.
+    const double half_h = std::max(0.5 * (y1 - y0), 0.5) * 1.08 * view.zoom;
+    // What moves, drawn behind the trails' heads: the body around P (it carries P and
+    // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
+    // the asperity as a spring from its tip T (held by the fixed plane while it sticks) to P, green while it
+    // sticks or creeps inside the circle z < z_ss, vermillion while it slips on it.
+    const double bw = (rigid ? 0.3 : 1.15 * p.zss() + 0.25), bh = (rigid ? 0.22 : 1.15 * p.zss() + 0.18);
+    panel.series.insert(panel.series.begin(), box_series(P, bw, bh, "body (carries P, drifts at v_{b})"));
+    const Vec2 C = m.centre, dir{std::cos(p.theta), std::sin(p.theta)};
+    panel.segments.push_back({C - dir, C + dir, Ink::body, Dash::dotted, 1.3f,
+                              "vibration ±x_{v} at θ = " + format_number("%.0f°", p.theta * 180 / kPi),
+                              std::sin(m.tau) > 0 ? 0.05f : 0.95f, 0}); // the label at the end far from P
+    panel.arrows.push_back({P + Vec2(-bw, bh), P + Vec2(-bw + 0.4 * p.zeta, bh), Ink::body, "v_{b}", 2.0f});
+    if (!rigid) {
+        const Ink state = slip ? Ink::tip : Ink::pull;
+        panel.circles.push_back({P, p.zss(), state, slip ? Dash::solid : Dash::dashed, 1.6f});
+        panel.series.push_back(spring_series(T, P, 0.035 * half_h, state));
+        panel.series.push_back(
+            key(p.i == 0 ? "asperity sticks (z < z_{ss})" : "asperity creeps (z < z_{ss})", Ink::pull, 2.4f));
+        panel.series.push_back(key("asperity slips (z = z_{ss})", Ink::tip, 2.4f));
+    }
+    // Arrows: P's velocity (scaled by 0.4) and the friction force on the body, -F: the force plot's F is
+    // (P - T)/z_ss in units of F_c, positive along v_b (the ratio's convention); F_c drawn as 0.5 x_v.
+    const Vec2 v = m.velocity, F = m.F;
+    panel.arrows.push_back({P, P + 0.4 * v, Ink::body, "v", 2.5f});
+    panel.arrows.push_back({P, P - 0.5 * F, Ink::black, "friction", 2.5f});
+    panel.series.push_back(key("friction on the body = −F", Ink::black, 2.5f));
+    panel.points.push_back(scene::body_mark(P, 11));
+    if (!rigid) panel.points.push_back(scene::tip_mark(T, slip ? Ink::tip : Ink::pull, 11));
+
+    // Camera: framed on the trails (above), the arrows at P, and the z_ss circle and the body around P
+    // unless they are far larger than the trails (tiny r_disp: the paths would shrink to a dot), with a
+    // margin. The half sizes go up in steps of 5% so that the frame does not breathe with every sample;
+    // zoom and pan act on that frame.
+    for (const ArrowData& a : panel.arrows)
+        if (a.from == P) take(a.to.x(), a.to.y());
+    const double around_p = rigid ? std::max(bw, bh) : 1.15 * p.zss() + 0.25;
+    if (around_p <= 2 * std::max({x1 - x0, y1 - y0, 1.0})) {
+        take(P.x() - around_p, P.y() - around_p);
+        take(P.x() + around_p, P.y() + around_p);
+    }
+    auto stepped = [](double half) {
+        return std::pow(1.05, std::ceil(std::log(std::max(half, 1e-3)) / std::log(1.05)));
+    };
+    const double frame_w = stepped(0.5 * (x1 - x0) * 1.08) * view.zoom,
+                 frame_h = stepped(0.5 * (y1 - y0) * 1.08) * view.zoom;
+    const double cx = (view.follow ? 0.5 * (x0 + x1) : 0) + view.pan.x(),
+                 cy = (view.follow ? 0.5 * (y0 + y1) : 0) + view.pan.y();
+    panel.x_min = cx - frame_w;
+    panel.x_max = cx + frame_w;
+    panel.y_min = cy - frame_h;
+    panel.y_max = cy + frame_h;
+    return panel;
+}
+
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind) {
+    PanelData panel = scene::force_axes(titles::kTime);
+    panel.title = "friction force (F_{x} > 0 resists v_{b}), last periods";
+    // The curves scroll through every part of the axes: a legend inside would cover them sooner or later.
+    panel.legend = Legend::above;
+    const auto& h = sim.history();
+    const double t1 = std::max(moment_at(sim, rewind).tau, 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
+    panel.x_min = t0;
+    panel.x_max = t1;
+    scene::ForceCurves f;
+    const std::size_t stride = stride_for(h.size(), 400);
+    for (std::size_t k = 0; k < h.size(); k += stride) {
+        if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
+        f.add(h[k].tau, h[k].F);
+    }
+    panel.series = f.take();
+    // The times the tip slips, shaded (consecutive samples joined into intervals).
+    if (sim.model() == Model::dahl) {
+        for (std::size_t k = 0; k < h.size(); ++k) {
+            if (h[k].tau > t1) break;
+            if (!h[k].slip || h[k].tau < t0) continue;
+            const double a = k > 0 ? h[k - 1].tau : h[k].tau;
+            if (!panel.bands.empty() && panel.bands.back().x1 >= a) {
+                panel.bands.back().x1 = h[k].tau;
+            } else {
+                panel.bands.push_back({std::max(a, t0), h[k].tau, Ink::tip, 0.13f});
+            }
+        }
+        panel.series.push_back(key("T slips", Ink::tip, 9, 0.25f));
+    }
+    // F_x averaged over the period before each instant (the history's running sums): once the transient is
+    // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
+    SeriesData run{"period mean F_{x}", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
+    const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
+    for (std::size_t k = n; k < h.size(); k += stride) {
+        if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
+        run.x.push_back(h[k].tau), run.y.push_back((h[k].fx_sum - h[k - n].fx_sum) / static_cast<double>(n));
+    }
+    if (!run.x.empty()) panel.series.push_back(std::move(run));
+    // Its value is in the panel and the ratio plot's title: the legend's rows above the axes stay short.
+    if (curves && curves->request.params.zeta == sim.params().zeta)
+        panel.series.push_back(
+            hline(std::string("steady r_{x}") + (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
+                  t0, t1, curves->current.rx, Ink::rigid, Dash::dotted));
+    return panel;
+}
+
+double ratio_zeta_max(const MeasurementSet* data) {
+    double zmax = 3;
+    if (data)
+        for (const Measurement& m : data->points) zmax = std::max(zmax, 1.05 * m.zeta);
+    return std::min(zmax, kMaxZeta);
+}
+
+PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, const RatioOverlay& overlay) {
+    PanelData panel = scene::ratio_axes(ratio_zeta_max(overlay.data));
+    if (overlay.vv_m_s > 0) panel.x_title += "  (v_{v} = " + format_number("%.3g", overlay.vv_m_s) + " m/s)";
+    panel.legend = Legend::best;
+    // Measured points above the curves: they are what the curves are held against.
+    auto add_data = [&](std::optional<double> theta_deg) {
+        if (!overlay.data) return;
+        for (SeriesData& s : measured_series(*overlay.data, theta_deg)) {
+            // Points outside [0, 1.05] would be clipped silently: widen the axis to show them.
+            for (std::size_t k = 0; k < s.y.size(); ++k) {
+                const double e = k < s.y_err.size() ? s.y_err[k] : 0;
+                panel.y_min = std::min(*panel.y_min, s.y[k] - e - 0.03);
+                panel.y_max = std::max(*panel.y_max, s.y[k] + e + 0.03);
+            }
+            panel.series.push_back(std::move(s));
+        }
+    };
+    if (!curves) {
+        panel.title = "r_{x}(ζ): computing…";
+        add_data(std::nullopt);
+        return panel;
+    }
+    const Params& p = curves->request.params;
+    const SteadyStatus st = shown_status(curves->current);
+    panel.title = std::string(busy ? "updating…  " : "") +
+                  "r_{x} = " + format_number("%.4f", curves->current.rx) +
+                  ",  r_{y} = " + format_number("%.4f", curves->current.ry) +
+                  (curves->request.start == Start::sliding ? "  from sliding" : "") +
+                  (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
+    if (!curves->model_rx.empty())
+        panel.series.push_back(
+            {"Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp) +
+                 (curves->model_failed > 0
+                      ? " (" + std::to_string(curves->model_failed) + " failed points not drawn)"
+                      : ""),
+             curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
+    panel.series.push_back(scene::rigid_curve(curves->zetas, curves->rigid_rx));
+    // Pinned curves in the palette's further colours (the series index picks them), dash-dotted apart.
+    if (overlay.pins)
+        for (const PinnedCurve& pin : *overlay.pins)
+            panel.series.push_back(
+                {"pinned: " + pin.label, pin.zeta, pin.rx, Ink::automatic, Dash::dotted, Mark::none, 2.0f});
+    add_data(p.theta * 180 / kPi);
+    // The current point: a cross instead of the diamond when the solver does not vouch for it.
+    panel.points.push_back(
+        {Vec2(p.zeta, curves->current.rx), Ink::tip, ok(st) ? Mark::diamond : Mark::cross, "", 12});
+    // Where another stable state coexists: a circle at its r_x, each point named by the start reaching it,
+    // the label towards the other states (off the flat parts of the curve at r_x = 0 and 1).
+    const std::vector<SteadyState>& states = coexisting_states(*curves);
+    if (!states.empty()) {
+        const double mid = 0.5 * (states.front().rx + states.back().rx); // ordered by r_x
+        const std::size_t current = panel.points.size() - 1;             // the diamond
+        for (const SteadyState& s : states) {
+            const bool reported = std::abs(s.rx - curves->current.rx) <= 1e-6;
+            if (!reported) panel.points.push_back({Vec2(p.zeta, s.rx), Ink::tip, Mark::circle, "", 11});
+            PointData& point = reported ? panel.points[current] : panel.points.back();
+            point.label = reached_from(s);
+            point.label_dx = 1;
+            point.label_dy = s.rx > mid ? 1 : -1;
+        }
+    }
+    return panel;
+}
+
+PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, bool busy) {
+    if (!curves || !curves->map) {
+        PanelData p;
+        p.title = sim.model() == Model::rigid ? "(ζ, θ) map: Dahl model only" : "(ζ, θ) map: computing…";
+        p.x_title = titles::kZeta;
+        p.y_title = titles::kTheta;
+        p.x_min = 0, p.x_max = 3, p.y_min = 0, p.y_max = 90;
+        return p;
+    }
+    PanelData p = *curves->map;
+    const Params& q = curves->request.params;
+    p.title = std::string(busy ? "updating…  " : "") +
+              "r_{x}(ζ, θ), r_{disp} = " + format_number("%.3g", q.rdisp) +
+              ", i = " + format_number("%g", q.i);
+    p.legend = Legend::none;
+    const double theta_deg = std::min(90.0, std::abs(90 - std::abs(q.theta * 180 / kPi - 90)));
+    p.points.push_back({Vec2(std::min(q.zeta, 3.0), theta_deg), Ink::tip, Mark::diamond, "", 12});
+    return p;
+}
+
+LoopData hysteresis_loop(const LiveSim& sim, double rewind) {
+    LoopData loop;
+    const Params& p = sim.params();
+    const Vec2 dir{std::cos(p.theta), std::sin(p.theta)};
+    const auto& h = sim.history();
+    const double t1 = moment_at(sim, rewind).tau, t0 = t1 - 2 * kPi;
+    if (h.empty() || h.front().tau > t0 + 1e-9) return loop; // less than a period recorded
+    const LiveSample* prev = nullptr;
+    for (const LiveSample& s : h) {
+        if (s.tau < t0 - 1e-9 || s.tau > t1 + 1e-9) continue;
+        loop.u.push_back(std::sin(s.tau));
+        loop.f.push_back(s.F.dot(dir));
+        if (prev) {
+            // Midpoint rule on each step: the force over the step times P's move over it.
+            const Vec2 F = 0.5 * (s.F + prev->F);
+            loop.work += F.dot(s.P - prev->P);
+            loop.vibration_work += F.dot(dir) * (std::sin(s.tau) - std::sin(prev->tau));
+        }
+        prev = &s;
+    }
+    loop.complete = true;
+    return loop;
+}
+
+PanelData loop_panel_live(const LiveSim& sim, double rewind) {
+    PanelData panel;
+    panel.x_title = "vibration displacement u / x_{v} = sin τ";
+    panel.y_title = "F along the vibration / F_{c}";
+    panel.x_min = -1.1, panel.x_max = 1.1, panel.y_min = -1.15, panel.y_max = 1.15;
+    panel.legend = Legend::none;
+    const LoopData loop = hysteresis_loop(sim, rewind);
+    if (!loop.complete) {
+        panel.title = "hysteresis loop: after the first period";
+        return panel;
+    }
+    // W: the work of the body against friction over the period, in F_c x_v (what the vibration and the drive
+    // together dissipate); the loop's area is the vibration's share.
+    panel.title = "last period: W = ∮F·dP = " + format_number("%.3g", loop.work) + " F_{c}x_{v}, loop area " +
+                  format_number("%.3g", loop.vibration_work);
+    SeriesData s{"", loop.u, loop.f, Ink::tip, Dash::solid, Mark::none, 2.2f};
+    panel.series.push_back(std::move(s));
+    return panel;
+}
+
+const PanelData& MechanismBase::for_params(const Params& p) {
+    const Vec2 key{p.zeta, p.theta};
+    if (!cached_ || cached_->first != key) {
+        FigureInputs in;
+        in.zeta = p.zeta;
+        in.theta_deg = p.theta * 180 / kPi;
+        PanelData base = compute_figure(find_registered("fig4")->make(in)).panels.at(0);
+        // Faded: the live arrows are the ones to follow.
+        for (ArrowData& a : base.arrows) a.width *= 0.6f, a.label.clear();
+        for (SeriesData& x : base.series) x.opacity *= 0.6f;
+        cached_.emplace(key, std::move(base));
+    }
+    return cached_->second;
+}
+
+PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double rewind) {
+    PanelData panel = base.for_params(sim.params());
+    const SimMoment m = moment_at(sim, rewind);
+    const Vec2 v = m.velocity;
+    // The friction on the body: against the velocity (rigid), or -F of the asperity (Dahl).
+    const Vec2 f = sim.model() == Model::rigid ? Vec2(v.norm() > 0 ? Vec2(-v / v.norm()) : Vec2(Vec2::Zero()))
+                                               : Vec2(-m.F);
+    panel.title = "mechanism now (τ/2π = " + format_number("%.2f", std::fmod(m.tau / (2 * kPi), 1.0)) +
+                  "): v turns, friction follows";
+    panel.arrows.push_back({Vec2::Zero(), v, Ink::body, "v", 3.0f});
+    panel.arrows.push_back({Vec2::Zero(), f, Ink::tip, "friction", 3.0f});
+    panel.legend = Legend::none; // the loci are explained by the help overlay; a legend would cover arrows
+    return panel;
+}
+
+} // namespace fv
