@@ -109,19 +109,10 @@ void draw_coexisting_states(const std::optional<RatioCurves>& curves, const Live
     ImGui::Unindent();
 }
 
-} // namespace
-
-UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height, FileDialogs& dialog) {
+// The model's parameters, the model and the start (with the coexisting states where there are several).
+UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
+                                const std::optional<RatioCurves>& curves) {
     UiEdits e;
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
-    ImGui::Begin("frictionviz", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_MenuBar);
-    e.merge(draw_menu(ui, dialog));
-    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
-
     Params p = ui.session.params;
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
@@ -190,20 +181,25 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
         e.params = p;
     }
 
-    // Presentation mode folds the physical units, the presets, the search details and the data away.
-    if (!ui.session.presentation) {
-        ImGui::Separator();
-        e.merge(draw_vibration_controls(ui));
-        ImGui::Separator();
-        ImGui::TextUnformatted("Paper figures");
-        for (const FigureSpec* f : presets()) {
-            if (ImGui::Button(f->id.c_str())) e.preset = f->id;
-            if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
-            ImGui::SameLine();
-        }
-        ImGui::NewLine();
-    }
+    return e;
+}
 
+// The registered figures the app can open as presets.
+UiEdits draw_presets() {
+    UiEdits e;
+    ImGui::TextUnformatted("Paper figures");
+    for (const FigureSpec* f : presets()) {
+        if (ImGui::Button(f->id.c_str())) e.preset = f->id;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
+        ImGui::SameLine();
+    }
+    ImGui::NewLine();
+    return e;
+}
+
+// Play, reset, the steady-state jump, stepping and the time slider, speed and trail.
+UiEdits draw_animation_controls(const UiState& ui, const LiveSim& sim) {
+    UiEdits e;
     ImGui::Separator();
     ImGui::TextUnformatted("Animation");
     const bool rewound = ui.session.view.rewind > 0;
@@ -249,6 +245,12 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("how much of P's and T's past path the top view draws, fading (periods)");
 
+    return e;
+}
+
+// What the motion does now and the steady state it tends to: read only.
+void draw_readouts(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                   bool busy) {
     ImGui::Separator();
     // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
     const SimMoment now = moment_at(sim, ui.session.view.rewind);
@@ -314,8 +316,12 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     } else {
         ImGui::TextUnformatted("Steady state (computing…)");
     }
+}
+
+// The lower-right panel: the r_x(zeta) curves (with pins), the (zeta, theta) map, the loop or the mechanism.
+UiEdits draw_panel_choice(const UiState& ui) {
+    UiEdits e;
     ImGui::Separator();
-    // The lower-right panel: the r_x(zeta) curves (with pins), the (zeta, theta) map or the hysteresis loop.
     int panel = static_cast<int>(ui.session.panel); // the radio buttons in LowerPanel's order
     const int before = panel;
     ImGui::RadioButton("r_x(ζ)", &panel, 0);
@@ -346,6 +352,32 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (ImGui::Button("Clear pins")) e.clear_pins = true;
     ImGui::SameLine();
     ImGui::Text("%zu pinned", ui.session.pins.size());
+    return e;
+}
+
+} // namespace
+
+UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                      bool busy, float width, float height, FileDialogs& dialog) {
+    UiEdits e;
+    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::Begin("frictionviz", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                     ImGuiWindowFlags_MenuBar);
+    e.merge(draw_menu(ui, dialog));
+    ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
+    e.merge(draw_parameter_controls(ui, sim, curves));
+    // Presentation mode folds the physical units, the presets, the search details and the data away.
+    if (!ui.session.presentation) {
+        ImGui::Separator();
+        e.merge(draw_vibration_controls(ui));
+        ImGui::Separator();
+        e.merge(draw_presets());
+    }
+    e.merge(draw_animation_controls(ui, sim));
+    draw_readouts(ui, sim, curves, busy);
+    e.merge(draw_panel_choice(ui));
     if (!ui.session.presentation) {
         ImGui::Separator();
         e.merge(draw_data_controls(ui, dialog));
