@@ -219,10 +219,10 @@ gfx::Color ink_color(Ink ink, std::size_t series_index) {
     return gfx::palette(series_index);
 }
 
-gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
-                               bool legend_below) {
-    gfx::Plot plot(bounds);
-    plot.legend_below = legend_below;
+namespace {
+
+// The titles, axis ranges, text size, top axis and legend as the panel asks.
+void set_axes(gfx::Plot& plot, const PanelData& panel) {
     plot.title = panel.title;
     plot.x_axis.title = panel.x_title;
     plot.y_axis.title = panel.y_title;
@@ -235,155 +235,202 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     plot.top_scale = panel.top_scale;
     plot.top_title = panel.top_title;
     plot.legend = legend_position(panel.legend);
-    if (panel.heatmap) {
-        const HeatmapData& h = *panel.heatmap;
-        gfx::HeatMap m;
-        m.values = h.values;
-        m.nx = h.nx, m.ny = h.ny;
-        m.x0 = h.x0, m.x1 = h.x1, m.y0 = h.y0, m.y1 = h.y1;
-        m.label = h.label;
-        plot.set_heatmap(std::move(m));
+}
+
+gfx::HeatMap heat_map_of(const HeatmapData& h) {
+    gfx::HeatMap m;
+    m.values = h.values;
+    m.nx = h.nx, m.ny = h.ny;
+    m.x0 = h.x0, m.x1 = h.x1, m.y0 = h.y0, m.y1 = h.y1;
+    m.label = h.label;
+    return m;
+}
+
+// Series k's style: its ink (the palette's colour `palette`, else k's), line, dash and marker.
+gfx::SeriesStyle series_style(const SeriesData& s, std::size_t k) {
+    gfx::SeriesStyle st;
+    st.color =
+        ink_color(s.ink, s.palette >= 0 ? static_cast<std::size_t>(s.palette) : k).with_alpha(s.opacity);
+    st.line_width = s.width;
+    st.line = line_style(s.dash);
+    st.marker = marker_shape(s.mark);
+    if (s.mark_size > 0) st.marker_size = s.mark_size;
+    st.draw_line = s.width > 0;
+    return st;
+}
+
+// The shaded x ranges behind the series.
+void draw_bands(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& panel) {
+    for (const BandData& b : panel.bands) {
+        const float x0 = tf.to_pixel(b.x0, tf.y0).x, x1 = tf.to_pixel(b.x1, tf.y0).x;
+        if (x1 > x0) c.fill_rect({x0, tf.area.y0, x1, tf.area.y1}, ink_color(b.ink, 0).with_alpha(b.opacity));
     }
+}
+
+// Circles, segments and arrows (those shorter than 2 pixels left out).
+void draw_shapes(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& panel) {
+    for (const CircleData& ci : panel.circles)
+        c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
+                 {ink_color(ci.ink, 0), ci.width, line_style(ci.dash)});
+    for (const SegmentData& s : panel.segments)
+        c.line(to_px(tf, s.a), to_px(tf, s.b), {ink_color(s.ink, 0), s.width, line_style(s.dash)});
+    for (const ArrowData& a : panel.arrows) {
+        const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+        const float len = std::hypot(to.x - from.x, to.y - from.y);
+        if (len < 2) continue;
+        c.arrow(from, to,
+                {{ink_color(a.ink, 0), a.width, gfx::LineStyle::Solid},
+                 std::min(14.f, 0.5f * len),
+                 std::min(10.f, 0.4f * len)});
+    }
+}
+
+// The points' markers, where they are in the data area (or on its frame: `inside`).
+void draw_point_markers(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& panel,
+                        const gfx::Rect& inside) {
+    for (const PointData& p : panel.points)
+        if (inside.contains(to_px(tf, p.at)))
+            c.marker(to_px(tf, p.at),
+                     {marker_shape(p.mark), p.size, ink_color(p.ink, 0), gfx::colors::white, 1.5f});
+}
+
+// The middle of all marked points (pixels): labels go away from it unless a side is asked.
+gfx::Vec2 points_centre(const gfx::PlotTransform& tf, const PanelData& panel) {
+    gfx::Vec2 centre{0, 0};
+    for (const PointData& p : panel.points)
+        centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(panel.points.size()));
+    return centre;
+}
+
+void place_point_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const PanelData& panel,
+                        const gfx::Rect& inside, gfx::Vec2 centre) {
+    for (const PointData& p : panel.points) {
+        const gfx::Vec2 at = to_px(tf, p.at);
+        if (p.label.empty() || !inside.contains(at)) continue;
+        // Preferred side: as asked, else away from the middle of all marked points.
+        const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
+        const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
+        placer.place(
+            p.label,
+            around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * panel.text_scale, gfx::colors::text),
+            [&](const gfx::dl::Command& cmd) {
+                const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
+                return m && same(m->center, at);
+            },
+            at);
+    }
+}
+
+// The places for the label of the arrow from -> to (pixels, at least 2 apart): beyond the head, then beside
+// the head or the shaft on either side; centred above or below the head first when asked (arrows along one
+// line).
+std::vector<LabelCandidate> arrow_label_places(const ArrowData& a, gfx::Vec2 from, gfx::Vec2 to, float size) {
+    const float len = std::hypot(to.x - from.x, to.y - from.y);
+    const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
+    const gfx::Color color = ink_color(a.ink, 0);
+    std::vector<LabelCandidate> cands;
+    if (a.label_dy != 0)
+        cands.push_back({{to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)},
+                         label_style(size, color, 0, static_cast<float>(a.label_dy))});
+    cands.push_back({{to.x + ux * 6, to.y + uy * 6}, label_style(size, color, ux, uy)});
+    for (float along : {0.85f, 0.5f})
+        for (float side : {1.f, -1.f}) {
+            const float nx = -uy * side, ny = ux * side;
+            const gfx::Vec2 m = from + (to - from) * along;
+            cands.push_back({{m.x + nx * 9, m.y + ny * 9}, label_style(size, color, nx, ny)});
+        }
+    // Crowded (a short arrow among other labels): the same places further out.
+    cands.push_back({{to.x + ux * 20, to.y + uy * 20}, label_style(size, color, ux, uy)});
+    for (float side : {1.f, -1.f})
+        cands.push_back({{to.x - uy * side * 22, to.y + ux * side * 22},
+                         label_style(size, color, -uy * side, ux * side)});
+    cands.push_back({{to.x + ux * 36, to.y + uy * 36}, label_style(size, color, ux, uy), true});
+    return cands;
+}
+
+void place_arrow_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const PanelData& panel) {
+    for (const ArrowData& a : panel.arrows) {
+        const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+        const float len = std::hypot(to.x - from.x, to.y - from.y);
+        if (len < 2 || a.label.empty()) continue;
+        placer.place(
+            a.label, arrow_label_places(a, from, to, 14 * panel.text_scale),
+            [&](const gfx::dl::Command& cmd) {
+                const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
+                return ar && same(ar->from, from) && same(ar->to, to);
+            },
+            to);
+    }
+}
+
+void place_segment_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const PanelData& panel,
+                          gfx::Vec2 centre) {
+    for (const SegmentData& s : panel.segments) {
+        if (s.label.empty()) continue;
+        const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
+        // Unit normal pointing left of a->b on screen (y down). A segment shorter than its label's offset is
+        // not labelled: the label would name a point, on top of the points' own labels.
+        float nx = b.y - a.y, ny = -(b.x - a.x);
+        if (std::hypot(nx, ny) < 8) continue;
+        const float len = std::hypot(nx, ny);
+        nx /= len, ny /= len;
+        const gfx::Vec2 m = a + (b - a) * s.label_at;
+        const bool flip =
+            s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
+        if (flip) nx = -nx, ny = -ny;
+        // The asked side first, at the asked place and then further along; the other side only when no side
+        // was asked.
+        std::vector<LabelCandidate> cands;
+        for (float side : {1.f, -1.f}) {
+            if (side < 0 && s.label_side != 0) break;
+            for (float at : {s.label_at, 0.3f, 0.7f}) {
+                const gfx::Vec2 q = a + (b - a) * at;
+                cands.push_back(
+                    {{q.x + side * nx * 8, q.y + side * ny * 8},
+                     label_style(15 * panel.text_scale, label_color(s.ink), side * nx, side * ny)});
+            }
+        }
+        placer.place(s.label, cands, [&](const gfx::dl::Command& cmd) {
+            const auto* pl = std::get_if<gfx::dl::Polyline>(&cmd);
+            return pl && pl->points.size() == 2 && same(pl->points[0], a) && same(pl->points[1], b);
+        });
+    }
+}
+
+// The points' markers, then every label: points first (their labels name them), then arrows, then
+// segments; each label where it covers the least of what is drawn and of the labels before it.
+void draw_marks_and_labels(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& panel) {
+    const gfx::Rect inside = tf.area.inset(-1);
+    draw_point_markers(c, tf, panel, inside);
+    const gfx::Vec2 centre = points_centre(tf, panel);
+    LabelPlacer placer(c, tf);
+    place_point_labels(placer, tf, panel, inside, centre);
+    place_arrow_labels(placer, tf, panel);
+    place_segment_labels(placer, tf, panel, centre);
+    placer.draw();
+}
+
+} // namespace
+
+gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
+                               bool legend_below) {
+    gfx::Plot plot(bounds);
+    plot.legend_below = legend_below;
+    set_axes(plot, panel);
+    if (panel.heatmap) plot.set_heatmap(heat_map_of(*panel.heatmap));
     for (std::size_t k = 0; k < panel.series.size(); ++k) {
         const SeriesData& s = panel.series[k];
-        gfx::SeriesStyle st;
-        st.color =
-            ink_color(s.ink, s.palette >= 0 ? static_cast<std::size_t>(s.palette) : k).with_alpha(s.opacity);
-        st.line_width = s.width;
-        st.line = line_style(s.dash);
-        st.marker = marker_shape(s.mark);
-        if (s.mark_size > 0) st.marker_size = s.mark_size;
-        st.draw_line = s.width > 0;
-        plot.add_series(s.label, s.x, s.y, st).y_err = s.y_err;
+        plot.add_series(s.label, s.x, s.y, series_style(s, k)).y_err = s.y_err;
     }
     const PanelData* pd = &panel;
     if (!panel.bands.empty())
-        plot.add_underlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
-            for (const BandData& b : pd->bands) {
-                const float x0 = tf.to_pixel(b.x0, tf.y0).x, x1 = tf.to_pixel(b.x1, tf.y0).x;
-                if (x1 > x0)
-                    c.fill_rect({x0, tf.area.y0, x1, tf.area.y1}, ink_color(b.ink, 0).with_alpha(b.opacity));
-            }
-        });
+        plot.add_underlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) { draw_bands(c, tf, *pd); });
     // Shapes, clipped to the data area. Shapes first, then every label: text and shapes are separate draw
     // batches, and the software renderer pays per batch. Labels belong on top anyway.
-    plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
-        for (const CircleData& ci : pd->circles)
-            c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
-                     {ink_color(ci.ink, 0), ci.width, line_style(ci.dash)});
-        for (const SegmentData& s : pd->segments)
-            c.line(to_px(tf, s.a), to_px(tf, s.b), {ink_color(s.ink, 0), s.width, line_style(s.dash)});
-        for (const ArrowData& a : pd->arrows) {
-            const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
-            const float len = std::hypot(to.x - from.x, to.y - from.y);
-            if (len < 2) continue;
-            c.arrow(from, to,
-                    {{ink_color(a.ink, 0), a.width, gfx::LineStyle::Solid},
-                     std::min(14.f, 0.5f * len),
-                     std::min(10.f, 0.4f * len)});
-        }
-    });
+    plot.add_overlay([pd](gfx::Canvas& c, const gfx::PlotTransform& tf) { draw_shapes(c, tf, *pd); });
     // Markers and labels, not clipped: a marker on the frame (theta = 90 deg on the map) is drawn whole.
     plot.add_overlay(
-        [pd](gfx::Canvas& c, const gfx::PlotTransform& tf) {
-            const gfx::Rect inside = tf.area.inset(-1);
-            for (const PointData& p : pd->points)
-                if (inside.contains(to_px(tf, p.at)))
-                    c.marker(to_px(tf, p.at),
-                             {marker_shape(p.mark), p.size, ink_color(p.ink, 0), gfx::colors::white, 1.5f});
-            gfx::Vec2 centre{0, 0};
-            for (const PointData& p : pd->points)
-                centre = centre + to_px(tf, p.at) * (1.0f / static_cast<float>(pd->points.size()));
-            // Points first (their labels name them), then arrows, then segments; each label where it covers
-            // the least of what is drawn and of the labels before it.
-            LabelPlacer placer(c, tf);
-            for (const PointData& p : pd->points) {
-                const gfx::Vec2 at = to_px(tf, p.at);
-                if (p.label.empty() || !inside.contains(at)) continue;
-                // Preferred side: as asked, else away from the middle of all marked points.
-                const float dx = p.label_dx != 0 ? static_cast<float>(p.label_dx) : at.x - centre.x;
-                const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
-                placer.place(
-                    p.label,
-                    around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * pd->text_scale,
-                           gfx::colors::text),
-                    [&](const gfx::dl::Command& cmd) {
-                        const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
-                        return m && same(m->center, at);
-                    },
-                    at);
-            }
-            for (const ArrowData& a : pd->arrows) {
-                const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
-                const float len = std::hypot(to.x - from.x, to.y - from.y);
-                if (len < 2 || a.label.empty()) continue;
-                const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
-                // Beyond the head, then beside the head or the shaft on either side.
-                // Centred above or below the head first when asked (arrows along one line).
-                const float size = 14 * pd->text_scale;
-                std::vector<LabelCandidate> cands;
-                if (a.label_dy != 0)
-                    cands.push_back(
-                        {{to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)},
-                         label_style(size, ink_color(a.ink, 0), 0, static_cast<float>(a.label_dy))});
-                cands.push_back(
-                    {{to.x + ux * 6, to.y + uy * 6}, label_style(size, ink_color(a.ink, 0), ux, uy)});
-                for (float along : {0.85f, 0.5f})
-                    for (float side : {1.f, -1.f}) {
-                        const float nx = -uy * side, ny = ux * side;
-                        const gfx::Vec2 m = from + (to - from) * along;
-                        cands.push_back(
-                            {{m.x + nx * 9, m.y + ny * 9}, label_style(size, ink_color(a.ink, 0), nx, ny)});
-                    }
-                // Crowded (a short arrow among other labels): the same places further out.
-                cands.push_back(
-                    {{to.x + ux * 20, to.y + uy * 20}, label_style(size, ink_color(a.ink, 0), ux, uy)});
-                for (float side : {1.f, -1.f})
-                    cands.push_back({{to.x - uy * side * 22, to.y + ux * side * 22},
-                                     label_style(size, ink_color(a.ink, 0), -uy * side, ux * side)});
-                cands.push_back(
-                    {{to.x + ux * 36, to.y + uy * 36}, label_style(size, ink_color(a.ink, 0), ux, uy), true});
-                placer.place(
-                    a.label, cands,
-                    [&](const gfx::dl::Command& cmd) {
-                        const auto* ar = std::get_if<gfx::dl::Arrow>(&cmd);
-                        return ar && same(ar->from, from) && same(ar->to, to);
-                    },
-                    to);
-            }
-            for (const SegmentData& s : pd->segments) {
-                if (s.label.empty()) continue;
-                const gfx::Vec2 a = to_px(tf, s.a), b = to_px(tf, s.b);
-                // Unit normal pointing left of a->b on screen (y down). A segment shorter than its label's
-                // offset is not labelled: the label would name a point, on top of the points' own labels.
-                float nx = b.y - a.y, ny = -(b.x - a.x);
-                if (std::hypot(nx, ny) < 8) continue;
-                const float len = std::hypot(nx, ny);
-                nx /= len, ny /= len;
-                const gfx::Vec2 m = a + (b - a) * s.label_at;
-                const bool flip =
-                    s.label_side == 0 ? nx * (m.x - centre.x) + ny * (m.y - centre.y) < 0 : s.label_side < 0;
-                if (flip) nx = -nx, ny = -ny;
-                // The asked side first, at the asked place and then further along; the other side only when
-                // no side was asked.
-                std::vector<LabelCandidate> cands;
-                for (float side : {1.f, -1.f}) {
-                    if (side < 0 && s.label_side != 0) break;
-                    for (float at : {s.label_at, 0.3f, 0.7f}) {
-                        const gfx::Vec2 q = a + (b - a) * at;
-                        cands.push_back(
-                            {{q.x + side * nx * 8, q.y + side * ny * 8},
-                             label_style(15 * pd->text_scale, label_color(s.ink), side * nx, side * ny)});
-                    }
-                }
-                placer.place(s.label, cands, [&](const gfx::dl::Command& cmd) {
-                    const auto* pl = std::get_if<gfx::dl::Polyline>(&cmd);
-                    return pl && pl->points.size() == 2 && same(pl->points[0], a) && same(pl->points[1], b);
-                });
-            }
-            placer.draw();
-        },
-        false);
+        [pd](gfx::Canvas& c, const gfx::PlotTransform& tf) { draw_marks_and_labels(c, tf, *pd); }, false);
     return plot.draw(canvas);
 }
 

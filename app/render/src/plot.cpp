@@ -517,105 +517,105 @@ PlotTransform Plot::draw(Canvas& canvas) const {
     canvas.rewind(start);
     return draw_with_legend(canvas, redraw, redraw);
 }
+namespace {
 
-PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPlace& redraw) const {
-    redraw = LegendPlace::Inside;
-    const bool outside = place == LegendPlace::Right;
-    const std::vector<std::size_t> entries = legend_entries(series_);
-    // The geometry below the axes only where the legend may go there: it measures every label for each
-    // column count, and the app draws its plots every frame.
-    std::optional<LegendGeom> below_geom;
-    if (place == LegendPlace::Below || legend_below)
-        below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
-    LegendGeom lg =
-        place == LegendPlace::Below ? *below_geom : legend_geom(canvas, series_, entries, font_size);
-    const Vec2 lsize = lg.size;
-    const float below = place == LegendPlace::Below ? lsize.y + kLegendGap : 0.0f;
-    const float band = legend_band(canvas);
-    const Layout L = compute_layout(*this, series_, heatmap_, bounds_, canvas,
-                                    outside ? lsize.x + 2 * kLegendGap : 0.0f, below, band);
+// What drawing a plot carries from one artist to the next.
+struct Frame {
+    Layout layout;
+    Rect bounds;     // the plot's
+    float below = 0; // room kept under the x axis title for a legend below the axes
+    float band = 0;  // room kept above the axes (and their top axis) for a legend above them
+    // The commands drawn in the data area (series onwards): what a legend must not cover.
+    Canvas::Mark data_start, data_end;
+};
+
+// x of a tick on the x axis and y of a tick on the y axis, on pixel centres so that 1-px lines stay crisp (a
+// log axis is read at 1 where the other range starts at or below 0).
+float tick_x(const PlotTransform& tf, const Tick& t) {
+    return std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
+}
+float tick_y(const PlotTransform& tf, const Tick& t) {
+    return std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
+}
+
+void draw_grid(Canvas& canvas, const Plot& plot, const Layout& L) {
     const PlotTransform& tf = L.tf;
     const Rect& A = tf.area;
-    const float fs = font_size, title_fs = font_size + 1;
-
-    canvas.fill_rect(A, colors::white);
-    // Grid: 1-px lines centred on pixel centres so they stay crisp.
-    canvas.push_clip(A);
     const Stroke major{colors::grid, 1.0f, LineStyle::Solid},
         minor{colors::minor_grid, 1.0f, LineStyle::Solid};
-    if (x_axis.grid) {
+    if (plot.x_axis.grid)
         for (const Tick& t : L.x_ticks) {
-            const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
+            const float x = tick_x(tf, t);
             canvas.line({x, A.y0}, {x, A.y1}, t.major ? major : minor);
         }
-    }
-    if (y_axis.grid) {
+    if (plot.y_axis.grid)
         for (const Tick& t : L.y_ticks) {
-            const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
+            const float y = tick_y(tf, t);
             canvas.line({A.x0, y}, {A.x1, y}, t.major ? major : minor);
         }
-    }
+}
 
-    if (heatmap_ && heatmap_->nx > 0 && heatmap_->ny > 0 &&
-        heatmap_->values.size() >=
-            static_cast<std::size_t>(heatmap_->nx) * static_cast<std::size_t>(heatmap_->ny)) {
-        const auto [vlo, vhi] = value_range(*heatmap_);
-        const Vec2 tl = tf.to_pixel(heatmap_->x0, heatmap_->y1), br = tf.to_pixel(heatmap_->x1, heatmap_->y0);
-        canvas.image({tl.x, tl.y, br.x, br.y},
-                     heatmap_image(heatmap_->values.data(), heatmap_->nx, heatmap_->ny, vlo, vhi));
-    }
+// The heat map's image, where it has all its values.
+void draw_heatmap(Canvas& canvas, const HeatMap& hm, const PlotTransform& tf) {
+    if (!(hm.nx > 0 && hm.ny > 0 &&
+          hm.values.size() >= static_cast<std::size_t>(hm.nx) * static_cast<std::size_t>(hm.ny)))
+        return;
+    const auto [vlo, vhi] = value_range(hm);
+    const Vec2 tl = tf.to_pixel(hm.x0, hm.y1), br = tf.to_pixel(hm.x1, hm.y0);
+    canvas.image({tl.x, tl.y, br.x, br.y}, heatmap_image(hm.values.data(), hm.nx, hm.ny, vlo, vhi));
+}
 
-    for (const auto& fn : underlays_) fn(canvas, tf);
-    // Series, clipped to the data area.
-    const Canvas::Mark data_start = canvas.mark();
+void draw_error_bars(Canvas& canvas, const Series& s, Color c, const PlotTransform& tf) {
+    const std::size_t n = std::min(s.x.size(), s.y.size());
+    const Stroke eb{c, 1.2f, LineStyle::Solid};
+    for (std::size_t k = 0; k < n && k < s.y_err.size(); ++k) {
+        if (!std::isfinite(s.y_err[k])) continue;
+        const Vec2 a = tf.to_pixel(s.x[k], s.y[k] - s.y_err[k]), b = tf.to_pixel(s.x[k], s.y[k] + s.y_err[k]);
+        if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.y)) continue;
+        canvas.line(a, b, eb);
+        canvas.line({a.x - 3.5f, a.y}, {a.x + 3.5f, a.y}, eb);
+        canvas.line({b.x - 3.5f, b.y}, {b.x + 3.5f, b.y}, eb);
+    }
+}
+
+// Each series' error bars, line and markers, in series order; points far outside the data area are left
+// out (the caller clips to it).
+void draw_series(Canvas& canvas, const std::vector<Series>& series, const PlotTransform& tf) {
+    const Rect& A = tf.area;
     const Rect clip_box = {A.x0 - 100, A.y0 - 100, A.x1 + 100, A.y1 + 100};
-    for (std::size_t i = 0; i < series_.size(); ++i) {
-        const Series& s = series_[i];
+    for (std::size_t i = 0; i < series.size(); ++i) {
+        const Series& s = series[i];
         const Color c = series_color(s, i);
-        const std::size_t n = std::min(s.x.size(), s.y.size());
-        if (!s.y_err.empty()) {
-            const Stroke eb{c, 1.2f, LineStyle::Solid};
-            for (std::size_t k = 0; k < n && k < s.y_err.size(); ++k) {
-                if (!std::isfinite(s.y_err[k])) continue;
-                const Vec2 a = tf.to_pixel(s.x[k], s.y[k] - s.y_err[k]),
-                           b = tf.to_pixel(s.x[k], s.y[k] + s.y_err[k]);
-                if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.y)) continue;
-                canvas.line(a, b, eb);
-                canvas.line({a.x - 3.5f, a.y}, {a.x + 3.5f, a.y}, eb);
-                canvas.line({b.x - 3.5f, b.y}, {b.x + 3.5f, b.y}, eb);
-            }
-        }
+        if (!s.y_err.empty()) draw_error_bars(canvas, s, c, tf);
         if (s.style.draw_line) {
             const Stroke st{c, s.style.line_width, s.style.line};
             for (const auto& run : series_runs(s, tf, clip_box)) canvas.polyline(run, st);
         }
         if (s.style.marker != MarkerShape::None) {
             const MarkerStyle m = series_marker(s, c);
+            const std::size_t n = std::min(s.x.size(), s.y.size());
             for (std::size_t k = 0; k < n; ++k) {
                 const Vec2 p = tf.to_pixel(s.x[k], s.y[k]);
                 if (clip_box.contains(p)) canvas.marker(p, m);
             }
         }
     }
-    PlotTransform otf = tf;
-    otf.first_data_command = data_start.commands;
-    for (const auto& fn : overlays_) fn(canvas, otf);
-    canvas.pop_clip();
-    for (const auto& fn : unclipped_overlays_) fn(canvas, otf);
-    canvas.add_region("data", A, data_start);
-    const Canvas::Mark data_end = canvas.mark();
+}
 
-    // Frame and outward ticks.
+// The frame, outward ticks and their labels (those too close to a neighbour left out).
+void draw_frame_and_ticks(Canvas& canvas, const Layout& L, float fs) {
+    const PlotTransform& tf = L.tf;
+    const Rect& A = tf.area;
     const Stroke axis{colors::axis, 1.0f, LineStyle::Solid};
     canvas.stroke_rect({A.x0 + 0.5f, A.y0 + 0.5f, A.x1 - 0.5f, A.y1 - 0.5f}, axis);
     // All tick marks first, then all labels: text and shapes are separate draw batches, and llvmpipe
     // pays per batch (they do not overlap, so the order does not change a pixel).
     for (const Tick& t : L.x_ticks) {
-        const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
+        const float x = tick_x(tf, t);
         canvas.line({x, A.y1}, {x, A.y1 + (t.major ? kTickLength : kTickLength * 0.6f)}, axis);
     }
     for (const Tick& t : L.y_ticks) {
-        const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
+        const float y = tick_y(tf, t);
         canvas.line({A.x0 - (t.major ? kTickLength : kTickLength * 0.6f), y}, {A.x0, y}, axis);
     }
     TextStyle ts;
@@ -629,168 +629,192 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
         [&](const Tick& t) { return canvas.measure_text(t.label, fs).y; }, 0.2f * fs);
     for (const Tick& t : x_ticks) {
         if (t.label.empty()) continue;
-        const float x = std::floor(tf.to_pixel(t.value, tf.y0 > 0 ? tf.y0 : 1).x) + 0.5f;
         ts.halign = HAlign::Center, ts.valign = VAlign::Top;
-        canvas.text({x, A.y1 + kTickLength + 3}, t.label, ts);
+        canvas.text({tick_x(tf, t), A.y1 + kTickLength + 3}, t.label, ts);
     }
     for (const Tick& t : y_ticks) {
         if (t.label.empty()) continue;
-        const float y = std::floor(tf.to_pixel(tf.x0 > 0 ? tf.x0 : 1, t.value).y) + 0.5f;
         ts.halign = HAlign::Right, ts.valign = VAlign::Middle;
-        canvas.text({A.x0 - kTickLength - 4, y}, t.label, ts);
+        canvas.text({A.x0 - kTickLength - 4, tick_y(tf, t)}, t.label, ts);
     }
+}
 
-    // Titles.
+// A title's centre: centred on the data area, moved as little as keeps it within [lo, hi] (small pages).
+float centred(float c, float w, float lo, float hi) {
+    return w >= hi - lo ? 0.5f * (lo + hi) : std::clamp(c, lo + 0.5f * w, hi - 0.5f * w);
+}
+
+void draw_x_title(Canvas& canvas, const Plot& plot, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const FittedText f =
+        fit_text(canvas, plot.x_axis.title, plot.font_size + 1, plot.font_size, fr.bounds.width(), false);
     TextStyle tt;
-    tt.size = title_fs;
-    // Centred on the data area, moved as little as keeps them within the plot's bounds (small pages).
-    auto centred = [](float c, float w, float lo, float hi) {
-        return w >= hi - lo ? 0.5f * (lo + hi) : std::clamp(c, lo + 0.5f * w, hi - 0.5f * w);
-    };
-    if (!x_axis.title.empty()) {
-        const FittedText f = fit_text(canvas, x_axis.title, title_fs, fs, bounds_.width(), false);
-        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
-        canvas.text({centred(0.5f * (A.x0 + A.x1), f.width, bounds_.x0, bounds_.x1), bounds_.y1 - below - 4},
-                    x_axis.title, tt);
-    }
-    if (!y_axis.title.empty()) {
-        const FittedText f = y_title(*this, canvas, A.height());
-        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Top, tt.angle_deg = 90;
-        // Longer than the data area (a short plot on a small page): below the panel title, down beside the
-        // x tick labels.
-        const float cy = centred(0.5f * (A.y0 + A.y1), f.width, A.y0 - 0.4f * fs, bounds_.y1 - below);
-        canvas.text({bounds_.x0 + 4, cy}, f.first, tt);
-        if (!f.second.empty()) canvas.text({bounds_.x0 + 4 + kTitleLeading * f.size, cy}, f.second, tt);
-        tt.angle_deg = 0;
-    }
-    if (!title.empty()) {
-        const FittedText f = panel_title(*this, canvas, bounds_);
-        tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
-        const float cx = centred(0.5f * (A.x0 + A.x1), f.width, bounds_.x0, bounds_.x1);
-        const float cy = 0.5f * (bounds_.y0 + A.y0 - top_axis_band(*this) - band);
-        if (f.second.empty()) {
-            canvas.text({cx, cy}, title, tt);
-        } else {
-            canvas.text({cx, cy - 0.5f * kTitleLeading * f.size}, f.first, tt);
-            canvas.text({cx, cy + 0.5f * kTitleLeading * f.size}, f.second, tt);
-        }
-    }
-    if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
+    tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
+    canvas.text(
+        {centred(0.5f * (A.x0 + A.x1), f.width, fr.bounds.x0, fr.bounds.x1), fr.bounds.y1 - fr.below - 4},
+        plot.x_axis.title, tt);
+}
 
-    if (heatmap_) draw_colorbar(canvas, A, *heatmap_, fs, title_fs);
+void draw_y_title(Canvas& canvas, const Plot& plot, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const FittedText f = y_title(plot, canvas, A.height());
+    TextStyle tt;
+    tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Top, tt.angle_deg = 90;
+    // Longer than the data area (a short plot on a small page): below the panel title, down beside the x
+    // tick labels.
+    const float cy =
+        centred(0.5f * (A.y0 + A.y1), f.width, A.y0 - 0.4f * plot.font_size, fr.bounds.y1 - fr.below);
+    canvas.text({fr.bounds.x0 + 4, cy}, f.first, tt);
+    if (!f.second.empty()) canvas.text({fr.bounds.x0 + 4 + kTitleLeading * f.size, cy}, f.second, tt);
+}
 
-    // Legend.
-    if (legend == LegendPosition::None || entries.empty()) return tf;
-    const float row = lg.row, sample = lg.sample, pad = lg.pad;
-    if (legend == LegendPosition::Above) {
-        const AboveLayout above = above_layout(canvas, series_, entries, fs, A.width());
-        const float above_row = std::round(fs * kAboveRow);
-        const Vec2 origin{A.x0, A.y0 - top_axis_band(*this) - band};
-        const Canvas::Mark legend_start = canvas.mark();
-        TextStyle lt;
-        lt.size = fs, lt.valign = VAlign::Middle;
-        // Samples first, labels after (fewer draw batches; they do not overlap).
-        for (std::size_t k = 0; k < entries.size(); ++k) {
-            const Series& s = series_[entries[k]];
-            const Color c = series_color(s, entries[k]);
-            const float x0 = origin.x + above.at[k].x,
-                        cy = std::floor(origin.y + above.at[k].y + 0.5f * above_row) + 0.5f;
-            if (s.style.draw_line)
-                canvas.line({x0, cy}, {x0 + sample, cy}, {c, s.style.line_width, s.style.line});
-            if (!s.y_err.empty() && !s.style.draw_line)
-                canvas.line({x0 + 0.5f * sample, cy - 6}, {x0 + 0.5f * sample, cy + 6},
-                            {c, 1.2f, LineStyle::Solid});
-            if (s.style.marker != MarkerShape::None)
-                canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
-        }
-        for (std::size_t k = 0; k < entries.size(); ++k)
-            canvas.text({origin.x + above.at[k].x + sample + 8, origin.y + above.at[k].y + 0.5f * above_row},
-                        series_[entries[k]].label, lt);
-        canvas.add_region("legend", {origin.x, origin.y, origin.x + above.size.x, origin.y + above.size.y},
-                          legend_start);
-        return tf;
+// The panel title, on one or two lines, between the plot's top and the axes (and what is above them).
+void draw_panel_title(Canvas& canvas, const Plot& plot, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const FittedText f = panel_title(plot, canvas, fr.bounds);
+    TextStyle tt;
+    tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Middle;
+    const float cx = centred(0.5f * (A.x0 + A.x1), f.width, fr.bounds.x0, fr.bounds.x1);
+    const float cy = 0.5f * (fr.bounds.y0 + A.y0 - top_axis_band(plot) - fr.band);
+    if (f.second.empty()) {
+        canvas.text({cx, cy}, plot.title, tt);
+    } else {
+        canvas.text({cx, cy - 0.5f * kTitleLeading * f.size}, f.first, tt);
+        canvas.text({cx, cy + 0.5f * kTitleLeading * f.size}, f.second, tt);
     }
-    const float m = kLegendMargin;
-    // Inside the axes, the box no wider than they are: labels too long for that (a user's, say a pinned
-    // curve's from a session file) are elided. The figures' own labels always fit, so nothing else changes.
-    if (!outside && place != LegendPlace::Below && lg.size.x > A.width() - 2 * m)
-        lg = legend_geom(canvas, series_, entries, font_size, 1, 0, A.width() - 2 * m);
-    const float w = lg.size.x, h = lg.size.y;
-    // Inside the axes: corners, then the middles of the edges.
-    auto box_at = [&](int k) {
-        const float left = A.x0 + m, right = A.x1 - m - w, cx = std::round(0.5f * (A.x0 + A.x1 - w));
-        const float top = A.y0 + m, bottom = A.y1 - m - h, cy = std::round(0.5f * (A.y0 + A.y1 - h));
-        static constexpr int kX[] = {2, 0, 2, 0, 1, 1, 2, 0}, kY[] = {0, 0, 2, 2, 0, 2, 1, 1};
-        const float x0 = kX[k] == 0 ? left : (kX[k] == 1 ? cx : right);
-        const float y0 = kY[k] == 0 ? top : (kY[k] == 1 ? cy : bottom);
-        return Rect{x0, y0, x0 + w, y0 + h};
-    };
-    int pos = 0;
+}
+
+// A legend entry's sample centred at height cy from x0 on: its line, else its error bar (`bar` long either
+// side), and its marker.
+void draw_legend_sample(Canvas& canvas, const Series& s, Color c, float x0, float cy, float sample,
+                        float bar) {
+    if (s.style.draw_line) canvas.line({x0, cy}, {x0 + sample, cy}, {c, s.style.line_width, s.style.line});
+    if (!s.y_err.empty() && !s.style.draw_line)
+        canvas.line({x0 + 0.5f * sample, cy - bar}, {x0 + 0.5f * sample, cy + bar},
+                    {c, 1.2f, LineStyle::Solid});
+    if (s.style.marker != MarkerShape::None) canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
+}
+
+// The legend above the axes: entries side by side in rows as wide as the data area, in the band kept for it.
+void draw_legend_above(Canvas& canvas, const Plot& plot, const std::vector<Series>& series,
+                       const std::vector<std::size_t>& entries, float sample, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const float fs = plot.font_size;
+    const AboveLayout above = above_layout(canvas, series, entries, fs, A.width());
+    const float above_row = std::round(fs * kAboveRow);
+    const Vec2 origin{A.x0, A.y0 - top_axis_band(plot) - fr.band};
+    const Canvas::Mark legend_start = canvas.mark();
+    TextStyle lt;
+    lt.size = fs, lt.valign = VAlign::Middle;
+    // Samples first, labels after (fewer draw batches; they do not overlap).
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const Series& s = series[entries[k]];
+        draw_legend_sample(canvas, s, series_color(s, entries[k]), origin.x + above.at[k].x,
+                           std::floor(origin.y + above.at[k].y + 0.5f * above_row) + 0.5f, sample, 6);
+    }
+    for (std::size_t k = 0; k < entries.size(); ++k)
+        canvas.text({origin.x + above.at[k].x + sample + 8, origin.y + above.at[k].y + 0.5f * above_row},
+                    series[entries[k]].label, lt);
+    canvas.add_region("legend", {origin.x, origin.y, origin.x + above.size.x, origin.y + above.size.y},
+                      legend_start);
+}
+
+// The eight places for a legend box of `size` inside the data area: corners (top right, top left, bottom
+// right, bottom left), then the middles of the edges (top, bottom, right, left).
+Rect box_inside(const Rect& A, Vec2 size, int k) {
+    const float m = kLegendMargin, w = size.x, h = size.y;
+    const float left = A.x0 + m, right = A.x1 - m - w, cx = std::round(0.5f * (A.x0 + A.x1 - w));
+    const float top = A.y0 + m, bottom = A.y1 - m - h, cy = std::round(0.5f * (A.y0 + A.y1 - h));
+    static constexpr int kX[] = {2, 0, 2, 0, 1, 1, 2, 0}, kY[] = {0, 0, 2, 2, 0, 2, 1, 1};
+    const float x0 = kX[k] == 0 ? left : (kX[k] == 1 ? cx : right);
+    const float y0 = kY[k] == 0 ? top : (kY[k] == 1 ? cy : bottom);
+    return Rect{x0, y0, x0 + w, y0 + h};
+}
+
+// The index (box_inside) of a fixed corner; the top right for the others.
+int corner_of(LegendPosition legend) {
     switch (legend) {
     case LegendPosition::TopLeft:
-        pos = 1;
-        break;
+        return 1;
     case LegendPosition::BottomRight:
-        pos = 2;
-        break;
+        return 2;
     case LegendPosition::BottomLeft:
-        pos = 3;
-        break;
+        return 3;
     default:
-        break;
+        return 0;
     }
-    Rect box = box_at(pos);
-    // Everything drawn in the data area is what the legend must not cover; how much it covers counts lines
-    // by their segments.
+}
+
+// How much of what is drawn in the data area `r` covers: lines count by their segments.
+std::size_t covered(const Canvas& canvas, const Frame& fr, const Rect& r) {
     const auto& cmds = canvas.display_list().commands;
-    auto covered = [&](const Rect& r) {
-        std::size_t n = 0;
-        for (std::size_t k = data_start.commands; k < data_end.commands; ++k) {
-            if (!command_touches(cmds[k], r, canvas.fonts(), 2.0f)) continue;
-            const auto* pl = std::get_if<dl::Polyline>(&cmds[k]);
-            if (!pl) {
-                ++n;
-                continue;
-            }
-            const float g = 2.0f + 0.5f * pl->stroke.width;
-            for (std::size_t i = 1; i < pl->points.size(); ++i) {
-                double ax = pl->points[i - 1].x, ay = pl->points[i - 1].y, bx = pl->points[i].x,
-                       by = pl->points[i].y;
-                n += clip_segment(ax, ay, bx, by, r.x0 - g, r.y0 - g, r.x1 + g, r.y1 + g);
-            }
+    std::size_t n = 0;
+    for (std::size_t k = fr.data_start.commands; k < fr.data_end.commands; ++k) {
+        if (!command_touches(cmds[k], r, canvas.fonts(), 2.0f)) continue;
+        const auto* pl = std::get_if<dl::Polyline>(&cmds[k]);
+        if (!pl) {
+            ++n;
+            continue;
         }
-        return n;
-    };
+        const float g = 2.0f + 0.5f * pl->stroke.width;
+        for (std::size_t i = 1; i < pl->points.size(); ++i) {
+            double ax = pl->points[i - 1].x, ay = pl->points[i - 1].y, bx = pl->points[i].x,
+                   by = pl->points[i].y;
+            n += clip_segment(ax, ay, bx, by, r.x0 - g, r.y0 - g, r.x1 + g, r.y1 + g);
+        }
+    }
+    return n;
+}
+
+// Where a boxed legend goes. Right of the axes or below them when drawn for that place; else inside, where
+// the plot is asked to be drawn again with it right of or below the axes (`again`) when every place inside
+// covers data.
+enum class Again { no, right, below };
+struct BoxSpot {
+    Rect box;
+    Again again = Again::no;
+};
+
+// `below_size`: the size of the legend below the axes, where it may go there.
+BoxSpot legend_spot(const Canvas& canvas, const Plot& plot, bool outside, bool below_place, Vec2 size,
+                    const std::optional<Vec2>& below_size, bool has_heatmap, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const float w = size.x, h = size.y;
+    BoxSpot spot{box_inside(A, size, corner_of(plot.legend))};
     // Below the axes: where it fits (a third of the plot's height; 45% for text below 13 units, on small
     // pages), else inside.
     const bool below_fits =
-        legend_below && below_geom->size.x <= bounds_.width() &&
-        below_geom->size.y + kLegendGap <= bounds_.height() * (fs < 13 ? 0.45f : 1.0f / 3);
+        plot.legend_below && below_size->x <= fr.bounds.width() &&
+        below_size->y + kLegendGap <= fr.bounds.height() * (plot.font_size < 13 ? 0.45f : 1.0f / 3);
     if (outside) {
-        const float x0 = A.x1 + (heatmap_ ? kColorBarSpace : 0.0f) + kLegendGap;
-        box = {x0, A.y0, x0 + w, A.y0 + h};
-    } else if (place == LegendPlace::Below) {
-        const float x0 = std::clamp(std::round(0.5f * (A.x0 + A.x1 - w)), bounds_.x0, bounds_.x1 - w);
-        box = {x0, bounds_.y1 - h, x0 + w, bounds_.y1};
-    } else if (legend == LegendPosition::Best) {
+        const float x0 = A.x1 + (has_heatmap ? kColorBarSpace : 0.0f) + kLegendGap;
+        spot.box = {x0, A.y0, x0 + w, A.y0 + h};
+    } else if (below_place) {
+        const float x0 = std::clamp(std::round(0.5f * (A.x0 + A.x1 - w)), fr.bounds.x0, fr.bounds.x1 - w);
+        spot.box = {x0, fr.bounds.y1 - h, x0 + w, fr.bounds.y1};
+    } else if (plot.legend == LegendPosition::Best) {
         std::size_t least = std::numeric_limits<std::size_t>::max();
         for (int k = 0; k < 8 && least > 0; ++k)
-            if (const std::size_t n = covered(box_at(k)); n < least) least = n, box = box_at(k);
+            if (const std::size_t n = covered(canvas, fr, box_inside(A, size, k)); n < least)
+                least = n, spot.box = box_inside(A, size, k);
         // None is free: the plot is drawn again with the legend outside, unless that would take more than a
         // third of the plot's width (a small panel): then below it where allowed, else the place covering
         // least.
-        if (least > 0 && w + 2 * kLegendGap <= bounds_.width() / 3) {
-            redraw = LegendPlace::Right;
-            return tf;
-        }
-        if (least > 0 && below_fits) {
-            redraw = LegendPlace::Below;
-            return tf;
-        }
-    } else if (below_fits && covered(box) > 0) {
-        redraw = LegendPlace::Below; // the figure's corner covers data on this page
-        return tf;
+        if (least > 0 && w + 2 * kLegendGap <= fr.bounds.width() / 3)
+            spot.again = Again::right;
+        else if (least > 0 && below_fits)
+            spot.again = Again::below;
+    } else if (below_fits && covered(canvas, fr, spot.box) > 0) {
+        spot.again = Again::below; // the figure's corner covers data on this page
     }
+    return spot;
+}
+
+// The boxed legend: its background and border, each entry's sample, then the labels (on one or two lines).
+void draw_legend_box(Canvas& canvas, const std::vector<Series>& series,
+                     const std::vector<std::size_t>& entries, const LegendGeom& lg, const Rect& box,
+                     float fs) {
+    const float row = lg.row, sample = lg.sample, pad = lg.pad;
     const Canvas::Mark legend_start = canvas.mark();
     canvas.fill_rect(box, colors::white.with_alpha(0.92f));
     canvas.stroke_rect({box.x0 + 0.5f, box.y0 + 0.5f, box.x1 - 0.5f, box.y1 - 0.5f},
@@ -805,17 +829,10 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
                     lg.cols == 1 ? box.y0 + lg.middle[n] : y_first + static_cast<float>(r) * row};
     };
     for (std::size_t n = 0; n < entries.size(); ++n) {
-        const Series& s = series_[entries[n]];
-        const Color c = series_color(s, entries[n]);
+        const Series& s = series[entries[n]];
         const Vec2 at = entry_at(n);
-        const float x0 = at.x, cy = std::floor(at.y) + 0.5f;
-        const float bar = std::min(6.0f, 0.45f * row);
-        if (s.style.draw_line)
-            canvas.line({x0, cy}, {x0 + sample, cy}, {c, s.style.line_width, s.style.line});
-        if (!s.y_err.empty() && !s.style.draw_line)
-            canvas.line({x0 + 0.5f * sample, cy - bar}, {x0 + 0.5f * sample, cy + bar},
-                        {c, 1.2f, LineStyle::Solid});
-        if (s.style.marker != MarkerShape::None) canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
+        draw_legend_sample(canvas, s, series_color(s, entries[n]), at.x, std::floor(at.y) + 0.5f, sample,
+                           std::min(6.0f, 0.45f * row));
     }
     for (std::size_t n = 0; n < entries.size(); ++n) {
         const Vec2 at = entry_at(n);
@@ -827,6 +844,73 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
         }
     }
     canvas.add_region("legend", box, legend_start);
+}
+
+} // namespace
+
+// The steps, matplotlib style (each artist by its own function): the layout with room for the legend, the
+// data area (grid, heat map, underlays, series, overlays), the frame and ticks, the titles, the top axis and
+// colour bar, then the legend (which looks at what the data area holds to find its place).
+PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPlace& redraw) const {
+    redraw = LegendPlace::Inside;
+    const bool outside = place == LegendPlace::Right;
+    const std::vector<std::size_t> entries = legend_entries(series_);
+    // The geometry below the axes only where the legend may go there: it measures every label for each
+    // column count, and the app draws its plots every frame.
+    std::optional<LegendGeom> below_geom;
+    if (place == LegendPlace::Below || legend_below)
+        below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
+    LegendGeom lg =
+        place == LegendPlace::Below ? *below_geom : legend_geom(canvas, series_, entries, font_size);
+    Frame fr;
+    fr.bounds = bounds_;
+    fr.below = place == LegendPlace::Below ? lg.size.y + kLegendGap : 0.0f;
+    fr.band = legend_band(canvas);
+    fr.layout = compute_layout(*this, series_, heatmap_, bounds_, canvas,
+                               outside ? lg.size.x + 2 * kLegendGap : 0.0f, fr.below, fr.band);
+    const PlotTransform& tf = fr.layout.tf;
+    const Rect& A = tf.area;
+
+    canvas.fill_rect(A, colors::white);
+    canvas.push_clip(A);
+    draw_grid(canvas, *this, fr.layout);
+    if (heatmap_) draw_heatmap(canvas, *heatmap_, tf);
+    for (const auto& fn : underlays_) fn(canvas, tf);
+    fr.data_start = canvas.mark();
+    draw_series(canvas, series_, tf);
+    PlotTransform otf = tf;
+    otf.first_data_command = fr.data_start.commands;
+    for (const auto& fn : overlays_) fn(canvas, otf);
+    canvas.pop_clip();
+    for (const auto& fn : unclipped_overlays_) fn(canvas, otf);
+    canvas.add_region("data", A, fr.data_start);
+    fr.data_end = canvas.mark();
+
+    draw_frame_and_ticks(canvas, fr.layout, font_size);
+    if (!x_axis.title.empty()) draw_x_title(canvas, *this, fr);
+    if (!y_axis.title.empty()) draw_y_title(canvas, *this, fr);
+    if (!title.empty()) draw_panel_title(canvas, *this, fr);
+    if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
+    if (heatmap_) draw_colorbar(canvas, A, *heatmap_, font_size, font_size + 1);
+
+    if (legend == LegendPosition::None || entries.empty()) return tf;
+    if (legend == LegendPosition::Above) {
+        draw_legend_above(canvas, *this, series_, entries, lg.sample, fr);
+        return tf;
+    }
+    // Inside the axes, the box no wider than they are: labels too long for that (a user's, say a pinned
+    // curve's from a session file) are elided. The figures' own labels always fit, so nothing else changes.
+    if (!outside && place != LegendPlace::Below && lg.size.x > A.width() - 2 * kLegendMargin)
+        lg = legend_geom(canvas, series_, entries, font_size, 1, 0, A.width() - 2 * kLegendMargin);
+    std::optional<Vec2> below_size;
+    if (below_geom) below_size = below_geom->size;
+    const BoxSpot spot = legend_spot(canvas, *this, outside, place == LegendPlace::Below, lg.size, below_size,
+                                     heatmap_.has_value(), fr);
+    if (spot.again != Again::no) {
+        redraw = spot.again == Again::right ? LegendPlace::Right : LegendPlace::Below;
+        return tf;
+    }
+    draw_legend_box(canvas, series_, entries, lg, spot.box, font_size);
     return tf;
 }
 
