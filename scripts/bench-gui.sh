@@ -7,7 +7,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 FV=build/app/frictionviz
-[ -x "$FV" ] || bash scripts/build.sh >/dev/null
+[ -x "$FV" ] || bash scripts/build.sh app >/dev/null
 uptime
 for args in "--size 1280x800" "--size 1920x1080 --scale 1.5"; do
   # shellcheck disable=SC2086

@@ -6,6 +6,7 @@
 #   scripts/bench-web.sh [SITE_DIR]      (default build-web/site; scripts/build-web.sh makes it)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/setup.sh browser
 site=${1:-build-web/site}
 [ -f "$site/frictionviz.wasm" ] || { echo "bench-web: no site in $site (run scripts/build-web.sh)" >&2; exit 2; }
 tmp=$(mktemp -d)

@@ -4,7 +4,9 @@
 #   accuracy contract of the default ratio (worst |default - dtau->0 limit| on a grid; contract 1e-5)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh >/dev/null
+bash scripts/setup.sh bench
+bash scripts/build.sh app >/dev/null
+cmake --build build -j"$(nproc)" --target fv_accuracy_contract >/dev/null
 FV=build/app/frictionviz
 out=$(mktemp -d)
 times=()

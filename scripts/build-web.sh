@@ -2,7 +2,7 @@
 # Builds the browser version of frictionviz with Debian's emscripten: a static site (index.html, .js, .wasm)
 # in OUTDIR (default build-web/site), and the test programs run under node.
 #   scripts/build-web.sh [OUTDIR]
-# Installs what is missing first (scripts/setup.sh: emscripten among the rest). Dear ImGui's core sources are not
+# Installs what is missing first (scripts/setup.sh web: emscripten among the rest). Dear ImGui's core sources are not
 # in libimgui-dev: they come from Debian's imgui source package (apt-get source, 1.86 as the headers), fetched
 # once into the build directory, never committed. The emscripten build tree is $FV_WEB_BUILD_DIR (default
 # build-web/); see docs/web.md.
@@ -13,7 +13,7 @@ out=${1:-build-web/site}
 work=${FV_WEB_BUILD_DIR:-build-web}
 start=$(date +%s)
 
-bash scripts/setup.sh
+bash scripts/setup.sh web
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # The main job: builds, then opens the interactive window where there is a display; where there is none,
 # renders every registered figure (PNG + CSV + caption JSON; `frictionviz render --list`) into screenshots/,
-# headless, fig19 with the synthetic example data.
+# headless, fig19 with the synthetic example data. Installs and builds only what that needs (scripts/build.sh app:
+# the app's packages, the frictionviz target); scripts/test.sh adds the rest to the same build/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh app
 FV=build/app/frictionviz
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]; then
   exec $FV gui

@@ -6,7 +6,7 @@
 # (none: everything). Warnings stay warnings here (the normal build, scripts/build.sh, makes them errors).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh sanitize
 dir=${FV_SANITIZE_DIR:-build-sanitize} # the tree (an absolute path or one under the repository)
 # A build-sanitize/ configured by an earlier version of this script with gcc: start again with clang (CMake
 # cannot switch the compiler of a configured tree).

@@ -1,6 +1,7 @@
 # Render memory is flat in the number of figures (docs/reliability.md, Memory): 1 figure against 40 in one call, peak RSS.
 add_executable(fv_render_memory_test ${CMAKE_CURRENT_LIST_DIR}/render_memory_test.cpp)
 target_include_directories(fv_render_memory_test PRIVATE ${PROJECT_SOURCE_DIR}/tests/tools)
+target_link_libraries(fv_render_memory_test PRIVATE fv_warnings)
 if(FV_SANITIZE)
   target_compile_definitions(fv_render_memory_test PRIVATE FV_SANITIZED=1)
 endif()
