@@ -6,6 +6,7 @@
 #include "render_output.hpp"
 #include "test_hook.hpp"
 
+#include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
 
 #include "fv/atomic_file.hpp"
@@ -14,17 +15,11 @@
 #include "fv/fit.hpp"
 #include "fv/measurements.hpp"
 
-#include "fv/gfx/png.hpp"
-
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdint>
 #include <cstdio>
-#include <deque>
-#include <future>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -335,109 +330,44 @@ Command add_render_command(CLI::App& root) {
                 throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
             }
             check_gl_limits(*session, a->output);
-            // One figure at a time, so that memory does not grow with the number of figures: figure k is
-            // computed and drawn (GL is single-threaded) while the frames before it are PNG-encoded (the
-            // slow part) and written on other threads; it is handed over when fewer than `encoders` are
-            // in flight, and the frame is freed once encoded. Alive at any time: the context's
-            // framebuffer, the frame being drawn, the encoders' frames, the data of one figure.
-            struct Output {
-                std::string id;
-                gfx::Image image;
-                gfx::DisplayList list;                                  // for SVG and PDF
-                std::vector<std::pair<std::string, std::string>> files; // beside the PNG: name, content
-            };
-            const OutputArgs& output = a->output;
-            // Owns the frame and the display list, and frees them as soon as they are written. After a
-            // failed write nothing more is written (a full disk, a directory gone): `stop` is set by the
-            // first failure, and jobs still queued find it.
-            auto stop = std::make_shared<std::atomic<bool>>(false);
-            // nullopt: not written (an earlier write failed); "": written; else the failure.
-            // Encoding (the slow part) runs in parallel; the writes go in figure order, each job waiting for
-            // the one before it, so nothing after a failed write is written.
-            auto write = [dir, &output, stop](Output o, std::shared_future<std::optional<std::string>> before)
-                -> std::optional<std::string> {
-                std::vector<std::pair<std::string, std::string>> files;
-                std::string err;
-                try {
-                    files = encode_figure_files(o.id, output, o.image, o.list);
-                } catch (const std::exception& e) {
-                    err = o.id + ": " + e.what();
-                }
-                std::vector<std::uint8_t>().swap(o.image.rgba);
-                o.list = {};
-                if (before.valid()) before.wait();
-                if (*stop) return std::nullopt;
-                files.insert(files.end(), o.files.begin(), o.files.end());
-                for (const auto& [file, content] : files)
-                    if (err.empty()) err = write_file_atomic(dir + "/" + file, content);
-                if (!err.empty()) *stop = true;
-                return err;
-            };
-            const std::size_t encoders = encoders_for(sz.w, sz.h);
-            // jobs, "wrote" lines
-            std::deque<std::pair<std::shared_future<std::optional<std::string>>, std::string>> pending;
-            std::string first_error;
-            auto finish_oldest = [&] { // in order, so that the "wrote" lines are too
-                const std::optional<std::string> err = pending.front().first.get();
-                const std::string line = std::move(pending.front().second);
-                pending.pop_front();
-                if (err && err->empty()) std::printf("%s\n", line.c_str());
-                if (err && !err->empty() && first_error.empty()) first_error = *err;
-            };
-            // After the first failed write: the jobs in flight end, and nothing else is computed.
-            auto stop_if_failed = [&] {
-                if (!*stop) return;
-                while (!pending.empty()) finish_oldest();
-                throw RuntimeFailure(first_error + " (stopped there: the figures after it were not written)");
-            };
-            // Every figure is written; those with failed points make the exit status 3.
-            const std::size_t nfigures = specs.size();
-            std::string failed;
-            int nfailed = 0;
-            for (FigureSpec& spec : specs) {
-                stop_if_failed();
-                FigureData data = compute_figure(spec);
+            // Each figure's tables (CSV) and caption beside its pictures, and the note of its failed
+            // points.
+            app::RenderJob job;
+            job.dir = dir;
+            job.formats = a->output.pictures();
+            job.encoders = encoders_for(sz.w, sz.h);
+            job.extras = [&output = a->output](const FigureSpec& spec, FigureData& data) {
                 for (TableData& t : data.tables) apply_test_hook(t);
                 std::optional<FitResult> fit;
                 if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
-                Output o{data.id, {}, {}, {}};
-                if (output.png) {
-                    o.image = session->render_figure(data);
-                    if (output.svg || output.pdf) o.list = session->canvas().display_list();
-                } else {
-                    o.list = session->record_figure(data);
-                }
+                app::FigureExtras extras;
                 std::vector<std::string> names;
                 for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
                 for (const TableData& t : data.tables) {
                     names.push_back(data.id + t.suffix + ".csv");
-                    o.files.push_back({names.back(), csv_of(t)});
+                    extras.files.push_back({names.back(), csv_of(t)});
                 }
                 names.push_back(data.id + ".json");
-                const std::string w = check_figure(data, fit ? &*fit : nullptr);
-                o.files.push_back({names.back(), caption_json(spec, names, w)});
-                if (!w.empty()) {
-                    ++nfailed;
-                    failed += (failed.empty() ? "" : "; ") + w;
-                }
-                spec = FigureSpec{}; // its data (fig19's figure) are not needed any more
-                while (pending.size() >= encoders) finish_oldest();
-                std::string line = "wrote " + dir + "/" + o.id + ".";
-                for (const std::string& ext : output.extensions())
-                    line += (ext == output.extensions().front() ? "" : ", .") + ext;
-                line += " (" + std::to_string(sz.w) + "x" + std::to_string(sz.h) + "), its CSV and " + o.id +
-                        ".json";
-                std::shared_future<std::optional<std::string>> before =
-                    pending.empty() ? std::shared_future<std::optional<std::string>>() : pending.back().first;
-                auto job = std::async(std::launch::async, write, std::move(o), std::move(before)).share();
-                pending.emplace_back(std::move(job), std::move(line));
-            }
-            while (!pending.empty()) finish_oldest();
-            stop_if_failed();
+                extras.failed = check_figure(data, fit ? &*fit : nullptr);
+                extras.files.push_back({names.back(), caption_json(spec, names, extras.failed)});
+                return extras;
+            };
+            job.wrote = [&](const std::string& written) {
+                std::string line = "wrote " + dir + "/" + written + ".";
+                for (const std::string& ext : a->output.extensions())
+                    line += (ext == a->output.extensions().front() ? "" : ", .") + ext;
+                std::printf("%s (%dx%d), its CSV and %s.json\n", line.c_str(), sz.w, sz.h, written.c_str());
+            };
+            const std::size_t nfigures = specs.size();
+            const app::RenderOutcome r = app::render_figures(*session, specs, job);
             std::fflush(stdout);
-            if (nfailed > 0)
-                throw NumericalFailure(std::to_string(nfailed) + " of " + std::to_string(nfigures) +
-                                       " figures have failed points (" + failed +
+            if (!r.write_error.empty())
+                throw RuntimeFailure(r.write_error +
+                                     " (stopped there: the figures after it were not written)");
+            // Every figure is written; those with failed points make the exit status 3.
+            if (r.failed_figures > 0)
+                throw NumericalFailure(std::to_string(r.failed_figures) + " of " + std::to_string(nfigures) +
+                                       " figures have failed points (" + r.failed +
                                        "); all figures are written");
         }};
 }

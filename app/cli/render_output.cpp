@@ -95,14 +95,6 @@ PixelSize parse_size(const std::string& s) {
     return sz;
 }
 
-std::vector<std::string> OutputArgs::extensions() const {
-    std::vector<std::string> e;
-    if (png) e.push_back("png");
-    if (svg) e.push_back("svg");
-    if (pdf) e.push_back("pdf");
-    return e;
-}
-
 void add_output_options(CLI::App& cmd, OutputArgs& args) {
     cmd.add_option(
            "--format", args.format,
@@ -154,20 +146,6 @@ void check_gl_limits(app::RenderSession& session, const OutputArgs& args) {
                          std::to_string(atlas.TexWidth) + "x" + std::to_string(atlas.TexHeight) +
                          " font texture, past the GL limit of " + std::to_string(texture) +
                          "; allowed: a smaller --scale");
-}
-
-std::vector<std::pair<std::string, std::string>> encode_figure_files(const std::string& id,
-                                                                     const OutputArgs& args,
-                                                                     const gfx::Image& image,
-                                                                     const gfx::DisplayList& list) {
-    std::vector<std::pair<std::string, std::string>> files;
-    if (args.png) {
-        const std::vector<unsigned char> png = gfx::encode_png(image);
-        files.emplace_back(id + ".png", std::string(reinterpret_cast<const char*>(png.data()), png.size()));
-    }
-    if (args.svg) files.emplace_back(id + ".svg", gfx::render_vector(list, gfx::VectorFormat::Svg));
-    if (args.pdf) files.emplace_back(id + ".pdf", gfx::render_vector(list, gfx::VectorFormat::Pdf));
-    return files;
 }
 
 } // namespace fv::cli

@@ -2,18 +2,13 @@
 // drawn; each figure's files written through the output-path policy (fv::write_file_atomic).
 #pragma once
 
-#include "fv/gfx/display_list.hpp"
-#include "fv/gfx/image.hpp"
+#include "figures/render_figures.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <string>
 #include <utility>
 #include <vector>
-
-namespace fv::app {
-class RenderSession;
-}
 
 namespace fv::cli {
 
@@ -39,8 +34,9 @@ struct OutputArgs {
     double scale = 1;
     // Parsed from `format`, in the order png, svg, pdf.
     bool png = false, svg = false, pdf = false;
-    // The file extensions asked for, "png", "svg", "pdf".
-    std::vector<std::string> extensions() const;
+    // The pictures asked for, and their file extensions ("png", "svg", "pdf").
+    app::PictureFormats pictures() const { return {png, svg, pdf}; }
+    std::vector<std::string> extensions() const { return pictures().extensions(); }
 };
 
 // Adds --format and --scale to `cmd`.
@@ -53,12 +49,5 @@ void check_output_args(OutputArgs& args, int width, int height);
 // The GL path's limits for the session's framebuffer and font atlas (GL_MAX_RENDERBUFFER_SIZE,
 // GL_MAX_VIEWPORT_DIMS, GL_MAX_TEXTURE_SIZE): UsageError when --size at --scale passes them.
 void check_gl_limits(app::RenderSession& session, const OutputArgs& args);
-
-// ID.png (encoded from `image`), ID.svg and ID.pdf (from `list`) as asked, as (name, bytes), to be written
-// through write_file_atomic. Thread-safe; throws what the encoders throw.
-std::vector<std::pair<std::string, std::string>> encode_figure_files(const std::string& id,
-                                                                     const OutputArgs& args,
-                                                                     const gfx::Image& image,
-                                                                     const gfx::DisplayList& list);
 
 } // namespace fv::cli
