@@ -36,15 +36,13 @@ TEST_CASE("Registry: every figure registered once, in paper order, each defined 
                                             "fig12", "fig13", "fig14", "fig14a", "fig14b", "fig15", "fig16",
                                             "fig17", "fig18", "fig19", "map",    "ry",     "scene"};
     CHECK(ids == expected);
-    std::string list;
     for (const fv::FigureEntry& e : reg) {
         CAPTURE(e.id);
         CHECK(fv::find_registered(e.id) == &e);
         CHECK_FALSE(e.title.empty());
         CHECK(e.title.find('\t') == std::string::npos);
         CHECK(static_cast<bool>(e.make));
-        for (const fv::FigureFlag& f : e.flags) CHECK(f.name.rfind("--", 0) == 0);
-        list += e.id + "\t" + e.title + "\n";
+        CHECK(e.title.find("--") == std::string::npos);       // parameters, not the command line's flags
         if (e.kind == fv::FigureKind::measurements) continue; // reads a file: see the CLI and snapshot tests
         const fv::FigureSpec spec = e.make(e.example);
         CHECK(spec.id == e.id);
@@ -62,18 +60,22 @@ TEST_CASE("Registry: every figure registered once, in paper order, each defined 
             for (const char* word : {"ζ = ", "θ = ", "r_{disp} = ", "i = "})
                 CHECK(spec.title.find(word) != std::string::npos);
     }
-    CHECK(fv::figure_list_tsv() == list);
     CHECK(fv::find_registered("fig99") == nullptr);
-    // The fixed figures (no flags) are the app's presets' source and paper_figures().
+    // The fixed figures (no parameters) are the app's presets' source and paper_figures().
     std::size_t fixed = 0;
-    for (const fv::FigureEntry& e : reg) fixed += e.flags.empty() ? 1 : 0;
+    for (const fv::FigureEntry& e : reg) fixed += e.params.empty() ? 1 : 0;
     CHECK(fv::paper_figures().size() == fixed);
-    // Flags: scene needs the four model flags, fig19 needs --data and is left out of `all` without it.
+    // Parameters: scene needs the four model parameters; fig19 needs a data file and is left out of `all`
+    // without one.
     const fv::FigureEntry* scene = fv::find_registered("scene");
     REQUIRE(scene);
-    CHECK(std::count_if(scene->flags.begin(), scene->flags.end(), [](const auto& f) { return f.required; }) ==
-          4);
-    CHECK(fv::find_registered("fig19")->all_needs_flags);
+    CHECK(std::count_if(scene->params.begin(), scene->params.end(),
+                        [](const auto& u) { return u.required; }) == 4);
+    CHECK_FALSE(fv::missing_param(*scene, scene->example));
+    const fv::FigureEntry* fig19 = fv::find_registered("fig19");
+    REQUIRE(fig19);
+    CHECK(fig19->all_needs_params);
+    CHECK(fv::missing_param(*fig19, {}) == fv::FigureParam::data);
     CHECK(fv::plain_text("r_{disp} = 2, F_{x}, 10^{3}") == "r_disp = 2, F_x, 10^3");
 }
 

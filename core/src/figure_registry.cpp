@@ -172,17 +172,39 @@ std::string figure_ids() {
     return s;
 }
 
-std::string figure_list_tsv() {
-    std::string s;
-    for (const FigureEntry& e : figure_registry()) s += e.id + "\t" + e.title + "\n";
-    return s;
+bool given(const FigureInputs& in, FigureParam p) {
+    switch (p) {
+    case FigureParam::zeta:
+        return in.zeta.has_value();
+    case FigureParam::theta:
+        return in.theta_deg.has_value();
+    case FigureParam::rdisp:
+        return in.rdisp.has_value();
+    case FigureParam::i:
+        return in.i.has_value();
+    case FigureParam::data:
+        return !in.data.empty();
+    case FigureParam::amplitude:
+        return in.amplitude_um.has_value();
+    case FigureParam::frequency:
+        return in.frequency_khz.has_value();
+    case FigureParam::start:
+        return in.start.has_value();
+    }
+    return false;
+}
+
+std::optional<FigureParam> missing_param(const FigureEntry& e, const FigureInputs& in) {
+    for (const FigureParamUse& u : e.params)
+        if (u.required && !given(in, u.param)) return u.param;
+    return std::nullopt;
 }
 
 const std::vector<FigureSpec>& paper_figures() {
     static const std::vector<FigureSpec> figs = [] {
         std::vector<FigureSpec> v;
         for (const FigureEntry& e : figure_registry())
-            if (e.flags.empty()) v.push_back(e.make(e.example));
+            if (e.params.empty()) v.push_back(e.make(e.example));
         return v;
     }();
     return figs;

@@ -1,5 +1,6 @@
-// Fig. 19: measured friction ratios against the rigid model and the Dahl model fitted to them, from --data
-// (with --theta, --amplitude, --frequency as `fit` takes them). Registers itself (figure_registry.hpp).
+// Fig. 19: measured friction ratios against the rigid model and the Dahl model fitted to them, from a data
+// file (with the angle of points without one, the vibration's amplitude and frequency, as `fit` takes them).
+// Registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
@@ -9,9 +10,7 @@ namespace fv {
 namespace {
 
 // Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
-// input (DataError, FitError), before anything is rendered.
-// Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
-// input (DataError, FitError), before anything is rendered. The vibration (--amplitude, --frequency; else the
+// input (DataError, FitError), before anything is rendered. The vibration (amplitude, frequency; else the
 // paper's experiment, 0.7 um at 60 kHz) converts a vb column, puts v_b = zeta v_v in m/s on a top axis and
 // z_ss = A/r_disp in um into the caption.
 FigureSpec fig19(const FigureInputs& in) {
@@ -67,27 +66,20 @@ FigureSpec fig19(const FigureInputs& in) {
 FigureEntry fig19_entry() {
     FigureEntry e;
     e.id = "fig19";
-    e.title = "model vs. measured r_x(ζ), r_disp fitted for i = 0 and i = 1 (needs --data)";
+    e.title = "model vs. measured r_x(ζ), r_disp fitted for i = 0 and i = 1";
     e.kind = FigureKind::measurements;
-    e.flags = {
-        {"--data", "", true}, {"--theta", "", false}, {"--amplitude", "", false}, {"--frequency", "", false}};
+    e.params = {
+        {FigureParam::data, true}, {FigureParam::theta}, {FigureParam::amplitude}, {FigureParam::frequency}};
     e.example.data = "tests/data/synthetic_two_angles_rdisp2_i0.csv";
     e.example.amplitude_um = 0.7;
-    e.all_needs_flags = true;
+    e.all_needs_params = true;
     e.make = fig19;
     e.summary =
-        "Model vs. measurements: `render --figure fig19 --data FILE [--theta DEG] [--amplitude UM "
-        "--frequency "
-        "KHZ]` fits one r_disp for i = 0 and one for i = 1 to all points and draws one panel per vibration "
-        "angle "
-        "(up to 4, in the file's order, like the paper's (a) θ = 90°, (b) θ = 0°): the points with ±σ error "
-        "bars "
-        "over the rigid curve and both fitted Dahl curves; `fig19.csv` lists each point with its angle, both "
-        "models and residuals. Shown here for the **synthetic** example "
-        "`tests/data/synthetic_two_angles_rdisp2_i0.csv` (made from the model with r_disp = 2, i = 0 at both "
-        "angles plus noise σ = 0.008), labelled as such on the figure: the fit gives r_disp = 1.97 ± 0.016 "
-        "and picks i = 0. The top axis is v_b in m/s for `--amplitude` and `--frequency` (default: the "
-        "paper's experiment, 0.7 µm at 60 kHz).";
+        "Model vs. measurements: one r_disp fitted for i = 0 and one for i = 1 to all points, one panel per "
+        "vibration angle (up to 4, in the file's order, like the paper's (a) θ = 90°, (b) θ = 0°): the "
+        "points with ±σ error bars over the rigid curve and both fitted Dahl curves; its table lists each "
+        "point with its angle, both models and residuals. The top axis is v_b in m/s for the vibration's "
+        "amplitude and frequency (default: the paper's experiment, 0.7 µm at 60 kHz).";
     return e;
 }
 

@@ -1,6 +1,6 @@
 // The paper's figures of the two friction laws on their own: the mechanism of friction reduction in the
-// rigid model (Fig. 4: --zeta, --theta, default 0.5 and 90 deg) and the friction-displacement curves of the
-// Dahl law for several i (Fig. 6). Each registers itself (figure_registry.hpp).
+// rigid model (Fig. 4: at any zeta and theta, default 0.5 and 90 deg) and the friction-displacement curves of
+// the Dahl law for several i (Fig. 6). Each registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/format.hpp"
 #include "fv/rigid.hpp"
@@ -35,12 +35,9 @@ FigureSpec fig4(double zeta, double theta_deg) {
 FigureEntry fig4_entry() {
     FigureEntry e;
     e.id = "fig4";
-    e.title = "mechanism: velocity and Coulomb friction turning over a period, rigid model (--zeta, --theta)";
+    e.title = "mechanism: velocity and Coulomb friction turning over a period, rigid model";
     e.kind = FigureKind::mechanism;
-    e.flags = {{"--zeta", "--vb", false},
-               {"--theta", "", false},
-               {"--amplitude", "", false},
-               {"--frequency", "", false}};
+    e.params = {{FigureParam::zeta}, {FigureParam::theta}};
     e.make = [](const FigureInputs& in) { return fig4(in.zeta.value_or(0.5), in.theta_deg.value_or(90)); };
     return e;
 }

@@ -1,5 +1,5 @@
 // r_y(zeta), the mean friction across v_b that the model computes and the paper defines (Eq. 31) but never
-// shows: for theta = 30, 45, 60 deg, the Dahl model (--rdisp, --i, default 2 and 1) and the rigid one.
+// shows: for theta = 30, 45, 60 deg, the Dahl model (any r_disp and i, default 2 and 1) and the rigid one.
 // Registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/format.hpp"
@@ -32,9 +32,9 @@ FigureSpec ry_figure(double rdisp, double i) {
 FigureEntry ry_entry() {
     FigureEntry e;
     e.id = "ry";
-    e.title = "side force r_y(ζ) for θ = 30°, 45°, 60°, Dahl (--rdisp, --i) and rigid, beyond the paper";
+    e.title = "side force r_y(ζ) for θ = 30°, 45°, 60°, Dahl and rigid, beyond the paper";
     e.kind = FigureKind::ratio_curves;
-    e.flags = {{"--rdisp", "--zss", false}, {"--i", "", false}, {"--amplitude", "", false}};
+    e.params = {{FigureParam::rdisp}, {FigureParam::i}};
     e.make = [](const FigureInputs& in) { return ry_figure(in.rdisp.value_or(2), in.i.value_or(1)); };
     return e;
 }
