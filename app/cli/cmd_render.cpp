@@ -114,7 +114,7 @@ std::string figure_help() {
     for (const FigureEntry& e : figure_registry()) {
         if (e.params.empty()) continue;
         s += "; " + e.id + " (" + flags_text(e);
-        if (e.all_needs_params)
+        if (missing_param(e, e.example))
             s += "; in all only with them";
         else if (missing_param(e, {}))
             s += "; in all " + plain_text(e.make(e.example).title) + " where not given";
@@ -247,7 +247,7 @@ Command add_render_command(CLI::App& root) {
                     for (const FigureEntry& e : figure_registry()) {
                         if (!missing_param(e, in))
                             chosen.emplace_back(&e, in);
-                        else if (!e.all_needs_params)
+                        else if (!missing_param(e, over(e.example, in)))
                             chosen.emplace_back(&e, over(e.example, in));
                         else
                             std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",

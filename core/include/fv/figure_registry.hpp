@@ -44,11 +44,10 @@ struct FigureEntry {
     std::string title; // one line, plain text: `render --list`
     FigureKind kind = FigureKind::ratio_curves;
     std::vector<FigureParamUse> params; // empty: a fixed figure (defined by its spec alone)
-    // The inputs of the rendering shown in README.md and screenshots/ and checked by the snapshot tests; a
-    // relative `data` path is relative to the source tree. `render --figure all` uses them for a figure
-    // whose required parameters are not given, unless `all_needs_params` (fig19: only with a data file).
+    // The inputs of the rendering shown in README.md and screenshots/ and checked by the snapshot tests.
+    // `render --figure all` uses them for a figure whose required parameters are not given; a figure whose
+    // example lacks one of them (fig19: a data file) is rendered there only when it is given.
     FigureInputs example;
-    bool all_needs_params = false;
     // The figure's definition for these inputs (required parameters checked already). May throw DataError
     // or FitError (a file that cannot be read or fitted).
     std::function<FigureSpec(const FigureInputs&)> make;
