@@ -359,7 +359,8 @@ Command add_render_command(CLI::App& root) {
                 FigureData data = compute_figure(spec);
                 for (TableData& t : data.tables) apply_test_hook(t);
                 std::optional<FitResult> fit;
-                if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
+                if (const auto* m = std::get_if<MeasurementsFigure>(&spec.content); m && m->fit)
+                    apply_test_hook(fit.emplace(*m->fit));
                 Output o{data.id, {}, {}, {}};
                 if (output.png) {
                     o.image = session->render_figure(data);

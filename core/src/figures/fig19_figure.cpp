@@ -34,7 +34,6 @@ FigureSpec fig19(const FigureInputs& in) {
     }
     FigureSpec f;
     f.id = "fig19";
-    f.kind = FigureKind::measurements;
     f.title = fig->title;
     const FitCandidate& b = fit->best;
     const std::string what =
@@ -47,7 +46,8 @@ FigureSpec fig19(const FigureInputs& in) {
         format_number("%.2g", b.rdisp_sigma) +
         (b.zss_um ? " (z_ss = A/r_disp = " + format_number("%.3g", *b.zss_um) + " µm)" : "") +
         ". The top axis is v_b = ζ v_v with v_v = 2π f A = " + format_number("%.4g", vv) + " m/s.";
-    f.parameters =
+    MeasurementsFigure m;
+    m.parameters =
         "rigid model (Eqs. 9–11, quadrature) and Dahl model with i = 0 and i = 1 at each panel's θ, "
         "r_disp fitted by least squares in ln r_disp over [0.1, 100] (" +
         std::string(b.weighted ? "weights 1/σ²" : "unweighted") +
@@ -58,8 +58,9 @@ FigureSpec fig19(const FigureInputs& in) {
              ? " (where --amplitude or --frequency is not given: the paper's experiment, Littmann "
                "et al., 0.7 µm at 60 kHz)"
              : "");
-    f.precomputed = std::move(fig);
-    f.fit = std::move(fit);
+    m.precomputed = std::move(fig);
+    m.fit = std::move(fit);
+    f.content = std::move(m);
     return f;
 }
 

@@ -13,8 +13,7 @@ constexpr double kDeg = kPi / 180;
 FigureSpec fig4(double zeta, double theta_deg) {
     FigureSpec f;
     f.id = "fig4";
-    f.kind = FigureKind::mechanism;
-    f.params = {zeta, theta_deg * kDeg, 0, 0};
+    f.content = MechanismFigure{zeta, theta_deg * kDeg};
     const std::string z = format_number("%g", zeta), th = format_number("%g", theta_deg);
     const Ratio r = rigid_ratio(zeta, theta_deg * kDeg);
     f.title = "Fig. 4: mechanism of friction reduction, rigid model, ζ = " + z + ", θ = " + th + "°";
@@ -52,8 +51,7 @@ FigureEntry fig6_entry() {
     e.make = [](const FigureInputs&) {
         FigureSpec f;
         f.id = "fig6";
-        f.kind = FigureKind::dahl_curves;
-        f.exponents = {0, 0.5, 1, 2};
+        f.content = DahlCurvesFigure{{0, 0.5, 1, 2}};
         f.title = "Fig. 6: friction–displacement curves of the Dahl law, Eq. (12), i = 0, 0.5, 1, 2";
         f.caption =
             "The Dahl law, Eq. (12), dF/dx = σ₀ (1 − sgn(v) F/F_c)^i, for i = 0, 0.5, 1, 2 (F/F_c against "

@@ -10,8 +10,6 @@ namespace {
 FigureSpec ry_figure(double rdisp, double i) {
     FigureSpec f;
     f.id = "ry";
-    f.kind = FigureKind::ratio_curves;
-    f.side_force = true;
     const std::string r = format_number("%g", rdisp), is = format_number("%g", i);
     f.title = "side force r_{y}(ζ), Dahl (r_{disp} = " + r + ", i = " + is + ") and rigid, θ = 30°, 45°, 60°";
     f.caption =
@@ -22,10 +20,13 @@ FigureSpec ry_figure(double rdisp, double i) {
         "mean friction pushes the body towards +y, up to about a quarter of F_c; it vanishes at θ = 0° and "
         "90° and changes sign under θ → 180° − θ (docs/model.md); for large ζ the rigid r_y tends to "
         "−sin 2θ/(4ζ²).";
-    f.zetas = ratio_zeta_start();
-    f.zeta_budget = kRatioZetaBudget;
-    for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::dahl, th * kPi / 180, rdisp, i});
-    for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::rigid, th * kPi / 180, 0, 0});
+    RatioCurvesFigure c;
+    c.side_force = true;
+    c.zetas = ratio_zeta_start();
+    c.zeta_budget = kRatioZetaBudget;
+    for (double th : {30.0, 45.0, 60.0}) c.curves.push_back({Model::dahl, th * kPi / 180, rdisp, i});
+    for (double th : {30.0, 45.0, 60.0}) c.curves.push_back({Model::rigid, th * kPi / 180, 0, 0});
+    f.content = std::move(c);
     return f;
 }
 
