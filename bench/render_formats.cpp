@@ -6,6 +6,7 @@
 //   usage: fv_render_formats [--exe FRICTIONVIZ] [--size WxH] [--scale S] [--runs R]
 #include "figures/render_session.hpp"
 
+#include "figure_examples.hpp"
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
@@ -53,14 +54,11 @@ int main(int argc, char** argv) {
     co.scale = static_cast<float>(scale);
     fv::app::RenderSession session(co);
 
-    // Every registered figure with the inputs of its README rendering (a relative data path is relative to
-    // the source tree), so that a new figure is timed without touching this file.
+    // Every registered figure with the inputs of its README rendering (fig19 with the synthetic example
+    // data), so that a new figure is timed without touching this file.
     std::vector<fv::FigureSpec> specs;
-    for (const fv::FigureEntry& e : fv::figure_registry()) {
-        fv::FigureInputs in = e.example;
-        if (!in.data.empty() && in.data.front() != '/') in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
-        specs.push_back(e.make(in));
-    }
+    for (const fv::FigureEntry& e : fv::figure_registry())
+        specs.push_back(e.make(fv::test::example_inputs(e)));
     std::printf("%s at --scale %g, seconds per figure (data: once; formats: median of %d)\n", size.c_str(),
                 scale, runs);
     std::printf("%-8s %8s %8s %8s %8s %10s %10s\n", "figure", "data", "png", "svg", "pdf", "svg bytes",

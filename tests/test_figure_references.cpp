@@ -194,15 +194,16 @@ TEST_CASE("ry: rigid r_y is the mean of Eq. (4), the Dahl r_y tends to it as r_d
     stiff.rdisp = 1000;
     stiff.i = 1;
     fv::FigureSpec spec = fv::find_registered("ry")->make(stiff);
-    spec.zetas = {0.3, 0.6, 1.2, 2.0};
-    spec.zeta_budget = 0; // exactly these samples, no adaptive refinement
+    auto& curves = std::get<fv::RatioCurvesFigure>(spec.content);
+    curves.zetas = {0.3, 0.6, 1.2, 2.0};
+    curves.zeta_budget = 0; // exactly these samples, no adaptive refinement
     const fv::FigureData s = fv::compute_figure(spec);
     for (int k = 0; k < 3; ++k)
-        for (std::size_t j = 0; j < spec.zetas.size(); ++j) {
+        for (std::size_t j = 0; j < curves.zetas.size(); ++j) {
             const double th = thetas[k] * kPi / 180;
-            CAPTURE(thetas[k], spec.zetas[j]);
+            CAPTURE(thetas[k], curves.zetas[j]);
             CHECK(s.panels[0].series[static_cast<std::size_t>(k)].y[j] ==
-                  Approx(rigid_ry_chebyshev(spec.zetas[j], th)).margin(1e-3));
+                  Approx(rigid_ry_chebyshev(curves.zetas[j], th)).margin(1e-3));
         }
 }
 
@@ -261,7 +262,7 @@ TEST_CASE("fig19: synthetic data are labelled so, the top axis is v_b = zeta 2 p
         CHECK(p.series.back().label.rfind("synthetic example data", 0) == 0);
     }
     // z_ss = A / r_disp in the caption (the fit's r_disp does not depend on A for a zeta column).
-    const double zss = 1.4 / spec.fit->best.rdisp;
+    const double zss = 1.4 / std::get<fv::MeasurementsFigure>(spec.content).fit->best.rdisp;
     char text[32];
     std::snprintf(text, sizeof text, "z_ss = A/r_disp = %.3g µm", zss);
     CHECK(spec.caption.find(text) != std::string::npos);

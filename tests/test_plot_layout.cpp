@@ -15,6 +15,7 @@
 #include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
+#include "tools/figure_examples.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -34,16 +35,13 @@ using fv::gfx::DisplayList;
 using fv::gfx::Rect;
 using fv::gfx::Vec2;
 
-// Every registered figure with its example inputs (data files relative to the source tree), and the scene at
+// Every registered figure with its example inputs (fig19 with the synthetic example data), and the scene at
 // θ = 90° where r_y is zero up to round-off (it printed "r_y = -0.0000" in the title); computed once.
 const std::vector<fv::FigureData>& figures() {
     static const std::vector<fv::FigureData> out = [] {
         std::vector<fv::FigureData> v;
         for (const fv::FigureEntry& e : fv::figure_registry()) {
-            fv::FigureInputs in = e.example;
-            if (!in.data.empty() && in.data.front() != '/')
-                in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
-            v.push_back(fv::compute_figure(e.make(in)));
+            v.push_back(fv::compute_figure(e.make(fv::test::example_inputs(e))));
         }
         v.push_back(fv::compute_figure(fv::scene_figure({0.5, fv::kPi / 2, 3.02, 0})));
         return v;
@@ -117,12 +115,10 @@ TEST_CASE("table_suffixes names every table compute_figure makes, for every regi
     // be known from the definition alone.
     std::size_t k = 0;
     for (const fv::FigureEntry& e : fv::figure_registry()) {
-        fv::FigureInputs in = e.example;
-        if (!in.data.empty() && in.data.front() != '/') in.data = std::string(FV_SOURCE_DIR) + "/" + in.data;
         std::vector<std::string> computed;
         for (const fv::TableData& t : figures().at(k++).tables) computed.push_back(t.suffix);
         CAPTURE(e.id);
-        CHECK(fv::table_suffixes(e.make(in)) == computed);
+        CHECK(fv::table_suffixes(e.make(fv::test::example_inputs(e))) == computed);
     }
 }
 

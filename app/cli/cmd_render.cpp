@@ -1,6 +1,8 @@
 // frictionviz render: the registered figures (fv/figure_registry.hpp) as PNG + CSV + caption JSON, headless.
 #include "commands.hpp"
 #include "errors.hpp"
+#include "figure_flags.hpp"
+#include "figure_listing.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
 #include "render_output.hpp"
@@ -31,25 +33,6 @@
 
 namespace fv::cli {
 namespace {
-
-// `render --list markdown`: the README's figure table, one row per registered figure linking its picture in
-// screenshots/ (the CTest readme_figure_table holds the README to it). Cells on one line, '|' escaped.
-std::string figure_table_markdown() {
-    auto cell = [](const std::string& text) {
-        std::string out;
-        for (char c : text) {
-            if (c == '|') out += '\\';
-            out += c == '\n' ? ' ' : c;
-        }
-        return out;
-    };
-    std::string s = "| figure | what it shows |\n| --- | --- |\n";
-    for (const FigureEntry& e : figure_registry()) {
-        const std::string text = !e.summary.empty() ? e.summary : e.make(e.example).caption;
-        s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + cell(text) + " |\n";
-    }
-    return s;
-}
 
 // PNG encodings run in parallel as long as their frames fit in this budget: each holds about two frames (the
 // pixels and stb's filtered copy of them). At least one runs, at most one per core: 2 at 1280x800 (3.9 MiB
@@ -114,52 +97,24 @@ std::string figure_names() {
     return "all, " + figure_ids();
 }
 
-std::string flag_text(const FigureFlag& f) {
-    return f.alt.empty() ? f.name : f.name + " or " + f.alt;
-}
-
-// "--zeta or --vb, --theta, ...; optional --amplitude" of the flags a figure takes.
-std::string flags_text(const FigureEntry& e) {
-    std::string need, take;
-    for (const FigureFlag& f : e.flags) {
-        std::string& to = f.required ? need : take;
-        to += (to.empty() ? "" : ", ") + flag_text(f);
-    }
-    return need.empty() ? "takes " + take : "needs " + need + (take.empty() ? "" : "; optional " + take);
-}
-
-// The first required flag of `e` that is not given on `cmd` (none given without it), empty if none.
-std::string missing_flag(const FigureEntry& e, const CLI::App* cmd) {
-    auto given = [&](const std::string& name) {
-        const CLI::Option* o = name.empty() || !cmd ? nullptr : cmd->get_option_no_throw(name);
-        return o && o->count() > 0;
-    };
-    for (const FigureFlag& f : e.flags)
-        if (f.required && !given(f.name) && !given(f.alt)) return flag_text(f);
-    return {};
+// The flag of the first required parameter of `e` that `in` does not give, empty if none.
+std::string missing_flag(const FigureEntry& e, const FigureInputs& in) {
+    const std::optional<FigureParam> p = missing_param(e, in);
+    return p ? param_flag_text(*p) : "";
 }
 
 // --figure's help: the ids, and which flags the figures that take flags need.
 std::string figure_help() {
     std::string s = "figure ids, comma separated: " + figure_names() + " (titles: --list). all: every figure";
     for (const FigureEntry& e : figure_registry()) {
-        if (e.flags.empty()) continue;
+        if (e.params.empty()) continue;
         s += "; " + e.id + " (" + flags_text(e);
-        if (e.all_needs_flags)
+        if (missing_param(e, e.example))
             s += "; in all only with them";
-        else if (!missing_flag(e, nullptr).empty())
+        else if (missing_param(e, {}))
             s += "; in all " + plain_text(e.make(e.example).title) + " where not given";
         s += ")";
     }
-    return s;
-}
-
-// "scene, map": the figures that take `flag`, for the flag's help.
-std::string takers(const std::string& flag) {
-    std::string s;
-    for (const FigureEntry& e : figure_registry())
-        for (const FigureFlag& f : e.flags)
-            if (f.name == flag || f.alt == flag) s += (s.empty() ? "" : ", ") + e.id;
     return s;
 }
 
@@ -227,27 +182,32 @@ Command add_render_command(CLI::App& root) {
         ->expected(0, 1)
         ->check(CLI::IsMember({"tsv", "markdown"}));
     cmd->add_option("--data", a->data,
-                    takers("--data") +
+                    figures_taking(FigureParam::data) +
                         ": CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)")
         ->check(file_name());
     add_vibration_options(*cmd, a->model.units,
-                          takers("--amplitude") + ": for --vb, --zss (and fig19: a vb column, z_ss)");
+                          figures_taking(FigureParam::amplitude) +
+                              ": for --vb, --zss (and fig19: a vb column, z_ss)");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
     // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
-    a->model.zeta_opt = cmd->add_option("--zeta", a->model.zeta, takers("--zeta") + ": velocity ratio")
-                            ->transform(number_in(kZetaRange));
+    a->model.zeta_opt =
+        cmd->add_option("--zeta", a->model.zeta, figures_taking(FigureParam::zeta) + ": velocity ratio")
+            ->transform(number_in(kZetaRange));
     cmd->add_option("--theta", a->model.theta_deg,
-                    takers("--theta") + ": vibration angle in degrees (fig19: of points without theta_deg)")
+                    figures_taking(FigureParam::theta) +
+                        ": vibration angle in degrees (fig19: of points without theta_deg)")
         ->transform(number_in(kThetaRange));
-    a->model.rdisp_opt = cmd->add_option("--rdisp", a->model.rdisp,
-                                         takers("--rdisp") + ": displacement ratio (map: default 2)")
-                             ->transform(number_in(kRdispRange));
-    a->model.i_opt = cmd->add_option("--i", a->model.i, takers("--i") + ": Dahl exponent (map: default 1)")
+    a->model.rdisp_opt =
+        cmd->add_option("--rdisp", a->model.rdisp,
+                        figures_taking(FigureParam::rdisp) + ": displacement ratio (map: default 2)")
+            ->transform(number_in(kRdispRange));
+    a->model.i_opt = cmd->add_option("--i", a->model.i,
+                                     figures_taking(FigureParam::i) + ": Dahl exponent (map: default 1)")
                          ->transform(number_in(kIRange));
     add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
     add_start_option(*cmd, a->model.solver.start,
-                     takers("--start") +
+                     figures_taking(FigureParam::start) +
                          ": the history where two steady states coexist, rest (the paper's) or sliding "
                          "(vibration switched on while sliding)");
     return {
@@ -280,16 +240,16 @@ Command add_render_command(CLI::App& root) {
             while (std::getline(ids, id, ',')) {
                 if (id == "all") {
                     for (const FigureEntry& e : figure_registry()) {
-                        if (missing_flag(e, cmd).empty())
+                        if (!missing_param(e, in))
                             chosen.emplace_back(&e, in);
-                        else if (!e.all_needs_flags)
+                        else if (!missing_param(e, over(e.example, in)))
                             chosen.emplace_back(&e, over(e.example, in));
                         else
                             std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",
-                                         e.id.c_str(), missing_flag(e, cmd).c_str());
+                                         e.id.c_str(), missing_flag(e, in).c_str());
                     }
                 } else if (const FigureEntry* e = find_registered(id)) {
-                    if (const std::string m = missing_flag(*e, cmd); !m.empty())
+                    if (const std::string m = missing_flag(*e, in); !m.empty())
                         throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) + ")");
                     chosen.emplace_back(e, in);
                 } else {
@@ -339,7 +299,8 @@ Command add_render_command(CLI::App& root) {
             job.extras = [&output = a->output](const FigureSpec& spec, FigureData& data) {
                 for (TableData& t : data.tables) apply_test_hook(t);
                 std::optional<FitResult> fit;
-                if (spec.fit) apply_test_hook(fit.emplace(*spec.fit));
+                if (const auto* m = std::get_if<MeasurementsFigure>(&spec.content); m && m->fit)
+                    apply_test_hook(fit.emplace(*m->fit));
                 app::FigureExtras extras;
                 std::vector<std::string> names;
                 for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);

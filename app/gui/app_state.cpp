@@ -91,8 +91,9 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
     std::optional<Model> model = e.model;
     bool reset = e.reset;
     if (e.preset) {
-        if (const FigureSpec* f = find_figure(*e.preset)) {
-            params = f->params;
+        const FigureSpec* f = find_figure(*e.preset);
+        if (const auto* view = f ? std::get_if<PeriodViewFigure>(&f->content) : nullptr) { // presets()
+            params = view->params;
             model = Model::dahl;
             reset = true;
         }

@@ -54,9 +54,11 @@ void UiEdits::merge(const UiEdits& o) {
 
 std::vector<const FigureSpec*> presets() {
     std::vector<const FigureSpec*> v;
-    for (const auto& f : paper_figures())
-        if (f.kind == FigureKind::period_view && (f.panel_i.empty() || f.only_panel >= 0))
+    for (const auto& f : paper_figures()) {
+        const auto* view = std::get_if<PeriodViewFigure>(&f.content);
+        if (view && (view->panel_i.empty() || view->only_panel >= 0))
             v.push_back(&f); // fig14's panels, not fig14 itself (two parameter sets)
+    }
     return v;
 }
 

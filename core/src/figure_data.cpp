@@ -22,8 +22,9 @@ std::string curve_label(const Curve& c, bool vary_theta) {
     return "r_{disp} = " + format_number("%g", c.rdisp);
 }
 
-// r_x(zeta) curves; one table row per point.
-PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int threads) {
+// r_x(zeta) curves, steady states reached from `start`; one table row per point.
+PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<SweepPoint>& rows,
+                      int threads) {
     PanelData panel;
     panel.x_title = titles::kZeta;
     panel.y_title = spec.side_force ? titles::kRy : titles::kRx;
@@ -53,7 +54,7 @@ PanelData ratio_panel(const FigureSpec& spec, std::vector<SweepPoint>& rows, int
             [&](int k) {
                 auto& sp = pts[static_cast<std::size_t>(k)];
                 SteadyOptions o;
-                o.start = spec.start;
+                o.start = start;
                 sp.result = steady_ratio(sp.model, sp.params, o);
             },
             threads);
@@ -330,14 +331,14 @@ std::vector<SeriesData> cell_marks(const std::vector<SweepPoint>& rows) {
     return out;
 }
 
-std::vector<double> map_thetas(const FigureSpec& spec) {
+std::vector<double> map_thetas(const MapFigure& spec) {
     const double dth = spec.theta_max_deg / (spec.theta_count - 1);
     std::vector<double> thetas;
     for (int j = 0; j < spec.theta_count; ++j) thetas.push_back(j * dth * kPi / 180);
     return thetas;
 }
 
-PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
+PanelData map_panel(const MapFigure& spec, std::string& table, int threads,
                     std::vector<SweepPoint>& rows_out) {
     // Row by row along zeta (a cell may start from the cells before it), rows spread over the cores.
     rows_out = map_points(spec);
@@ -356,11 +357,11 @@ PanelData map_panel(const FigureSpec& spec, std::string& table, int threads,
 
 } // namespace
 
-std::vector<SweepPoint> map_points(const FigureSpec& spec) {
-    return sweep_grid(Model::dahl, spec.zetas, map_thetas(spec), {spec.params.rdisp}, {spec.params.i});
+std::vector<SweepPoint> map_points(const MapFigure& spec) {
+    return sweep_grid(Model::dahl, spec.zetas, map_thetas(spec), {spec.rdisp}, {spec.i});
 }
 
-SteadyOptions map_options(const FigureSpec& spec) {
+SteadyOptions map_options(const MapFigure& spec) {
     SteadyOptions opt;
     if (spec.ode_tolerance > 0) opt.ode_tolerance = spec.ode_tolerance;
     opt.record_period = false; // as sweep() computes them
@@ -369,7 +370,7 @@ SteadyOptions map_options(const FigureSpec& spec) {
     return opt;
 }
 
-SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& points, std::size_t k) {
+SteadyResult map_cell(const MapFigure& spec, const std::vector<SweepPoint>& points, std::size_t k) {
     const std::size_t pos = k % spec.zetas.size(); // place in its theta row
     const SteadyResult* prev1 = pos >= 1 ? &points[k - 1].result : nullptr;
     const SteadyResult* prev2 = pos >= 2 ? &points[k - 2].result : nullptr;
@@ -379,7 +380,7 @@ SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& poi
     return ode_map_cell(points[k].params, prev1, prev2, o);
 }
 
-PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows, std::string* best_table,
+PanelData map_panel_of(const MapFigure& spec, const std::vector<SweepPoint>& rows, std::string* best_table,
                        int threads) {
     const std::vector<double>& zetas = spec.zetas;
     const int nth = spec.theta_count;
@@ -447,7 +448,7 @@ namespace {
 
 // Fig. 14: one top view per exponent on shared axes (the frame of all panels), titled (a), (b), ...; one
 // trace table each ("", "-b", ...). only_panel keeps one of them, on the same axes.
-void period_panels(const FigureSpec& spec, FigureData& fig) {
+void period_panels(const PeriodViewFigure& spec, FigureData& fig) {
     std::vector<PanelData> panels;
     std::vector<TableData> tables;
     for (std::size_t k = 0; k < spec.panel_i.size(); ++k) {
@@ -477,113 +478,126 @@ void period_panels(const FigureSpec& spec, FigureData& fig) {
     fig.tables = std::move(tables);
 }
 
+// The panels and tables of each kind of figure.
+void compute_content(const RatioCurvesFigure& spec, FigureData& fig, int threads) {
+    TableData t;
+    fig.panels.push_back(ratio_panel(spec, Start::rest, t.ratios, threads));
+    fig.tables.push_back(std::move(t));
+}
+
+void compute_content(const MechanismFigure& spec, FigureData& fig, int) {
+    mechanism_panels(spec, fig);
+}
+
+void compute_content(const DahlCurvesFigure& spec, FigureData& fig, int) {
+    dahl_curve_panels(spec, fig);
+}
+
+void compute_content(const StepViewFigure& spec, FigureData& fig, int) {
+    TableData t;
+    fig.panels.push_back(step_panel(spec.params, spec.steps_per_period, t.trace));
+    fig.tables.push_back(std::move(t));
+}
+
+void compute_content(const PeriodViewFigure& spec, FigureData& fig, int) {
+    if (!spec.panel_i.empty()) {
+        period_panels(spec, fig);
+        return;
+    }
+    const Params& p = spec.params;
+    const SteadyResult r = steady_trace(p, spec.steps_per_period);
+    SteadyStatus status = r.status;
+    if (spec.overlay_other_i) {
+        Params q = p;
+        q.i = p.i == 0 ? 1 : 0;
+        const SteadyResult r2 = steady_trace(q, spec.steps_per_period);
+        fig.panels.push_back(top_view(p, r.period, &r2.period));
+        if (ok(r.status)) status = r2.status;
+    } else {
+        fig.panels.push_back(top_view(p, r.period, nullptr));
+    }
+    fig.tables.push_back({"", {}, r.period, "", status});
+}
+
+void compute_content(const PeriodForceFigure& spec, FigureData& fig, int) {
+    const SteadyResult r = steady_trace(spec.params, spec.steps_per_period);
+    fig.panels.push_back(force_panel(r.period));
+    fig.tables.push_back({"", {}, r.period, "", r.status});
+}
+
+void compute_content(const MapFigure& spec, FigureData& fig, int threads) {
+    TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
+    std::vector<SweepPoint> rows;
+    fig.panels.push_back(map_panel(spec, best.text, threads, rows));
+    // The grid itself as ratio rows (model,i,theta_deg,rdisp,zeta,r_x,...,status), like a sweep.
+    grid.ratios = std::move(rows);
+    fig.tables.push_back(std::move(grid));
+    fig.tables.push_back(std::move(best));
+}
+
+void compute_content(const SceneFigure& spec, FigureData& fig, int threads) {
+    const Params& p = spec.params;
+    const SteadyResult r = steady_trace(p, 0, spec.start, true);
+    PanelData view = top_view(p, r.period, nullptr);
+    view.title = "top view";
+    PanelData force = force_panel(r.period);
+    force.title = "friction force over one period";
+    TableData ratios{"-ratio", {}, {}, ""};
+    PanelData curve = ratio_panel(spec.ratio, spec.start, ratios.ratios, threads);
+    curve.title =
+        "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry) + state_note(r);
+    curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
+    for (const SteadyState& st : other_reached_states(r)) // named in the title
+        curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
+    fig.panels = {std::move(view), std::move(force), std::move(curve)};
+    fig.tables.push_back({"", {}, r.period, "", r.status});
+    fig.tables.push_back(std::move(ratios));
+}
+
+void compute_content(const MeasurementsFigure&, FigureData&, int) {} // computed when the spec was made
+
+// The suffixes of the tables compute_content gives for each kind.
+std::vector<std::string> suffixes(const MeasurementsFigure& spec) {
+    std::vector<std::string> out;
+    if (spec.precomputed)
+        for (const TableData& t : spec.precomputed->tables) out.push_back(t.suffix);
+    return out;
+}
+
+std::vector<std::string> suffixes(const PeriodViewFigure& spec) {
+    if (spec.panel_i.empty() || spec.only_panel >= 0) return {""};
+    std::vector<std::string> out; // as period_panels names them
+    for (std::size_t k = 0; k < spec.panel_i.size(); ++k)
+        out.push_back(k == 0 ? "" : "-" + std::string(1, static_cast<char>('a' + k)));
+    return out;
+}
+
+std::vector<std::string> suffixes(const MapFigure&) {
+    return {"", "-best-angle"};
+}
+
+std::vector<std::string> suffixes(const SceneFigure&) {
+    return {"", "-ratio"};
+}
+
+template <class Content> std::vector<std::string> suffixes(const Content&) {
+    return {""};
+}
+
 } // namespace
 
 FigureData compute_figure(const FigureSpec& spec, int threads) {
-    if (spec.kind == FigureKind::measurements)
-        return spec.precomputed ? *spec.precomputed : FigureData{spec.id, spec.title, {}, {}};
+    if (const auto* m = std::get_if<MeasurementsFigure>(&spec.content))
+        return m->precomputed ? *m->precomputed : FigureData{spec.id, spec.title, {}, {}};
     FigureData fig;
     fig.id = spec.id;
     fig.title = spec.title;
-    const Params& p = spec.params;
-    switch (spec.kind) {
-    case FigureKind::ratio_curves: {
-        TableData t;
-        fig.panels.push_back(ratio_panel(spec, t.ratios, threads));
-        fig.tables.push_back(std::move(t));
-        break;
-    }
-    case FigureKind::step_view: {
-        TableData t;
-        fig.panels.push_back(step_panel(p, spec.steps_per_period, t.trace));
-        fig.tables.push_back(std::move(t));
-        break;
-    }
-    case FigureKind::period_view:
-    case FigureKind::period_force: {
-        if (spec.kind == FigureKind::period_view && !spec.panel_i.empty()) {
-            period_panels(spec, fig);
-            break;
-        }
-        const SteadyResult r = steady_trace(p, spec.steps_per_period);
-        SteadyStatus status = r.status;
-        if (spec.kind == FigureKind::period_force) {
-            fig.panels.push_back(force_panel(r.period));
-        } else if (spec.overlay_other_i) {
-            Params q = p;
-            q.i = p.i == 0 ? 1 : 0;
-            const SteadyResult r2 = steady_trace(q, spec.steps_per_period);
-            fig.panels.push_back(top_view(p, r.period, &r2.period));
-            if (ok(r.status)) status = r2.status;
-        } else {
-            fig.panels.push_back(top_view(p, r.period, nullptr));
-        }
-        fig.tables.push_back({"", {}, r.period, "", status});
-        break;
-    }
-    case FigureKind::map: {
-        TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
-        std::vector<SweepPoint> rows;
-        fig.panels.push_back(map_panel(spec, best.text, threads, rows));
-        // The grid itself as ratio rows (model,i,theta_deg,rdisp,zeta,r_x,...,status), like a sweep.
-        grid.ratios = std::move(rows);
-        fig.tables.push_back(std::move(grid));
-        fig.tables.push_back(std::move(best));
-        break;
-    }
-    case FigureKind::scene: {
-        const SteadyResult r = steady_trace(p, spec.steps_per_period, spec.start, true);
-        PanelData view = top_view(p, r.period, nullptr);
-        view.title = "top view";
-        PanelData force = force_panel(r.period);
-        force.title = "friction force over one period";
-        TableData ratios{"-ratio", {}, {}, ""};
-        PanelData curve = ratio_panel(spec, ratios.ratios, threads);
-        curve.title = "r_{x} = " + format_number("%.4f", r.rx) + ", r_{y} = " + format_number("%.4f", r.ry) +
-                      state_note(r);
-        curve.points.push_back({Vec2(p.zeta, r.rx), Ink::black, Mark::diamond, "", 11});
-        for (const SteadyState& st : other_reached_states(r)) // named in the title
-            curve.points.push_back({Vec2(p.zeta, st.rx), Ink::tip, Mark::diamond, "", 9});
-        fig.panels = {std::move(view), std::move(force), std::move(curve)};
-        fig.tables.push_back({"", {}, r.period, "", r.status});
-        fig.tables.push_back(std::move(ratios));
-        break;
-    }
-    case FigureKind::mechanism:
-        mechanism_panels(spec, fig);
-        break;
-    case FigureKind::dahl_curves:
-        dahl_curve_panels(spec, fig);
-        break;
-    case FigureKind::measurements:
-        break; // above
-    }
+    std::visit([&](const auto& content) { compute_content(content, fig, threads); }, spec.content);
     return fig;
 }
 
 std::vector<std::string> table_suffixes(const FigureSpec& spec) {
-    switch (spec.kind) {
-    case FigureKind::measurements: {
-        std::vector<std::string> out;
-        if (spec.precomputed)
-            for (const TableData& t : spec.precomputed->tables) out.push_back(t.suffix);
-        return out;
-    }
-    case FigureKind::period_view:
-        if (!spec.panel_i.empty() && spec.only_panel < 0) { // as period_panels names them
-            std::vector<std::string> out;
-            for (std::size_t k = 0; k < spec.panel_i.size(); ++k)
-                out.push_back(k == 0 ? "" : "-" + std::string(1, static_cast<char>('a' + k)));
-            return out;
-        }
-        return {""};
-    case FigureKind::map:
-        return {"", "-best-angle"};
-    case FigureKind::scene:
-        return {"", "-ratio"};
-    default:
-        return {""};
-    }
+    return std::visit([](const auto& content) { return suffixes(content); }, spec.content);
 }
 
 } // namespace fv

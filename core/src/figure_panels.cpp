@@ -35,10 +35,10 @@ const char* const kPhase[] = {"τ = 0", "π/4", "π/2", "3π/4", "π"};
 
 } // namespace
 
-void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
-    const Params p{spec.params.zeta, spec.params.theta, 1, 1}; // r_disp, i: not used by the rigid model
-    const Ratio r = rigid_ratio(p.zeta, p.theta);              // Eq. (9) and its y-twin
-    const Vec2 e(std::cos(p.theta), std::sin(p.theta));        // the vibration's direction
+void mechanism_panels(const MechanismFigure& spec, FigureData& fig) {
+    const Params p{spec.zeta, spec.theta, 1, 1};        // r_disp, i: not used by the rigid model
+    const Ratio r = rigid_ratio(p.zeta, p.theta);       // Eq. (9) and its y-twin
+    const Vec2 e(std::cos(p.theta), std::sin(p.theta)); // the vibration's direction
 
     PanelData plane;
     plane.title = "velocity v/v_{v} and friction F/F_{c} at τ = kπ/4";
@@ -124,7 +124,7 @@ void mechanism_panels(const FigureSpec& spec, FigureData& fig) {
     fig.tables.push_back(std::move(t));
 }
 
-void dahl_curve_panels(const FigureSpec& spec, FigureData& fig) {
+void dahl_curve_panels(const DahlCurvesFigure& spec, FigureData& fig) {
     PanelData load, cycle;
     load.title = "(a) loading from rest, v > 0";
     cycle.title = "(b) cycle 0 → +3 → −3 → +3 z_{ss}";

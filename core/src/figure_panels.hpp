@@ -7,17 +7,17 @@
 
 namespace fv {
 
-// Fig. 4: the rigid model over one period at spec.params.zeta, .theta (Eqs. 1-4, 9): (left) the velocity
+// Fig. 4: the rigid model over one period at spec.zeta, spec.theta (Eqs. 1-4, 9): (left) the velocity
 // v(tau)/v_v and the friction F(tau)/F_c = -v/|v| at tau = k pi/4, with their loci and the mean friction;
 // (right) the friction against v_b, -F_x/F_c (Eq. 3), over the period with its mean r_x (Eq. 9).
 // Table: tau, v_x, v_y, F_x, F_y at 1024 instants.
-void mechanism_panels(const FigureSpec& spec, FigureData& fig);
+void mechanism_panels(const MechanismFigure& spec, FigureData& fig);
 
 // Fig. 6: F/F_c against x/z_ss for each exponent of spec.exponents, from the model's update (Eqs. 17-27,
 // dahl_update) stepped along x in steps of kDahlCurveStep z_ss: (a) loading from rest, v > 0 (the paper's
 // Fig. 6); (b) the cycle 0 -> +3 -> -3 -> +3 z_ss (unloading, reversal, reloading).
 // Table: i, leg (1: 0 -> 3, 2: 3 -> -3, 3: -3 -> 3), x/z_ss, F/F_c.
-void dahl_curve_panels(const FigureSpec& spec, FigureData& fig);
+void dahl_curve_panels(const DahlCurvesFigure& spec, FigureData& fig);
 
 inline constexpr double kDahlCurveStep = 1e-4; // in units of z_ss
 inline constexpr double kDahlCurveTurn = 3;    // turning points of the cycle, +-3 z_ss

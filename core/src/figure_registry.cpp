@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <tuple>
+#include <variant>
 
 namespace fv {
 namespace {
@@ -108,7 +109,7 @@ std::string zeta_sampling(const std::vector<double>& z, std::size_t budget = 0) 
     return "ζ at " + n + (even ? " evenly spaced" : "") + " points from " + range;
 }
 
-std::string ratio_models(const FigureSpec& spec) {
+std::string ratio_models(const RatioCurvesFigure& spec) {
     const std::string dahl_theta =
         distinct(spec.curves, Model::dahl, [](const Curve& c) { return degrees(c.theta); });
     const std::string rigid_theta =
@@ -125,7 +126,7 @@ std::string ratio_models(const FigureSpec& spec) {
 }
 
 // How the r_x of the curves were computed.
-std::string ratio_solvers(const FigureSpec& spec) {
+std::string ratio_solvers(const RatioCurvesFigure& spec) {
     bool dahl = false, rigid = false;
     for (const Curve& c : spec.curves) (c.model == Model::rigid ? rigid : dahl) = true;
     const std::string r = spec.side_force ? "r_y" : "r_x";
@@ -136,6 +137,81 @@ std::string ratio_solvers(const FigureSpec& spec) {
              (spec.side_force ? "adaptive Gauss–Kronrod quadrature of the mean of Eq. (4), tolerance 1e-13"
                               : kQuadrature);
     return s;
+}
+
+// The sentence naming the parameters of each kind of figure (figure_parameters), without "Parameters: ".
+std::string parameters_of(const RatioCurvesFigure& c) {
+    return ratio_models(c) + "; " + zeta_sampling(c.zetas, c.zeta_budget) + "; " + ratio_solvers(c);
+}
+
+std::string parameters_of(const MechanismFigure& c) {
+    return "rigid model (no asperity: r_disp → ∞, i does not apply), ζ = " + number(c.zeta) +
+           ", θ = " + degrees(c.theta) +
+           "; velocity and friction from Eqs. (1)–(4) at 1024 evenly spaced instants of one period, arrows "
+           "at "
+           "τ = kπ/4; r_x (and r_y) by " +
+           kQuadrature;
+}
+
+std::string parameters_of(const DahlCurvesFigure& c) {
+    std::string is;
+    for (double i : c.exponents) is += (is.empty() ? "" : ", ") + number(i);
+    return "Dahl model's law alone, Eq. (12), i = " + is +
+           ", in one dimension (ζ, θ and r_disp do not apply: lengths in units of z_ss, forces in F_c); "
+           "each curve is the model's update (Eqs. 17–27) stepped along x in steps of 1e-4 z_ss, drawn "
+           "every 0.01 z_ss; no solver tolerance: the first-order steps stay within 2e-4 F_c of the law's "
+           "closed form (docs/model.md, tested)";
+}
+
+std::string parameters_of(const StepViewFigure& c) {
+    return "Dahl model, " + params_text(c.params) + "; " + paper_scheme(c.steps_per_period) +
+           "; the step drawn is the one of that period where the spring turns most";
+}
+
+// One steady period of the Dahl model at p (and at the other i, overlaid).
+std::string period_text(const Params& p, int steps_per_period, bool overlay_other_i = false) {
+    return "Dahl model, " + params_text(p) +
+           (overlay_other_i ? " (and i = " + number(p.i == 0 ? 1 : 0) + ", overlaid)" : "") + "; " +
+           period_source(steps_per_period);
+}
+
+std::string parameters_of(const PeriodViewFigure& c) {
+    if (c.panel_i.empty() || c.only_panel >= 0)
+        return period_text(c.params, c.steps_per_period, c.overlay_other_i);
+    std::string is, tags;
+    for (std::size_t k = 0; k < c.panel_i.size(); ++k) {
+        is += (k ? ", " : "") + number(c.panel_i[k]);
+        tags += (k ? ", " : "") + std::string(1, static_cast<char>('a' + k));
+    }
+    const Params& p = c.params;
+    return "Dahl model, ζ = " + number(p.zeta) + ", θ = " + degrees(p.theta) +
+           ", r_disp = " + number(p.rdisp) + ", i = " + is + " (panels " + tags + ", on shared axes); " +
+           period_source(c.steps_per_period);
+}
+
+std::string parameters_of(const PeriodForceFigure& c) {
+    return period_text(c.params, c.steps_per_period);
+}
+
+std::string parameters_of(const SceneFigure& c) {
+    return "Dahl model, " + params_text(c.params) + ", steady states reached " + start_text(c.start) +
+           "; top view and force over " + period_source(0) +
+           "; r_x(ζ) of the Dahl model and the rigid model, " +
+           zeta_sampling(c.ratio.zetas, c.ratio.zeta_budget) + ", rigid r_x by " + kQuadrature;
+}
+
+std::string parameters_of(const MapFigure& c) {
+    return "Dahl model, r_disp = " + number(c.rdisp) + ", i = " + number(c.i) + ", steady states reached " +
+           start_text(c.start) + ", each cell also started from the other history; r_x from " +
+           ode_solver(c.ode_tolerance) + " on a grid of " + zeta_sampling(c.zetas) + " × θ at " +
+           std::to_string(c.theta_count) + " evenly spaced angles from 0° to " + number(c.theta_max_deg) +
+           "°; θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours, for the rigid "
+           "model by " +
+           kQuadrature;
+}
+
+std::string parameters_of(const MeasurementsFigure& c) {
+    return c.parameters;
 }
 
 } // namespace
@@ -172,17 +248,39 @@ std::string figure_ids() {
     return s;
 }
 
-std::string figure_list_tsv() {
-    std::string s;
-    for (const FigureEntry& e : figure_registry()) s += e.id + "\t" + e.title + "\n";
-    return s;
+bool given(const FigureInputs& in, FigureParam p) {
+    switch (p) {
+    case FigureParam::zeta:
+        return in.zeta.has_value();
+    case FigureParam::theta:
+        return in.theta_deg.has_value();
+    case FigureParam::rdisp:
+        return in.rdisp.has_value();
+    case FigureParam::i:
+        return in.i.has_value();
+    case FigureParam::data:
+        return !in.data.empty();
+    case FigureParam::amplitude:
+        return in.amplitude_um.has_value();
+    case FigureParam::frequency:
+        return in.frequency_khz.has_value();
+    case FigureParam::start:
+        return in.start.has_value();
+    }
+    return false;
+}
+
+std::optional<FigureParam> missing_param(const FigureEntry& e, const FigureInputs& in) {
+    for (const FigureParamUse& u : e.params)
+        if (u.required && !given(in, u.param)) return u.param;
+    return std::nullopt;
 }
 
 const std::vector<FigureSpec>& paper_figures() {
     static const std::vector<FigureSpec> figs = [] {
         std::vector<FigureSpec> v;
         for (const FigureEntry& e : figure_registry())
-            if (e.flags.empty()) v.push_back(e.make(e.example));
+            if (e.params.empty()) v.push_back(e.make(e.example));
         return v;
     }();
     return figs;
@@ -195,74 +293,8 @@ const FigureSpec* find_figure(const std::string& id) {
 }
 
 std::string figure_parameters(const FigureSpec& spec) {
-    const Params& p = spec.params;
-    std::string s;
-    switch (spec.kind) {
-    case FigureKind::ratio_curves:
-        s = ratio_models(spec) + "; " + zeta_sampling(spec.zetas, spec.zeta_budget) + "; " +
-            ratio_solvers(spec);
-        break;
-    case FigureKind::step_view:
-        s = "Dahl model, " + params_text(p) + "; " + paper_scheme(spec.steps_per_period) +
-            "; the step drawn is the one of that period where the spring turns most";
-        break;
-    case FigureKind::period_view:
-        if (!spec.panel_i.empty() && spec.only_panel < 0) {
-            std::string is, tags;
-            for (std::size_t k = 0; k < spec.panel_i.size(); ++k) {
-                is += (k ? ", " : "") + number(spec.panel_i[k]);
-                tags += (k ? ", " : "") + std::string(1, static_cast<char>('a' + k));
-            }
-            s = "Dahl model, ζ = " + number(p.zeta) + ", θ = " + degrees(p.theta) +
-                ", r_disp = " + number(p.rdisp) + ", i = " + is + " (panels " + tags + ", on shared axes); " +
-                period_source(spec.steps_per_period);
-            break;
-        }
-        [[fallthrough]];
-    case FigureKind::period_force:
-        s = "Dahl model, " + params_text(p) +
-            (spec.overlay_other_i ? " (and i = " + number(p.i == 0 ? 1 : 0) + ", overlaid)" : "") + "; " +
-            period_source(spec.steps_per_period);
-        break;
-    case FigureKind::scene:
-        s = "Dahl model, " + params_text(p) + ", steady states reached " + start_text(spec.start) +
-            "; top view and force over " + period_source(spec.steps_per_period) +
-            "; r_x(ζ) of the Dahl model and the rigid model, " + zeta_sampling(spec.zetas, spec.zeta_budget) +
-            ", rigid r_x by " + kQuadrature;
-        break;
-    case FigureKind::map:
-        s = "Dahl model, r_disp = " + number(p.rdisp) + ", i = " + number(p.i) + ", steady states reached " +
-            start_text(spec.start) + ", each cell also started from the other history; r_x from " +
-            ode_solver(spec.ode_tolerance) + " on a grid of " + zeta_sampling(spec.zetas) + " × θ at " +
-            std::to_string(spec.theta_count) + " evenly spaced angles from 0° to " +
-            number(spec.theta_max_deg) +
-            "°; θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours, for the rigid "
-            "model by " +
-            kQuadrature;
-        break;
-    case FigureKind::mechanism:
-        s = "rigid model (no asperity: r_disp → ∞, i does not apply), ζ = " + number(p.zeta) +
-            ", θ = " + degrees(p.theta) +
-            "; velocity and friction from Eqs. (1)–(4) at 1024 evenly spaced instants of one period, arrows "
-            "at "
-            "τ = kπ/4; r_x (and r_y) by " +
-            kQuadrature;
-        break;
-    case FigureKind::dahl_curves: {
-        std::string is;
-        for (double i : spec.exponents) is += (is.empty() ? "" : ", ") + number(i);
-        s = "Dahl model's law alone, Eq. (12), i = " + is +
-            ", in one dimension (ζ, θ and r_disp do not apply: lengths in units of z_ss, forces in F_c); "
-            "each curve is the model's update (Eqs. 17–27) stepped along x in steps of 1e-4 z_ss, drawn "
-            "every 0.01 z_ss; no solver tolerance: the first-order steps stay within 2e-4 F_c of the law's "
-            "closed form (docs/model.md, tested)";
-        break;
-    }
-    case FigureKind::measurements:
-        s = spec.parameters;
-        break;
-    }
-    return "Parameters: " + s + ".";
+    return "Parameters: " +
+           std::visit([](const auto& content) { return parameters_of(content); }, spec.content) + ".";
 }
 
 std::string plain_text(const std::string& markup) {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <type_traits>
 
 namespace fv {
 
@@ -42,16 +43,24 @@ std::string start_title(Start start) {
 }
 } // namespace
 
+// A spec's kind is the index of its content.
+static_assert(std::variant_size_v<FigureContent> == static_cast<std::size_t>(FigureKind::measurements) + 1);
+static_assert(
+    std::is_same_v<std::variant_alternative_t<static_cast<std::size_t>(FigureKind::map), FigureContent>,
+                   MapFigure>);
+
 FigureSpec map_figure(double rdisp, double i, Start start) {
+    MapFigure m;
+    m.rdisp = rdisp;
+    m.i = i;
+    m.start = start;
+    m.zetas = linspace(0.02, 3, 200);
+    m.theta_count = 91;
+    m.theta_max_deg = 90;
+    m.ode_tolerance = kMapTolerance;
     FigureSpec f;
     f.id = "map";
-    f.kind = FigureKind::map;
-    f.start = start;
-    f.params = {0, 0, rdisp, i};
-    f.zetas = linspace(0.02, 3, 200);
-    f.theta_count = 91;
-    f.theta_max_deg = 90;
-    f.ode_tolerance = kMapTolerance;
+    f.content = std::move(m);
     f.title = "friction ratio r_{x}(ζ, θ), Dahl model, r_{disp} = " + format_number("%g", rdisp) +
               ", i = " + format_number("%g", i) + start_title(start);
     f.caption =
@@ -66,19 +75,20 @@ FigureSpec map_figure(double rdisp, double i, Start start) {
 }
 
 FigureSpec scene_figure(const Params& p, Start start) {
+    SceneFigure s;
+    s.params = p;
+    s.start = start;
+    s.ratio.zetas = ratio_zeta_start();
+    s.ratio.zeta_budget = kRatioZetaBudget;
+    s.ratio.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};
     FigureSpec f;
     f.id = "scene";
-    f.kind = FigureKind::scene;
-    f.start = start;
-    f.params = p;
+    f.content = std::move(s);
     f.title = params_title(p) + start_title(start);
     f.caption = "One parameter set, " + plain_text(params_title(p)) +
                 ": top view of P and T, the friction force over one steady-state period, and r_x(ζ) with the "
                 "rigid curve and the current point." +
                 std::string(kForceConvention);
-    f.zetas = ratio_zeta_start();
-    f.zeta_budget = kRatioZetaBudget;
-    f.curves = {{Model::dahl, p.theta, p.rdisp, p.i}, {Model::rigid, p.theta, 0, 0}};
     return f;
 }
 

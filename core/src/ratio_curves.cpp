@@ -33,7 +33,7 @@ RatioJob::RatioJob(const RatioRequest& req, bool with_map, const std::optional<P
         if (reuse) {
             out_.map = reuse;
         } else {
-            map_spec_ = map_figure(req.params.rdisp, req.params.i, req.start);
+            map_spec_ = std::get<MapFigure>(map_figure(req.params.rdisp, req.params.i, req.start).content);
             map_options_ = map_options(map_spec_);
             cells_ = map_points(map_spec_);
         }

@@ -142,10 +142,10 @@ std::vector<std::string> table_suffixes(const FigureSpec& spec);
 // theta*(zeta) table when best_table is given). compute_figure on a map spec is these three in one go (rows
 // spread over the cores), so both give the same panel. A cell equals steady_ratio(Model::dahl,
 // point.params, map_options(spec)) within the map's tolerance.
-std::vector<SweepPoint> map_points(const FigureSpec& spec);
-SteadyOptions map_options(const FigureSpec& spec);
-SteadyResult map_cell(const FigureSpec& spec, const std::vector<SweepPoint>& points, std::size_t k);
-PanelData map_panel_of(const FigureSpec& spec, const std::vector<SweepPoint>& rows,
+std::vector<SweepPoint> map_points(const MapFigure& spec);
+SteadyOptions map_options(const MapFigure& spec);
+SteadyResult map_cell(const MapFigure& spec, const std::vector<SweepPoint>& points, std::size_t k);
+PanelData map_panel_of(const MapFigure& spec, const std::vector<SweepPoint>& rows,
                        std::string* best_table = nullptr, int threads = 0);
 
 } // namespace fv

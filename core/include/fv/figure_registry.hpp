@@ -4,11 +4,10 @@
 //   static const RegisterFigure fig10{{"fig10", "friction ratio, i = 1, θ = 90°", FigureKind::ratio_curves,
 //                                      {}, {}, [](const FigureInputs&) { return ...; }}};
 //
-// The command line (render --figure, --list, --help, the unknown-id message), the app's presets, the
-// snapshot tests, scripts/run.sh and the README's figure table all read this registry; adding a figure is
-// one registration. The registry holds what defines a figure (id, title, the flags it takes, a function
-// from those inputs to its FigureSpec); compute_figure (figure_data.hpp) turns a spec into numbers, and the
-// kind selects the painter's layout.
+// The command line (render --figure, --list, --help, the README's table), the app's presets, the snapshot
+// tests and scripts/run.sh read this registry; adding a figure is one registration. The registry holds what
+// defines a figure (id, title, the parameters it takes, a function from them to its FigureSpec); the command
+// line names the parameters' flags. compute_figure (figure_data.hpp) turns a spec into numbers.
 #pragma once
 
 #include "fv/figures.hpp"
@@ -25,32 +24,40 @@ struct FigureInputs {
     std::optional<double> zeta, theta_deg, rdisp, i;
     std::string data; // a measurements file (fig19)
     std::optional<double> amplitude_um, frequency_khz;
-    std::optional<Start> start; // --start (scene, map)
+    std::optional<Start> start; // the history (scene, map)
 };
 
-// A command-line flag a figure takes: "--zeta" (or its alternative "--vb"), required or not.
-struct FigureFlag {
-    std::string name;
-    std::string alt; // empty: none
+// One input of FigureInputs, by what it means (the command line maps each to its flags).
+enum class FigureParam { zeta, theta, rdisp, i, data, amplitude, frequency, start };
+
+// A parameter a figure takes, required or not.
+struct FigureParamUse {
+    FigureParam param;
     bool required = false;
 };
+
+// Whether `in` gives `p`.
+bool given(const FigureInputs& in, FigureParam p);
 
 struct FigureEntry {
     std::string id;    // "fig10"
     std::string title; // one line, plain text: `render --list`
     FigureKind kind = FigureKind::ratio_curves;
-    std::vector<FigureFlag> flags; // empty: a fixed figure (defined by its spec alone)
-    // The inputs of the rendering shown in README.md and screenshots/ and checked by the snapshot tests; a
-    // relative `data` path is relative to the source tree. `render --figure all` uses them for a figure
-    // whose required flags are not given, unless `all_needs_flags` (fig19: only with --data).
+    std::vector<FigureParamUse> params; // empty: a fixed figure (defined by its spec alone)
+    // The inputs of the rendering shown in README.md and screenshots/ and checked by the snapshot tests.
+    // `render --figure all` uses them for a figure whose required parameters are not given; a figure whose
+    // example lacks one of them (fig19: a data file) is rendered there only when it is given.
     FigureInputs example;
-    bool all_needs_flags = false;
-    // The figure's definition for these inputs (flags checked already). May throw DataError or FitError
-    // (a file that cannot be read or fitted).
+    // The figure's definition for these inputs (required parameters checked already). May throw DataError
+    // or FitError (a file that cannot be read or fitted).
     std::function<FigureSpec(const FigureInputs&)> make;
-    // The README's row (markdown, no line breaks); empty: the caption of make(example).
+    // What the figure shows, in plain sentences, where the caption of make(example) does not say it well
+    // enough for a list of figures; empty: that caption.
     std::string summary;
 };
+
+// The first required parameter of `e` that `in` does not give; nullopt if none.
+std::optional<FigureParam> missing_param(const FigureEntry& e, const FigureInputs& in);
 
 // Registers at static initialisation; a second entry with the same id aborts the program.
 struct RegisterFigure {
@@ -65,9 +72,6 @@ const FigureEntry* find_registered(const std::string& id);
 
 // The registered ids, comma separated (for messages).
 std::string figure_ids();
-
-// `render --list`: "ID<TAB>TITLE" per line.
-std::string figure_list_tsv();
 
 // One sentence naming every parameter behind a figure: model(s), ζ, θ, r_disp, i, the solver and its
 // tolerance, the sampling. Goes into the caption of ID.json.

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace fv {
@@ -15,6 +16,7 @@ namespace fv {
 struct FigureData;
 struct FitResult;
 
+// The order of FigureContent's alternatives (a spec's kind is the index of its content).
 enum class FigureKind {
     ratio_curves, // r_x(zeta) (or r_y(zeta): side_force) for a family of models/parameters (Figs. 5, 10-13,
                   // ry)
@@ -38,46 +40,100 @@ struct Curve {
 
 inline constexpr double kMapTolerance = 1e-6;
 
-struct FigureSpec {
-    std::string id;    // "fig10"
-    std::string title; // drawn above the figure (markup: r_{disp}); names the parameters that distinguish it
-    std::string caption; // what it shows, in sentences (ID.json, the README table)
-    FigureKind kind = FigureKind::ratio_curves;
-    // ratio_curves (and scene): the curves and the zeta values they are computed at; with a zeta_budget, the
-    // start grid of each curve's adaptive sampling (adaptive_sampling.hpp), up to zeta_budget samples a curve
+// What defines a figure of each kind, beside its id, title and caption (FigureSpec). The order is that of
+// FigureKind: a spec's kind is the index of its alternative.
+
+// The curves and the zeta values they are computed at; with a zeta_budget, the start grid of each curve's
+// adaptive sampling (adaptive_sampling.hpp), up to zeta_budget samples a curve.
+struct RatioCurvesFigure {
     std::vector<Curve> curves;
     std::vector<double> zetas;
-    bool side_force = false; // plot r_y, the mean force across v_b, instead of r_x
-    // dahl_curves: the exponents i, one curve each
-    std::vector<double> exponents;
     std::size_t zeta_budget = 0;
-    // step_view, period_view, period_force, scene
+    bool side_force = false; // plot r_y, the mean force across v_b, instead of r_x
+};
+
+// The rigid model at one velocity ratio and angle (r_disp and i do not apply).
+struct MechanismFigure {
+    double zeta = 0;
+    double theta = 0; // radians
+};
+
+// One curve per exponent i.
+struct DahlCurvesFigure {
+    std::vector<double> exponents;
+};
+
+// The figures of one steady period of `params` take it from the paper's scheme at steps_per_period steps a
+// period, or at 0 from the continuous-time solver (1024 samples).
+
+// One step of the scheme, top view.
+struct StepViewFigure {
     Params params;
-    int steps_per_period = 0;     // 0: the default resolution; Fig. 8 uses a coarse step to be visible
+    int steps_per_period = 0; // Fig. 8 uses a coarse step to be visible
+};
+
+// P and T over the period, top view.
+struct PeriodViewFigure {
+    Params params;
+    int steps_per_period = 0;
     bool overlay_other_i = false; // Fig. 17: draw i = 0 over i = 1 to show that they coincide
-    // period_view: one panel per exponent, side by side on shared axes (Fig. 14: (a) i = 1, (b) i = 0);
-    // empty: one panel at params.i. only_panel >= 0 draws that panel alone, on the same axes (fig14a,
-    // fig14b).
+    // One panel per exponent, side by side on shared axes (Fig. 14: (a) i = 1, (b) i = 0); empty: one panel
+    // at params.i. only_panel >= 0 draws that panel alone, on the same axes (fig14a, fig14b).
     std::vector<double> panel_i;
     int only_panel = -1;
-    // map: theta from 0 to theta_max_deg in theta_count steps (zetas as above; params.rdisp, params.i)
+};
+
+// The friction force over the period.
+struct PeriodForceFigure {
+    Params params;
+    int steps_per_period = 0;
+};
+
+// Top view and force over one steady period of `params`, and its r_x(zeta) curves. `start`: the history
+// that decides between coexisting steady states (SteadyOptions::start); every other figure but the map is
+// the paper's, from rest.
+struct SceneFigure {
+    Params params;
+    Start start = Start::rest;
+    RatioCurvesFigure ratio;
+};
+
+// r_x over zetas x theta from 0 to theta_max_deg in theta_count steps, for one r_disp and i.
+struct MapFigure {
+    double rdisp = 2;
+    double i = 1;
+    std::vector<double> zetas;
     int theta_count = 91;
     double theta_max_deg = 90;
     // The Dahl solver's target |r - r(dtau -> 0)| (SteadyOptions::ode_tolerance); 0: the default. The map
     // uses kMapTolerance: a colour map needs no more, and it is the 1e-6 (ratio --tolerance 1e-6
     // gives every cell).
     double ode_tolerance = 0;
-    // scene and map: the history that decides between coexisting steady states (SteadyOptions::start); every
-    // other figure is the paper's, from rest
-    Start start = Start::rest;
-    // measurements: the figure, computed (data read and fitted) when the spec was made, the fit behind it,
-    // and the sentence naming its parameters (figure_parameters)
+    Start start = Start::rest; // as in SceneFigure
+};
+
+// The figure, computed (data read and fitted) when the spec was made, the fit behind it, and the sentence
+// naming its parameters (figure_parameters).
+struct MeasurementsFigure {
     std::shared_ptr<const FigureData> precomputed;
     std::shared_ptr<const FitResult> fit;
     std::string parameters;
 };
 
-// The fixed figures of the registry (those that take no flags: the paper's, fig5..fig18), in its order.
+using FigureContent =
+    std::variant<RatioCurvesFigure, MechanismFigure, DahlCurvesFigure, StepViewFigure, PeriodViewFigure,
+                 PeriodForceFigure, SceneFigure, MapFigure, MeasurementsFigure>;
+
+struct FigureSpec {
+    std::string id;    // "fig10"
+    std::string title; // drawn above the figure (markup: r_{disp}); names the parameters that distinguish it
+    std::string caption; // what it shows, in sentences (ID.json, the README table)
+    FigureContent content;
+
+    FigureKind kind() const { return static_cast<FigureKind>(content.index()); }
+};
+
+// The fixed figures of the registry (those that take no parameters: the paper's, fig5..fig18), in its order.
 const std::vector<FigureSpec>& paper_figures();
 
 // A fixed figure; nullptr if unknown.

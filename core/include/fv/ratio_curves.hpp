@@ -73,7 +73,7 @@ class RatioJob {
     RatioCurves out_;
     Stage stage_ = Stage::start;
     std::size_t next_ = 0; // the next point of the curve or cell of the map
-    FigureSpec map_spec_;
+    MapFigure map_spec_;
     SteadyOptions map_options_;
     std::vector<SweepPoint> cells_;
 };

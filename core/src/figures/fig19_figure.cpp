@@ -1,5 +1,6 @@
-// Fig. 19: measured friction ratios against the rigid model and the Dahl model fitted to them, from --data
-// (with --theta, --amplitude, --frequency as `fit` takes them). Registers itself (figure_registry.hpp).
+// Fig. 19: measured friction ratios against the rigid model and the Dahl model fitted to them, from a data
+// file (with the angle of points without one, the vibration's amplitude and frequency, as `fit` takes them).
+// Registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
@@ -9,9 +10,7 @@ namespace fv {
 namespace {
 
 // Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
-// input (DataError, FitError), before anything is rendered.
-// Reads and fits the file when the spec is made: a file that cannot be read or fitted is an error of the
-// input (DataError, FitError), before anything is rendered. The vibration (--amplitude, --frequency; else the
+// input (DataError, FitError), before anything is rendered. The vibration (amplitude, frequency; else the
 // paper's experiment, 0.7 um at 60 kHz) converts a vb column, puts v_b = zeta v_v in m/s on a top axis and
 // z_ss = A/r_disp in um into the caption.
 FigureSpec fig19(const FigureInputs& in) {
@@ -35,7 +34,6 @@ FigureSpec fig19(const FigureInputs& in) {
     }
     FigureSpec f;
     f.id = "fig19";
-    f.kind = FigureKind::measurements;
     f.title = fig->title;
     const FitCandidate& b = fit->best;
     const std::string what =
@@ -48,7 +46,8 @@ FigureSpec fig19(const FigureInputs& in) {
         format_number("%.2g", b.rdisp_sigma) +
         (b.zss_um ? " (z_ss = A/r_disp = " + format_number("%.3g", *b.zss_um) + " µm)" : "") +
         ". The top axis is v_b = ζ v_v with v_v = 2π f A = " + format_number("%.4g", vv) + " m/s.";
-    f.parameters =
+    MeasurementsFigure m;
+    m.parameters =
         "rigid model (Eqs. 9–11, quadrature) and Dahl model with i = 0 and i = 1 at each panel's θ, "
         "r_disp fitted by least squares in ln r_disp over [0.1, 100] (" +
         std::string(b.weighted ? "weights 1/σ²" : "unweighted") +
@@ -59,35 +58,29 @@ FigureSpec fig19(const FigureInputs& in) {
              ? " (where --amplitude or --frequency is not given: the paper's experiment, Littmann "
                "et al., 0.7 µm at 60 kHz)"
              : "");
-    f.precomputed = std::move(fig);
-    f.fit = std::move(fit);
+    m.precomputed = std::move(fig);
+    m.fit = std::move(fit);
+    f.content = std::move(m);
     return f;
 }
 
 FigureEntry fig19_entry() {
     FigureEntry e;
     e.id = "fig19";
-    e.title = "model vs. measured r_x(ζ), r_disp fitted for i = 0 and i = 1 (needs --data)";
+    e.title = "model vs. measured r_x(ζ), r_disp fitted for i = 0 and i = 1";
     e.kind = FigureKind::measurements;
-    e.flags = {
-        {"--data", "", true}, {"--theta", "", false}, {"--amplitude", "", false}, {"--frequency", "", false}};
-    e.example.data = "tests/data/synthetic_two_angles_rdisp2_i0.csv";
+    e.params = {
+        {FigureParam::data, true}, {FigureParam::theta}, {FigureParam::amplitude}, {FigureParam::frequency}};
+    // No example data file (core names no path in the source tree): `render --figure all` draws fig19 only
+    // when a file is given.
     e.example.amplitude_um = 0.7;
-    e.all_needs_flags = true;
     e.make = fig19;
     e.summary =
-        "Model vs. measurements: `render --figure fig19 --data FILE [--theta DEG] [--amplitude UM "
-        "--frequency "
-        "KHZ]` fits one r_disp for i = 0 and one for i = 1 to all points and draws one panel per vibration "
-        "angle "
-        "(up to 4, in the file's order, like the paper's (a) θ = 90°, (b) θ = 0°): the points with ±σ error "
-        "bars "
-        "over the rigid curve and both fitted Dahl curves; `fig19.csv` lists each point with its angle, both "
-        "models and residuals. Shown here for the **synthetic** example "
-        "`tests/data/synthetic_two_angles_rdisp2_i0.csv` (made from the model with r_disp = 2, i = 0 at both "
-        "angles plus noise σ = 0.008), labelled as such on the figure: the fit gives r_disp = 1.97 ± 0.016 "
-        "and picks i = 0. The top axis is v_b in m/s for `--amplitude` and `--frequency` (default: the "
-        "paper's experiment, 0.7 µm at 60 kHz).";
+        "Model vs. measurements: one r_disp fitted for i = 0 and one for i = 1 to all points, one panel per "
+        "vibration angle (up to 4, in the file's order, like the paper's (a) θ = 90°, (b) θ = 0°): the "
+        "points with ±σ error bars over the rigid curve and both fitted Dahl curves; its table lists each "
+        "point with its angle, both models and residuals. The top axis is v_b in m/s for the vibration's "
+        "amplitude and frequency (default: the paper's experiment, 0.7 µm at 60 kHz).";
     return e;
 }
 

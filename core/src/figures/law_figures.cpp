@@ -1,6 +1,6 @@
 // The paper's figures of the two friction laws on their own: the mechanism of friction reduction in the
-// rigid model (Fig. 4: --zeta, --theta, default 0.5 and 90 deg) and the friction-displacement curves of the
-// Dahl law for several i (Fig. 6). Each registers itself (figure_registry.hpp).
+// rigid model (Fig. 4: at any zeta and theta, default 0.5 and 90 deg) and the friction-displacement curves of
+// the Dahl law for several i (Fig. 6). Each registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/format.hpp"
 #include "fv/rigid.hpp"
@@ -13,8 +13,7 @@ constexpr double kDeg = kPi / 180;
 FigureSpec fig4(double zeta, double theta_deg) {
     FigureSpec f;
     f.id = "fig4";
-    f.kind = FigureKind::mechanism;
-    f.params = {zeta, theta_deg * kDeg, 0, 0};
+    f.content = MechanismFigure{zeta, theta_deg * kDeg};
     const std::string z = format_number("%g", zeta), th = format_number("%g", theta_deg);
     const Ratio r = rigid_ratio(zeta, theta_deg * kDeg);
     f.title = "Fig. 4: mechanism of friction reduction, rigid model, ζ = " + z + ", θ = " + th + "°";
@@ -35,12 +34,9 @@ FigureSpec fig4(double zeta, double theta_deg) {
 FigureEntry fig4_entry() {
     FigureEntry e;
     e.id = "fig4";
-    e.title = "mechanism: velocity and Coulomb friction turning over a period, rigid model (--zeta, --theta)";
+    e.title = "mechanism: velocity and Coulomb friction turning over a period, rigid model";
     e.kind = FigureKind::mechanism;
-    e.flags = {{"--zeta", "--vb", false},
-               {"--theta", "", false},
-               {"--amplitude", "", false},
-               {"--frequency", "", false}};
+    e.params = {{FigureParam::zeta}, {FigureParam::theta}};
     e.make = [](const FigureInputs& in) { return fig4(in.zeta.value_or(0.5), in.theta_deg.value_or(90)); };
     return e;
 }
@@ -55,8 +51,7 @@ FigureEntry fig6_entry() {
     e.make = [](const FigureInputs&) {
         FigureSpec f;
         f.id = "fig6";
-        f.kind = FigureKind::dahl_curves;
-        f.exponents = {0, 0.5, 1, 2};
+        f.content = DahlCurvesFigure{{0, 0.5, 1, 2}};
         f.title = "Fig. 6: friction–displacement curves of the Dahl law, Eq. (12), i = 0, 0.5, 1, 2";
         f.caption =
             "The Dahl law, Eq. (12), dF/dx = σ₀ (1 − sgn(v) F/F_c)^i, for i = 0, 0.5, 1, 2 (F/F_c against "

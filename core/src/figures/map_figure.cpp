@@ -1,5 +1,5 @@
-// The (zeta, theta) map of r_x with the best vibration angle (beyond the paper), for --rdisp and --i
-// (default 2 and 1). Registers itself (figure_registry.hpp).
+// The (zeta, theta) map of r_x with the best vibration angle (beyond the paper), for any r_disp and i
+// (default 2 and 1) and start. Registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 
 namespace fv {
@@ -10,15 +10,15 @@ FigureEntry map_entry() {
     e.id = "map";
     e.title = "r_x over (ζ, θ) with the best vibration angle θ*(ζ), beyond the paper";
     e.kind = FigureKind::map;
-    e.flags = {
-        {"--rdisp", "--zss", false}, {"--i", "", false}, {"--amplitude", "", false}, {"--start", "", false}};
+    e.params = {{FigureParam::rdisp}, {FigureParam::i}, {FigureParam::start}};
     e.make = [](const FigureInputs& in) {
         return map_figure(in.rdisp.value_or(2), in.i.value_or(1), in.start.value_or(Start::rest));
     };
     e.summary =
-        "Beyond the paper: r_x over (ζ, θ) for r_disp = 2, i = 1 (`--rdisp`, `--i`; a 200 × 91 grid), "
-        "with the best angle θ*(ζ) (solid: Dahl, dashed: rigid); marks where the motion has a longer period, "
-        "where two stable states coexist (`--start` picks the history) and where none could be vouched for. "
+        "Beyond the paper: r_x over (ζ, θ) for r_disp = 2, i = 1 (a 200 × 91 grid), with the best angle "
+        "θ*(ζ) (solid: Dahl, dashed: rigid); marks where the motion has a longer period, where two stable "
+        "states coexist (the start, from rest or sliding, decides which one is reached) and where none could "
+        "be vouched for. "
         "The paper's conclusion compares only 0° "
         "and 90°; the compliant contact switches from parallel to perpendicular vibration at a lower ζ "
         "(≈ 0.76) than the rigid one (≈ 0.95–1.15), through oblique angles.";

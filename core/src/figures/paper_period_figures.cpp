@@ -8,17 +8,21 @@ namespace {
 
 constexpr double kDeg = kPi / 180;
 
+// What a figure of one steady period of `kind` draws (overlay_other_i: a top view's only).
+FigureContent period_content(FigureKind kind, const Params& p, int steps_per_period, bool overlay_other_i) {
+    if (kind == FigureKind::step_view) return StepViewFigure{p, steps_per_period};
+    if (kind == FigureKind::period_force) return PeriodForceFigure{p, steps_per_period};
+    return PeriodViewFigure{p, steps_per_period, overlay_other_i};
+}
+
 FigureEntry period_figure(const char* id, const std::string& list_title, FigureKind kind, Params p,
                           std::string title, std::string caption, int steps_per_period = 0,
                           bool overlay_other_i = false) {
     FigureSpec f;
     f.id = id;
-    f.kind = kind;
-    f.params = p;
     f.title = std::move(title);
     f.caption = std::move(caption);
-    f.steps_per_period = steps_per_period;
-    f.overlay_other_i = overlay_other_i;
+    f.content = period_content(kind, p, steps_per_period, overlay_other_i);
     FigureEntry e;
     e.id = id;
     e.title = list_title;
@@ -53,8 +57,9 @@ const char* const kFig14What[] = {
 FigureEntry with_panels(FigureEntry e, int only_panel) {
     e.make = [make = e.make, only_panel](const FigureInputs& in) {
         FigureSpec f = make(in);
-        f.panel_i = {1, 0};
-        f.only_panel = only_panel;
+        auto& view = std::get<PeriodViewFigure>(f.content);
+        view.panel_i = {1, 0};
+        view.only_panel = only_panel;
         return f;
     };
     return e;

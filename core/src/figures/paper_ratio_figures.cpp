@@ -12,14 +12,15 @@ constexpr double kDeg = kPi / 180;
 FigureSpec fig5() {
     FigureSpec f;
     f.id = "fig5";
-    f.kind = FigureKind::ratio_curves;
     f.title = "Fig. 5: friction ratio of the rigid model, Eq. (9)";
     f.caption =
         "Rigid model, Eq. (9): r_x(ζ) for θ = 0°, 30°, 45°, 60°, 90°. Below ζ ≈ 0.95 parallel vibration "
         "(θ = 0°) reduces friction most; above ζ = 1 perpendicular vibration does.";
-    f.zetas = linspace(0, 2, 41); // 1 is on it: the corner of theta = 0
-    f.zeta_budget = 400;
-    for (double th : {0.0, 30.0, 45.0, 60.0, 90.0}) f.curves.push_back({Model::rigid, th * kDeg, 0, 0});
+    RatioCurvesFigure c;
+    c.zetas = linspace(0, 2, 41); // 1 is on it: the corner of theta = 0
+    c.zeta_budget = 400;
+    for (double th : {0.0, 30.0, 45.0, 60.0, 90.0}) c.curves.push_back({Model::rigid, th * kDeg, 0, 0});
+    f.content = std::move(c);
     return f;
 }
 
@@ -68,7 +69,6 @@ std::string disagreement(const std::string& id) {
 FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
     FigureSpec f;
     f.id = id;
-    f.kind = FigureKind::ratio_curves;
     const std::string i_text = format_number("%g", i), theta_text = format_number("%g", theta_deg);
     f.title = "Fig. " + id.substr(3) + ": friction ratio, i = " + i_text + ", θ = " + theta_text + "°";
     f.caption = "r_x(ζ) of the Dahl model with i = " + i_text + (i == 0 ? " (stiction)" : "") +
@@ -77,10 +77,12 @@ FigureSpec ratio_family(const std::string& id, double i, double theta_deg) {
                 disagreement(id);
     // At theta = 0 every r_x is 1 from zeta = 1 on (the body never moves backwards): up to 1.5 shows that
     // without giving most of the width to it.
-    f.zetas = ratio_zeta_start(theta_deg == 0 ? 1.5 : 3);
-    f.zeta_budget = kRatioZetaBudget;
-    for (double r : kRdispFamily) f.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
-    f.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});
+    RatioCurvesFigure c;
+    c.zetas = ratio_zeta_start(theta_deg == 0 ? 1.5 : 3);
+    c.zeta_budget = kRatioZetaBudget;
+    for (double r : kRdispFamily) c.curves.push_back({Model::dahl, theta_deg * kDeg, r, i});
+    c.curves.push_back({Model::rigid, theta_deg * kDeg, 0, 0});
+    f.content = std::move(c);
     return f;
 }
 

@@ -1,5 +1,5 @@
 // r_y(zeta), the mean friction across v_b that the model computes and the paper defines (Eq. 31) but never
-// shows: for theta = 30, 45, 60 deg, the Dahl model (--rdisp, --i, default 2 and 1) and the rigid one.
+// shows: for theta = 30, 45, 60 deg, the Dahl model (any r_disp and i, default 2 and 1) and the rigid one.
 // Registers itself (figure_registry.hpp).
 #include "fv/figure_registry.hpp"
 #include "fv/format.hpp"
@@ -10,8 +10,6 @@ namespace {
 FigureSpec ry_figure(double rdisp, double i) {
     FigureSpec f;
     f.id = "ry";
-    f.kind = FigureKind::ratio_curves;
-    f.side_force = true;
     const std::string r = format_number("%g", rdisp), is = format_number("%g", i);
     f.title = "side force r_{y}(ζ), Dahl (r_{disp} = " + r + ", i = " + is + ") and rigid, θ = 30°, 45°, 60°";
     f.caption =
@@ -22,19 +20,22 @@ FigureSpec ry_figure(double rdisp, double i) {
         "mean friction pushes the body towards +y, up to about a quarter of F_c; it vanishes at θ = 0° and "
         "90° and changes sign under θ → 180° − θ (docs/model.md); for large ζ the rigid r_y tends to "
         "−sin 2θ/(4ζ²).";
-    f.zetas = ratio_zeta_start();
-    f.zeta_budget = kRatioZetaBudget;
-    for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::dahl, th * kPi / 180, rdisp, i});
-    for (double th : {30.0, 45.0, 60.0}) f.curves.push_back({Model::rigid, th * kPi / 180, 0, 0});
+    RatioCurvesFigure c;
+    c.side_force = true;
+    c.zetas = ratio_zeta_start();
+    c.zeta_budget = kRatioZetaBudget;
+    for (double th : {30.0, 45.0, 60.0}) c.curves.push_back({Model::dahl, th * kPi / 180, rdisp, i});
+    for (double th : {30.0, 45.0, 60.0}) c.curves.push_back({Model::rigid, th * kPi / 180, 0, 0});
+    f.content = std::move(c);
     return f;
 }
 
 FigureEntry ry_entry() {
     FigureEntry e;
     e.id = "ry";
-    e.title = "side force r_y(ζ) for θ = 30°, 45°, 60°, Dahl (--rdisp, --i) and rigid, beyond the paper";
+    e.title = "side force r_y(ζ) for θ = 30°, 45°, 60°, Dahl and rigid, beyond the paper";
     e.kind = FigureKind::ratio_curves;
-    e.flags = {{"--rdisp", "--zss", false}, {"--i", "", false}, {"--amplitude", "", false}};
+    e.params = {{FigureParam::rdisp}, {FigureParam::i}};
     e.make = [](const FigureInputs& in) { return ry_figure(in.rdisp.value_or(2), in.i.value_or(1)); };
     return e;
 }
