@@ -1,9 +1,9 @@
 #include "fv/live_panels.hpp"
 
+#include "figure_panels.hpp"
 #include "scene_parts.hpp"
 
 #include "fv/axis_titles.hpp"
-#include "fv/figure_registry.hpp"
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
 #include "fv/paper_scheme.hpp"
@@ -393,10 +393,9 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
 const PanelData& MechanismBase::for_params(const Params& p) {
     const Vec2 key{p.zeta, p.theta};
     if (!cached_ || cached_->first != key) {
-        FigureInputs in;
-        in.zeta = p.zeta;
-        in.theta_deg = p.theta * 180 / kPi;
-        PanelData base = compute_figure(find_registered("fig4")->make(in)).panels.at(0);
+        FigureData fig4; // the paper's Fig. 4 at these zeta and theta: its left panel
+        mechanism_panels(MechanismFigure{p.zeta, p.theta}, fig4);
+        PanelData base = std::move(fig4.panels.at(0));
         // Faded: the live arrows are the ones to follow.
         for (ArrowData& a : base.arrows) a.width *= 0.6f, a.label.clear();
         for (SeriesData& x : base.series) x.opacity *= 0.6f;

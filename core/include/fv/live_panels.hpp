@@ -66,7 +66,7 @@ struct LoopData {
 LoopData hysteresis_loop(const LiveSim& sim, double rewind = 0);
 PanelData loop_panel_live(const LiveSim& sim, double rewind = 0);
 
-// The mechanism panel's base: the registered fig4 (the paper's Fig. 4: the rigid model's velocity and
+// The mechanism panel's base: the left panel of fig4 (the paper's Fig. 4: the rigid model's velocity and
 // friction at tau = k pi/4, their loci, the mean friction) for the current zeta and theta, faded. Computing
 // it is a figure's sweep, so it is kept (in AppState) while zeta and theta stay.
 class MechanismBase {
