@@ -37,8 +37,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         check(in(s.speed, fv::app::kSpeedRange), "speed");
         check(in(s.view.zoom, fv::app::kZoomRange) && in(s.view.trail_periods, fv::app::kTrailRange), "view");
         check(std::isfinite(s.view.pan.x()) && std::isfinite(s.view.pan.y()), "pan");
-        check(s.pins.size() <= fv::app::kMaxPins, "pins");
-        for (const fv::app::PinnedCurve& p : s.pins) {
+        check(s.pins.size() <= fv::kMaxPins, "pins");
+        for (const fv::PinnedCurve& p : s.pins) {
             check(fv::text_error(p.label, fv::kMaxLabelBytes).empty(), "label");
             check(p.zeta.size() == p.rx.size(), "pin lengths");
             for (double z : p.zeta) check(in(z, fv::kZetaRange), "pin zeta");
