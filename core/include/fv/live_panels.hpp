@@ -17,6 +17,8 @@
 
 namespace fv {
 
+// How the top view is framed and which moment the panels show (the app's mouse and time slider set it; the
+// animation export sets its own, following the body).
 struct ViewState {
     double zoom = 1;    // > 1 shows less
     Vec2 pan{0, 0};     // data units, added to the followed centre
