@@ -8,10 +8,6 @@
 
 #include "figures/render_session.hpp"
 
-#include "fv/atomic_file.hpp"
-#include "fv/gfx/png.hpp"
-#include "fv/gfx/vector_output.hpp"
-
 #include <imgui.h>
 
 #include <cmath>

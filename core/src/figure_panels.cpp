@@ -25,15 +25,14 @@ void append(SeriesData& s, double x, double y, double jump) {
     s.y.push_back(y);
 }
 
-// Friction on the body over F_c, Eq. (2): opposite to the velocity, magnitude 1 (0 where v = 0).
+const char* const kPhase[] = {"τ = 0", "π/4", "π/2", "3π/4", "π"};
+
+} // namespace
+
 Vec2 coulomb(const Vec2& v) {
     const double n = v.norm();
     return n > 0 ? Vec2(-v / n) : Vec2(Vec2::Zero());
 }
-
-const char* const kPhase[] = {"τ = 0", "π/4", "π/2", "3π/4", "π"};
-
-} // namespace
 
 void mechanism_panels(const MechanismFigure& spec, FigureData& fig) {
     const Params p{spec.zeta, spec.theta, 1, 1};        // r_disp, i: not used by the rigid model

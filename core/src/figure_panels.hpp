@@ -7,6 +7,9 @@
 
 namespace fv {
 
+// Friction on the body over F_c, Eq. (2): opposite to the velocity, magnitude 1 (0 where v = 0).
+Vec2 coulomb(const Vec2& v);
+
 // Fig. 4: the rigid model over one period at spec.zeta, spec.theta (Eqs. 1-4, 9): (left) the velocity
 // v(tau)/v_v and the friction F(tau)/F_c = -v/|v| at tau = k pi/4, with their loci and the mean friction;
 // (right) the friction against v_b, -F_x/F_c (Eq. 3), over the period with its mean r_x (Eq. 9).

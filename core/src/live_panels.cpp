@@ -409,8 +409,7 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
     const SimMoment m = moment_at(sim, rewind);
     const Vec2 v = m.velocity;
     // The friction on the body: against the velocity (rigid), or -F of the asperity (Dahl).
-    const Vec2 f = sim.model() == Model::rigid ? Vec2(v.norm() > 0 ? Vec2(-v / v.norm()) : Vec2(Vec2::Zero()))
-                                               : Vec2(-m.F);
+    const Vec2 f = sim.model() == Model::rigid ? coulomb(v) : Vec2(-m.F);
     panel.title = "mechanism now (τ/2π = " + format_number("%.2f", std::fmod(m.tau / (2 * kPi), 1.0)) +
                   "): v turns, friction follows";
     panel.arrows.push_back({Vec2::Zero(), v, Ink::body, "v", 3.0f});
