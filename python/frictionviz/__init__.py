@@ -34,6 +34,9 @@ __all__ = [
     "FitResult",
     "NumericalFailure",
     "DEFAULT_TOLERANCE",
+    "figures",
+    "render",
+    "Figure",
 ]
 
 #: The ode scheme's default target for |r - r(dtau -> 0)| (the command line's default ``--tolerance``).
@@ -290,3 +293,55 @@ def fit(data, theta_deg: Optional[float] = None, i="auto", amplitude_um: Optiona
     if raise_on_failure and not r.ok:
         raise NumericalFailure(f"frictionviz.fit: {r.status} ({r.detail})", r, [])
     return r
+
+
+# ---------------------------------------------------------------------------------------------------------
+# Figures (the registry of `frictionviz render`), rendered headless: present when the module was built with
+# the figures layer (_core.figures exists).
+
+class Figure:
+    """A rendered figure: ``png`` bytes (and ``svg`` when asked for), shown inline by Jupyter
+    (``_repr_png_`` / ``_repr_svg_``); ``save(path)`` writes the bytes."""
+
+    def __init__(self, id: str, data: bytes, format: str):
+        self.id = id
+        self.format = format
+        self.data = data
+
+    def _repr_png_(self):
+        return self.data if self.format == "png" else None
+
+    def _repr_svg_(self):
+        return self.data.decode("utf-8") if self.format == "svg" else None
+
+    def save(self, path) -> None:
+        with open(os.fspath(path), "wb") as f:
+            f.write(self.data)
+
+    def __repr__(self) -> str:
+        return f"Figure({self.id!r}, {self.format}, {len(self.data)} bytes)"
+
+
+def figures() -> List[tuple]:
+    """The figures `frictionviz render` knows: [(id, title, [parameter keywords])], in the registry's order."""
+    return [(i, t, list(p)) for i, t, p in _core.figures()]
+
+
+def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: float = 1.0, **params):
+    """Renders figure ``id`` headless (OSMesa for PNG, cairo for SVG and PDF), as `frictionviz render` does.
+
+    params  the figure's parameters (figures() lists them): zeta, theta_deg (DEGREES), rdisp, i, data (a
+            path), amplitude_um, frequency_khz, start; none given: the figure's example inputs
+    size    (width, height) in pixels; scale the CLI's --scale
+    out     None: returns a Figure (bytes in .data, inline in Jupyter); a path: writes the bytes there and
+            returns the path
+
+    The PNG bytes equal those of `frictionviz render --figure ID --size WxH` (tests/test_render.py).
+    """
+    w, h = size
+    data = _core.render(id, params, int(w), int(h), float(scale), format)
+    if out is None:
+        return Figure(id, data, format)
+    with open(os.fspath(out), "wb") as f:
+        f.write(data)
+    return out
