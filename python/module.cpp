@@ -3,6 +3,8 @@
 // with the messages of the command line's number reader, computes with the GIL released over core's
 // parallel_for, and hands back plain arrays; python/frictionviz/__init__.py makes the user-facing API of
 // them.
+#include "render.hpp"
+
 #include "fv/fit.hpp"
 #include "fv/measurements.hpp"
 #include "fv/param_ranges.hpp"
@@ -525,5 +527,8 @@ PYBIND11_MODULE(_core, m) {
           py::arg("theta_col").none(true), py::arg("sigma").none(true), py::arg("theta_deg").none(true),
           py::arg("shape"), py::arg("amplitude_um").none(true), py::arg("frequency_khz").none(true),
           py::arg("threads"));
+    m.def("figures", &fvpy::figures);
+    m.def("render", &fvpy::render, py::arg("id"), py::arg("params"), py::arg("width"), py::arg("height"),
+          py::arg("scale"), py::arg("format"));
     m.attr("default_tolerance") = fv::SteadyOptions{}.ode_tolerance;
 }
