@@ -1,6 +1,7 @@
 """ratio and rigid_ratio against the command line (bit for bit) and the rigid model's closed forms."""
 
 import math
+import time
 
 import numpy as np
 import pytest
@@ -155,3 +156,19 @@ def test_start_and_tolerance_as_cli():
         res = fv.ratio(0.3, 60, 5, 1, start=start, tolerance=float(tol))
         assert same_bits(res.r_x, row["r_x"]) and same_bits(res.error_estimate, row["error_estimate"])
         assert res.status == row["status"] and res.periods == row["periods"]
+
+
+def test_gil_released():
+    # While ratio computes on a worker thread, this thread keeps running Python: with the GIL held it would
+    # get no turn until ratio returned (at most one, at the thread switch).
+    import threading
+    done = threading.Event()
+    worker = threading.Thread(target=lambda: (fv.ratio(np.linspace(0.05, 1.5, 200), 90, 2, 1, threads=1),
+                                              done.set()))
+    turns = 0
+    worker.start()
+    while not done.is_set():
+        turns += 1
+        time.sleep(0.001)
+    worker.join()
+    assert turns > 20
