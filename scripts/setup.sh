@@ -26,6 +26,8 @@ CHECK=(
   librsvg2-bin poppler-utils                # tests: rsvg-convert, pdftoppm, pdftotext check SVG and PDF
   xvfb xauth libx11-dev                     # window tests without a display (xvfb-run needs xauth; the
                                             # drag-and-drop test speaks XDND through Xlib)
+  python3-numpy pybind11-dev python3-pybind11 python3-pytest  # the Python module (python/, -DFV_PYTHON) and
+                                            # its tests, for Debian's /usr/bin/python3
 )
 FORMAT=(clang-format)                       # scripts/check-format.sh (clang-format 14, .clang-format)
 WEB=(

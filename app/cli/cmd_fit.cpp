@@ -52,32 +52,6 @@ nlohmann::json json_of(const FitCandidate& c, const MeasurementSet& data) {
     return j;
 }
 
-// Whether the fit's model evaluations are results the solver vouches for: ok; non_finite when a model value
-// or r_disp is not a finite number; not_converged when some evaluation did not reach its steady state
-// (FitCandidate::unsteady). `why` says which, for the report and the stderr line.
-SteadyStatus fit_status(const FitResult& r, std::string& why) {
-    SteadyStatus st = SteadyStatus::converged;
-    why.clear();
-    for (const FitCandidate& c : r.candidates) {
-        bool finite = std::isfinite(c.rdisp);
-        for (double m : c.model) finite = finite && std::isfinite(m);
-        char buf[160];
-        if (!finite) {
-            std::snprintf(buf, sizeof buf, "i = %g: a model value or r_disp is not a finite number", c.i);
-            st = SteadyStatus::non_finite;
-        } else if (c.unsteady > 0) {
-            std::snprintf(buf, sizeof buf,
-                          "i = %g: %d of %d model evaluations did not reach the steady state", c.i,
-                          c.unsteady, c.evaluations);
-            if (st == SteadyStatus::converged) st = SteadyStatus::not_converged;
-        } else {
-            continue;
-        }
-        why += (why.empty() ? "" : "; ") + std::string(buf);
-    }
-    return st;
-}
-
 std::string fmt(const char* f, double a, double b = 0, double c = 0) {
     char buf[256];
     std::snprintf(buf, sizeof buf, f, a, b, c);

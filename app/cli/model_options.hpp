@@ -22,7 +22,6 @@ inline constexpr int kMaxSweepPoints = 100000; // COUNT of a sweep's FROM:TO:COU
 // grow with the grid; the limit bounds the time and the file: 1e7 rows are ~1.3 GB of CSV and, at the
 // domain's median 0.03 ms a point on 2 cores, minutes; at the slow i = 10 bands, hours.
 inline constexpr long long kMaxSweepRows = 10000000;
-inline constexpr Range kToleranceRange{1e-12, 1e-4}; // --tolerance of the ode scheme
 
 // --scheme ode|paper and --steps-per-period N (which means the paper's scheme as printed).
 struct SolverArgs {

@@ -77,8 +77,7 @@ std::string reason_of(const SweepPoint& r) {
 
 // The status as printed: "ok", "period_2", or the failure's word.
 std::string status_text(const SweepPoint& r) {
-    const SteadyStatus st = status_of(r);
-    return st == r.result.status ? status_word(r.result) : to_string(st);
+    return reported_word(r.result);
 }
 
 // Largest |mu| of the reported state's Floquet multipliers, NaN where none were computed (rigid model,
@@ -161,9 +160,7 @@ double zss_of(const SweepPoint& r, const Vibration& v) {
 } // namespace
 
 SteadyStatus status_of(const SweepPoint& r) {
-    if (!ok(r.result.status)) return r.result.status;
-    if (!std::isfinite(r.result.rx) || !std::isfinite(r.result.ry)) return SteadyStatus::non_finite;
-    return r.result.status; // converged or periodic
+    return reported_status(r.result);
 }
 
 Format parse_format(const std::string& s) {

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace fv {
@@ -174,6 +175,29 @@ FitResult fit_rdisp(const MeasurementSet& data, const FitOptions& opt) {
     r.best = *std::min_element(r.candidates.begin(), r.candidates.end(),
                                [](const FitCandidate& a, const FitCandidate& b) { return a.aic < b.aic; });
     return r;
+}
+
+SteadyStatus fit_status(const FitResult& r, std::string& why) {
+    SteadyStatus st = SteadyStatus::converged;
+    why.clear();
+    for (const FitCandidate& c : r.candidates) {
+        bool finite = std::isfinite(c.rdisp);
+        for (double m : c.model) finite = finite && std::isfinite(m);
+        char buf[160];
+        if (!finite) {
+            std::snprintf(buf, sizeof buf, "i = %g: a model value or r_disp is not a finite number", c.i);
+            st = SteadyStatus::non_finite;
+        } else if (c.unsteady > 0) {
+            std::snprintf(buf, sizeof buf,
+                          "i = %g: %d of %d model evaluations did not reach the steady state", c.i,
+                          c.unsteady, c.evaluations);
+            if (st == SteadyStatus::converged) st = SteadyStatus::not_converged;
+        } else {
+            continue;
+        }
+        why += (why.empty() ? "" : "; ") + std::string(buf);
+    }
+    return st;
 }
 
 } // namespace fv

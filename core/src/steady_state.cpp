@@ -37,6 +37,16 @@ std::string status_word(const SteadyResult& r) {
     return to_string(r.status);
 }
 
+SteadyStatus reported_status(const SteadyResult& r) {
+    if (ok(r.status) && (!std::isfinite(r.rx) || !std::isfinite(r.ry))) return SteadyStatus::non_finite;
+    return r.status;
+}
+
+std::string reported_word(const SteadyResult& r) {
+    const SteadyStatus st = reported_status(r);
+    return st == r.status ? status_word(r) : to_string(st);
+}
+
 const char* to_string(Start s) {
     return s == Start::rest ? "rest" : "sliding";
 }

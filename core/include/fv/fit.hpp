@@ -7,9 +7,11 @@
 #pragma once
 
 #include "fv/measurements.hpp"
+#include "fv/steady_state.hpp"
 
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace fv {
@@ -55,5 +57,11 @@ struct FitResult {
 };
 
 FitResult fit_rdisp(const MeasurementSet& data, const FitOptions& opt = {});
+
+// Whether the fit's model evaluations are results the solver vouches for: converged; non_finite when a model
+// value or r_disp is not a finite number; not_converged when some evaluation did not reach its steady state
+// (FitCandidate::unsteady). `why` says which ("i = 0: 3 of 40 model evaluations did not reach the steady
+// state"), for reports and error lines; empty when converged.
+SteadyStatus fit_status(const FitResult& r, std::string& why);
 
 } // namespace fv

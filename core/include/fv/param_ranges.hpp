@@ -18,6 +18,9 @@ struct ParamRange {
 inline constexpr ParamRange kZetaRange{0, 100};
 inline constexpr ParamRange kThetaRange{0, 180}; // degrees; other angles are mirror images
 inline constexpr ParamRange kRdispRange{0, 1e4, true};
+// The ode scheme's target error, the accuracy the status ok promises (--tolerance on the command line,
+// tolerance= in Python; default SteadyOptions::ode_tolerance).
+inline constexpr ParamRange kToleranceRange{1e-12, 1e-4};
 inline constexpr ParamRange kIRange{0, 10};
 
 // Physical units (units.hpp): v_b in m/s, the vibration amplitude A and z_ss in um, the frequency f in kHz.

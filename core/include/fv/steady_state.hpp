@@ -136,6 +136,12 @@ struct SteadyResult {
 // to_string(status), with k for period_k (e.g. "period_2").
 std::string status_word(const SteadyResult& r);
 
+// The status every output reports (command line, Python): r.status, except non_finite for a result the
+// solver vouches for whose r_x or r_y is not a finite number (never expected; reported, not hidden).
+SteadyStatus reported_status(const SteadyResult& r);
+// status_word of the reported status: "ok"-class words with k for period_k, or the failure's word.
+std::string reported_word(const SteadyResult& r);
+
 // Dahl model in steady state.
 SteadyResult dahl_steady(const Params& p, const SteadyOptions& opt = {});
 

@@ -1,0 +1,43 @@
+"""figures() and render() against `frictionviz render --list` and its PNG bytes."""
+
+import os
+
+import pytest
+
+import frictionviz as fv
+from conftest import cli
+
+if not hasattr(fv._core, "render"):
+    pytest.skip("built without the figures layer", allow_module_level=True)
+
+
+def test_figures_equal_cli_list():
+    _, out, _ = cli("render", "--list")
+    want = [tuple(line.split("\t", 1)) for line in out.splitlines()]
+    assert [(i, t) for i, t, _ in fv.figures()] == want
+
+
+@pytest.mark.parametrize("fid,flags,params", [
+    ("fig10", [], {}),
+    ("scene", ["--zeta", "0.3", "--theta", "60", "--rdisp", "2", "--i", "1"],
+     {"zeta": 0.3, "theta_deg": 60, "rdisp": 2, "i": 1}),
+])
+def test_png_equals_cli(tmp_path, fid, flags, params):
+    cli("render", "--figure", fid, "--size", "640x400", "--out", tmp_path, *flags)
+    want = (tmp_path / f"{fid}.png").read_bytes()
+    fig = fv.render(fid, size=(640, 400), **params)
+    assert fig.data == want
+    assert fig._repr_png_() == want and fig._repr_svg_() is None
+    assert fv.render(fid, out=tmp_path / "again.png", size=(640, 400), **params) == tmp_path / "again.png"
+    assert (tmp_path / "again.png").read_bytes() == want
+
+
+def test_svg_and_errors():
+    svg = fv.render("fig10", format="svg", size=(640, 400))
+    assert svg._repr_svg_().lstrip().startswith("<?xml") or "<svg" in svg._repr_svg_()[:400]
+    with pytest.raises(ValueError, match="unknown figure 'fig99'"):
+        fv.render("fig99")
+    with pytest.raises(ValueError, match="takes no parameter 'zeta'"):
+        fv.render("fig10", zeta=0.5)
+    with pytest.raises(ValueError, match=r"zeta = 200 is out of range"):
+        fv.render("scene", zeta=200, theta_deg=60, rdisp=2, i=1)
