@@ -7,6 +7,7 @@
 #include "render_output.hpp"
 
 #include "anim/animation.hpp"
+#include "gui/lessons.hpp"
 
 #include "fv/units.hpp"
 
@@ -33,7 +34,7 @@ Command add_animate_command(CLI::App& root) {
     struct Args {
         ModelArgs model;
         std::string out, view = "dashboard", size = "960x600";
-        int periods = 2;
+        int periods = 2, lesson = 0;
         double fps = 30, speed = 0.5, scale = 1;
     };
     auto a = std::make_shared<Args>();
@@ -42,6 +43,9 @@ Command add_animate_command(CLI::App& root) {
     add_model_options(*cmd, a->model, true);
     add_unit_options(*cmd, a->model.units, UnitShape::single,
                      "A and f also put v_v on the r_x(zeta) axis (as in the app)");
+    // --lesson N stands for the model flags: --theta is required only without it (checked below).
+    cmd->get_option("--theta")->required(false);
+    add_lesson_option(*cmd, a->lesson, "the setup of guided lesson step N");
     cmd->add_option("--out", a->out,
                     std::string("the animation: ") + anim::allowed_extensions() +
                         " (by the extension), written atomically; a symbolic link is followed and its target "
@@ -72,16 +76,26 @@ Command add_animate_command(CLI::App& root) {
                     "panel (top view, force plot, r_x(zeta)); both under a caption with the parameters")
         ->check(CLI::IsMember({"scene", "dashboard"}))
         ->capture_default_str();
-    return {cmd, [a] {
+    return {cmd, [a, cmd] {
                 const std::optional<anim::Format> format = anim::format_for_path(a->out);
                 if (!format)
                     throw UsageError("--out: '" + a->out +
                                      "' has no known extension; allowed: " + anim::allowed_extensions());
                 anim::Spec s;
                 s.format = *format;
-                s.model = model_of(a->model);
-                s.params = to_params(a->model);
+                if (a->lesson == 0 && cmd->get_option("--theta")->count() == 0)
+                    throw UsageError("--theta is required (or --lesson N: a lesson step's setup)");
                 s.steady = steady_options(a->model);
+                if (a->lesson > 0) {
+                    const app::LessonSetup& u =
+                        app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup;
+                    s.model = u.model;
+                    s.params = u.params;
+                    s.steady.start = u.start;
+                } else {
+                    s.model = model_of(a->model);
+                    s.params = to_params(a->model);
+                }
                 const Vibration v =
                     vibration_of(a->model.units, s.model == Model::dahl ? std::vector<double>{s.params.rdisp}
                                                                         : std::vector<double>{});

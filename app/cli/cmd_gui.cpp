@@ -100,6 +100,7 @@ Command add_gui_command(CLI::App& root) {
         double scale = 0;
         int frames = 0, bench = 0;
         std::string script, screenshot, data, session, link;
+        int lesson = 0;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd = root.add_subcommand("gui", "interactive window (the default when no command is given)");
@@ -138,6 +139,9 @@ Command add_gui_command(CLI::App& root) {
     }
     for (const char* flag : {"--amplitude", "--frequency", "--data"}) session->excludes(flag);
     session->excludes(link);
+    CLI::Option* lesson = add_lesson_option(*cmd, a->lesson, "open the guided lesson at step N");
+    lesson->excludes(session);
+    lesson->excludes(link);
     cmd->add_option(
            "--platform", a->platform,
            "where the app runs: window, headless (an OSMesa buffer, the same pixels; needs --frames or "
@@ -188,6 +192,7 @@ Command add_gui_command(CLI::App& root) {
                                      "units at the scale; allowed: --size at least 800x480 times --scale");
             }
             o.frames = a->frames;
+            o.lesson = a->lesson;
             o.bench_frames = a->bench;
             o.script = a->script;
             o.screenshot = a->screenshot;

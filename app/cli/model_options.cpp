@@ -2,6 +2,8 @@
 
 #include "errors.hpp"
 
+#include "gui/lessons.hpp"
+
 namespace fv::cli {
 
 void add_model_options(CLI::App& cmd, ModelArgs& a, bool with_model_choice) {
@@ -93,6 +95,17 @@ SteadyOptions solver_options(const SolverArgs& s) {
 
 SteadyOptions steady_options(const ModelArgs& a) {
     return solver_options(a.solver);
+}
+
+CLI::Option* add_lesson_option(CLI::App& cmd, int& lesson, const std::string& what) {
+    CLI::Option* o =
+        cmd.add_option("--lesson", lesson,
+                       what + " (" + app::lesson_range_text() +
+                           ", the app's Lessons menu; docs/lessons.md): its setup replaces the model flags")
+            ->check(integer_in(1, static_cast<long>(app::lesson_steps().size())));
+    for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--start", "--vb", "--zss"})
+        if (CLI::Option* f = cmd.get_option_no_throw(flag)) o->excludes(f);
+    return o;
 }
 
 } // namespace fv::cli

@@ -32,6 +32,10 @@ struct SolverArgs {
     CLI::Option* scheme_opt = nullptr;
 };
 void add_solver_options(CLI::App& cmd, SolverArgs& s);
+// --lesson N (1 to the number of lesson steps, gui/lessons.hpp): a lesson step's setup in place of the model
+// and unit flags (call after they are added; it excludes those the command has). `what`: the help's start.
+CLI::Option* add_lesson_option(CLI::App& cmd, int& lesson, const std::string& what);
+
 // --start rest|sliding with this help (add_solver_options; render and gui with their own words), and the
 // start given on the command line, if any.
 CLI::Option* add_start_option(CLI::App& cmd, std::string& start, const std::string& help);

@@ -1,5 +1,7 @@
 #include "app_state.hpp"
 
+#include "lessons.hpp"
+
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
 #include "fv/ode_solver.hpp"
@@ -19,6 +21,19 @@ Session start_of(Model model, const Params& params, double amplitude_um, double 
     s.amplitude_um = amplitude_um;
     s.frequency_khz = frequency_khz;
     return s;
+}
+
+// A lesson step or a concept preset as the edits a user would make by hand: the model, the parameters, the
+// start, the panel and the speed of its setup, played from the start.
+void set_up(UiEdits& e, const LessonSetup& u) {
+    e.model = u.model;
+    e.params = u.params;
+    e.vb_m_s.reset(), e.zss_um.reset();
+    e.start = u.start;
+    e.panel = u.panel;
+    e.speed = u.speed;
+    e.playing = true;
+    e.reset = true;
 }
 
 // The status line after a session has been opened.
@@ -74,8 +89,23 @@ void AppState::refresh_units() {
     ui_.zss_um = value([&] { return zss_of(ui_); });
 }
 
-AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
+AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
     ++syncs_;
+    UiEdits e = edits;
+    if (e.lesson) {
+        const int n = static_cast<int>(lesson_steps().size());
+        if (*e.lesson == 0) {
+            ui_.lesson = 0;
+        } else if (*e.lesson >= 1 && *e.lesson <= n) {
+            ui_.lesson = *e.lesson;
+            set_up(e, lesson_steps()[static_cast<std::size_t>(*e.lesson - 1)].setup);
+        } else {
+            e.status = "lesson step " + std::to_string(*e.lesson) +
+                       " does not exist; allowed: " + lesson_range_text();
+        }
+    }
+    if (e.preset)
+        if (const LessonStep* step = find_lesson_step(*e.preset)) set_up(e, step->setup), e.preset.reset();
     if (e.status) ui_.status = *e.status; // older than what this frame's edits say below
     if (e.open_session) {
         try {

@@ -2,6 +2,8 @@
 
 #include "app_state.hpp"
 #include "help_overlay.hpp"
+#include "lesson_card.hpp"
+#include "lessons.hpp"
 
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
@@ -11,6 +13,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace fv::app {
 
@@ -29,6 +34,7 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.speed) speed = o.speed;
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
+    if (o.lesson) lesson = o.lesson;
     if (o.zoom) zoom = o.zoom;
     if (o.pan) pan = o.pan;
     reset_view |= o.reset_view;
@@ -186,16 +192,32 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
     return e;
 }
 
-// The registered figures the app can open as presets.
+// A row of buttons that wraps to the panel's width (large type in presentation mode, narrow windows):
+// each button beside the one before while it fits, else on a new line. Returns the label clicked, or null.
+const std::string* button_row(const std::vector<std::pair<std::string, std::string>>& labels_and_tips) {
+    const std::string* clicked = nullptr;
+    const ImGuiStyle& style = ImGui::GetStyle();
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    for (std::size_t k = 0; k < labels_and_tips.size(); ++k) {
+        const auto& [label, tip] = labels_and_tips[k];
+        const float w = ImGui::CalcTextSize(label.c_str()).x + 2 * style.FramePadding.x;
+        if (k > 0 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= right) ImGui::SameLine();
+        if (ImGui::Button(label.c_str())) clicked = &label;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip.c_str());
+    }
+    return clicked;
+}
+
+// The presets: the lesson's steps by concept (lessons.json), then the registered figures the app can open.
 UiEdits draw_presets() {
     UiEdits e;
+    std::vector<std::pair<std::string, std::string>> concepts, figures;
+    for (const LessonStep& s : lesson_steps()) concepts.emplace_back(s.id, s.title);
+    for (const FigureSpec* f : presets()) figures.emplace_back(f->id, f->caption);
+    ImGui::TextUnformatted("Concepts");
+    if (const std::string* id = button_row(concepts)) e.preset = *id;
     ImGui::TextUnformatted("Paper figures");
-    for (const FigureSpec* f : presets()) {
-        if (ImGui::Button(f->id.c_str())) e.preset = f->id;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f->caption.c_str());
-        ImGui::SameLine();
-    }
-    ImGui::NewLine();
+    if (const std::string* id = button_row(figures)) e.preset = *id;
     return e;
 }
 
@@ -368,15 +390,17 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_MenuBar);
     e.merge(draw_menu(ui, dialog));
+    e.merge(draw_lesson_card(ui));
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
     e.merge(draw_parameter_controls(ui, sim, curves));
-    // Presentation mode folds the physical units, the presets, the search details and the data away.
+    // Presentation mode folds the physical units, the search details and the data away; the presets stay
+    // (a lecture jumps between them).
     if (!ui.session.presentation) {
         ImGui::Separator();
         e.merge(draw_vibration_controls(ui));
-        ImGui::Separator();
-        e.merge(draw_presets());
     }
+    ImGui::Separator();
+    e.merge(draw_presets());
     e.merge(draw_animation_controls(ui, sim));
     draw_readouts(ui, sim, curves, busy);
     e.merge(draw_panel_choice(ui));
@@ -405,6 +429,7 @@ UiEdits keyboard_edits(const UiState& ui) {
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;
     if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;
+    e.merge(lesson_keys(ui));
     return e;
 }
 

@@ -1,5 +1,6 @@
 #include "data_controls.hpp"
 #include "dialog_footer.hpp"
+#include "lesson_card.hpp"
 
 #include "measured_data.hpp"
 
@@ -133,6 +134,7 @@ UiEdits draw_menu(const UiState& ui, FileDialogs& dialog) {
             e.presentation = !ui.session.presentation;
         ImGui::EndMenu();
     }
+    e.merge(draw_lessons_menu(ui));
     if (ImGui::BeginMenu("Help")) {
         if (ImGui::MenuItem("What you see", "F1, ?", ui.show_help)) e.show_help = !ui.show_help;
         ImGui::EndMenu();

@@ -128,6 +128,7 @@ class GuiLoop {
           script_(o.script.empty() ? Script{} : load_script(o.script)), app_(o.start, o.data, o.session_file),
           animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {
         dialog_.choose = [this](const std::string& accept) { return platform_->choose_file(accept); };
+        if (o.lesson > 0) queued_.lesson = o.lesson; // applied by the first frame's sync, as a menu click
     }
 
     int run() {

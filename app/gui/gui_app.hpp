@@ -23,6 +23,7 @@ struct GuiOptions {
     // Littmann experiment (Sec. 4: 0.7 um at 60 kHz).
     Session start;
     std::string session_file; // the --session file start came from (named in the status line), or ""
+    int lesson = 0;           // > 0: open on this lesson step (lessons.hpp), set up as the Lessons menu does
     int frames = 0;           // > 0: stop after this many frames (scripted runs)
     std::string script;       // scripted slider changes, see script.hpp
     std::string screenshot;   // write the last frame here (PNG)

@@ -22,7 +22,8 @@ constexpr Entry kScene[] = {
     {Ink::body, "P",
      "a point of the sliding body: drifts at v_b along x and vibrates ±x_v along the dotted "
      "line at angle θ (Eqs. 28–29)"},
-    {Ink::spring, "body (dashed box)", "the slider that carries P; v_b arrow: its mean velocity"},
+    {Ink::spring, "body (dashed box)",
+     "the sliding body (the block) that carries P; v_b arrow: its mean velocity"},
     {Ink::tip, "T", "the tip of the asperity: where the contact meets the fixed plane"},
     {Ink::pull, "spring, green",
      "the asperity P–T sticks (i = 0) or creeps (i > 0): z = |P − T| < z_ss, T "
@@ -54,43 +55,68 @@ constexpr Entry kPlots[] = {
      "this help, Esc quit"},
 };
 
-void section(const char* title, const Entry* begin, const Entry* end) {
+// The meanings' column starts after the widest term of both tables, so that no term runs into its meaning at
+// any font size (presentation mode: 22 px instead of 15).
+float meaning_column(float swatch) {
+    float widest = 0;
+    for (const Entry& e : kScene) widest = std::max(widest, ImGui::CalcTextSize(e.symbol).x);
+    for (const Entry& e : kPlots) widest = std::max(widest, ImGui::CalcTextSize(e.symbol).x);
+    const ImGuiStyle& style = ImGui::GetStyle();
+    return style.WindowPadding.x + swatch + style.ItemSpacing.x + widest + 2 * style.ItemSpacing.x;
+}
+
+template <std::size_t N>
+void section(const char* title, const Entry (&entries)[N], float column, HelpLayout& layout) {
+    const float swatch = ImGui::GetFontSize() * 0.9f;
     ImGui::TextUnformatted(title);
     ImGui::Separator();
-    for (const Entry* e = begin; e != end; ++e) {
-        if (e->ink != Ink::automatic) {
-            const gfx::Color c = ink_color(e->ink, 0);
-            ImGui::ColorButton(e->symbol, ImVec4(c.r, c.g, c.b, 1),
+    for (const Entry& e : entries) {
+        if (e.ink != Ink::automatic) {
+            const gfx::Color c = ink_color(e.ink, 0);
+            ImGui::ColorButton(e.symbol, ImVec4(c.r, c.g, c.b, 1),
                                ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoDragDrop,
-                               ImVec2(14, 14));
+                               ImVec2(swatch, swatch));
         } else {
-            ImGui::Dummy(ImVec2(14, 14));
+            ImGui::Dummy(ImVec2(swatch, swatch));
         }
         ImGui::SameLine();
-        ImGui::TextUnformatted(e->symbol);
-        ImGui::SameLine(178);
+        ImGui::TextUnformatted(e.symbol);
+        layout.term_right = std::max(layout.term_right, ImGui::GetItemRectMax().x);
+        ImGui::SameLine(column);
+        layout.meaning_left = std::min(layout.meaning_left, ImGui::GetCursorScreenPos().x);
         ImGui::PushTextWrapPos(0);
-        ImGui::TextUnformatted(e->meaning);
+        ImGui::TextUnformatted(e.meaning);
         ImGui::PopTextWrapPos();
     }
 }
 
 } // namespace
 
-bool draw_help_overlay(bool open, const gfx::Rect& area) {
+bool draw_help_overlay(bool open, const gfx::Rect& area, HelpLayout* layout) {
     if (!open) return false;
-    const float w = std::min(area.width() - 40, 720.0f);
-    ImGui::SetNextWindowPos(ImVec2(area.x0 + (area.width() - w) / 2, area.y0 + 20), ImGuiCond_Always);
+    // 48 em wide (720 at the 15 px font), within the area; as tall as its rows, at most the area less its
+    // margins, scrolling beyond.
+    const float margin = 20;
+    const float w = std::min(area.width() - 2 * margin, 48 * ImGui::GetFontSize());
+    const float h_max = area.height() - 2 * margin;
+    ImGui::SetNextWindowPos(ImVec2(area.x0 + (area.width() - w) / 2, area.y0 + margin), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
+    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, h_max));
     ImGui::SetNextWindowBgAlpha(0.96f);
     bool keep = true;
     ImGui::Begin("What you see (F1 or ? closes)", &keep,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoSavedSettings);
-    section("Top view", std::begin(kScene), std::end(kScene));
+    HelpLayout where;
+    const float column = meaning_column(ImGui::GetFontSize() * 0.9f);
+    section("Top view", kScene, column, where);
     ImGui::Spacing();
-    section("Plots and numbers", std::begin(kPlots), std::end(kPlots));
+    section("Plots and numbers", kPlots, column, where);
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    where.window = {pos.x, pos.y, pos.x + size.x, pos.y + size.y};
+    where.scroll_max = ImGui::GetScrollMaxY();
     ImGui::End();
+    if (layout) *layout = where;
     return keep;
 }
 

@@ -2,6 +2,7 @@
 
 #include "app_state.hpp"
 #include "controls.hpp"
+#include "lessons.hpp"
 
 #include "fv/atomic_file.hpp"
 #include "fv/figure_registry.hpp"
@@ -78,8 +79,13 @@ const ScriptAction kActions[] = {
     {"preset",
      ScriptArg::word,
      {},
-     "a preset's id (the panel's preset buttons)",
+     "a preset's id (the panel's preset buttons: a concept or a paper figure)",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.preset = s.text; }},
+    {"lesson",
+     ScriptArg::word,
+     {},
+     "show lesson step N and set it up (0 closes the lesson)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.lesson = std::stoi(s.text); }},
     {"play",
      ScriptArg::none,
      {},
@@ -222,7 +228,8 @@ const ScriptAction* find_action(const std::string& name) {
 
 std::string preset_ids() {
     std::string s;
-    for (const FigureSpec* f : presets()) s += (s.empty() ? "" : ", ") + f->id;
+    for (const LessonStep& l : lesson_steps()) s += (s.empty() ? "" : ", ") + l.id;
+    for (const FigureSpec* f : presets()) s += ", " + f->id;
     return s;
 }
 
@@ -234,6 +241,11 @@ std::string word_error(const ScriptAction& a, const std::string& v) {
         Start unused = Start::rest;
         return parse_start(v, unused) ? "" : "start = " + quoted_text(v) + "; allowed: " + kStartNames;
     }
+    if (std::string(a.name) == "lesson") {
+        long long n = 0;
+        return read_integer("lesson", v, 0, static_cast<long long>(lesson_steps().size()), n);
+    }
+    if (find_lesson_step(v)) return "";
     for (const FigureSpec* f : presets())
         if (f->id == v) return "";
     return "unknown preset " + quoted_text(v) + "; allowed: " + preset_ids();

@@ -38,6 +38,7 @@ struct SessionState {
 struct UiState {
     SessionState session;
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
+    int lesson = 0;         // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
     std::string status;     // last message (file written, ...)
 
     // The physical view of session.params under A and f, converted once per frame (AppState::sync): v_v = 2
@@ -83,14 +84,17 @@ struct UiEdits {
     // A message for the status line from outside the state (a file the loop wrote or could not write, the
     // animation export's progress): shown unless this frame's own edits say something newer.
     std::optional<std::string> status;
+    // A registered figure's id (a paper preset) or a lesson step's id (a concept preset): its setup.
     std::optional<std::string> preset;
+    // The lesson step to show and set up (1-based); 0 closes the lesson, the setup staying as it is.
+    std::optional<int> lesson;
 
     // Later edits of the same field win; actions accumulate.
     void merge(const UiEdits& o);
     // Whether these edits may change the model or its parameters, and so the r_x(zeta) curves.
     bool moves_curves() const {
         return model || start || params || amplitude_um || frequency_khz || vb_m_s || zss_um ||
-               open_session || preset;
+               open_session || preset || lesson;
     }
 };
 
