@@ -25,10 +25,16 @@ step() { awk -v what="$1" -v t0="$start" -v t1="$EPOCHREALTIME" 'BEGIN { printf 
 cmake --install "$build" --prefix "$prefix" >"$work/install.log"
 step "installed"
 
-# Every installed file is one of the package's.
+# Every installed file is one of the package's (a new installed piece adds its pattern here).
 manifest=$build/install_manifest.txt
 [[ -s $manifest ]] || fail "no $manifest"
-allowed="^$prefix/($bindir/frictionviz|$includedir/frictionviz/(fv|figures)/.*\.hpp|$libdir/libfv(core|figdefs|render|figures)\.a|$libdir/cmake/frictionviz/[a-z_-]+\.cmake)$"
+pieces=(
+    "$bindir/frictionviz"
+    "$includedir/frictionviz/(fv|figures)/.*\.hpp"
+    "$libdir/libfv(core|figdefs|render|figures)\.a"
+    "$libdir/cmake/frictionviz/[a-z_-]+\.cmake"
+)
+allowed="^$prefix/($(IFS='|'; echo "${pieces[*]}"))$"
 if unexpected=$(grep -Ev "$allowed" "$manifest"); then
     fail "installed files that are not the package's:"$'\n'"$unexpected"
 fi
