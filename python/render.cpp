@@ -3,13 +3,11 @@
 // title, params and make(), and FigureInputs, so that the registry's inner shapes (FigureSpec) may change.
 #include "render.hpp"
 
-#include "figures/render_session.hpp"
+#include "figures/figure_renderer.hpp"
 
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/fit.hpp"
-#include "fv/gfx/png.hpp"
-#include "fv/gfx/vector_output.hpp"
 #include "fv/measurements.hpp"
 #include "fv/param_ranges.hpp"
 #include "fv/read_number.hpp"
@@ -24,10 +22,6 @@ namespace py = pybind11;
 
 namespace fvpy {
 namespace {
-
-// `render --size` and `--scale` (app/cli/render_output.hpp: kMinSizeW.., kMinScale..).
-constexpr int kMinW = 320, kMinH = 240, kMaxW = 7680, kMaxH = 4320;
-constexpr fv::ParamRange kScaleRange{0.25, 8};
 
 void check(const std::string& why) {
     if (!why.empty()) throw py::value_error(why);
@@ -86,10 +80,8 @@ py::bytes render(const std::string& id, const py::dict& params, int width, int h
     if (!e) throw py::value_error("unknown figure '" + id + "'; allowed: " + fv::figure_ids());
     if (format != "png" && format != "svg" && format != "pdf")
         throw py::value_error("format = '" + format + "'; allowed: png, svg, pdf");
-    if (width < kMinW || width > kMaxW || height < kMinH || height > kMaxH)
-        throw py::value_error("size = (" + std::to_string(width) + ", " + std::to_string(height) +
-                              "); allowed: width in [320, 7680], height in [240, 4320]");
-    check(fv::range_message("scale", scale, kScaleRange));
+    const fv::app::PictureSize size{width, height, scale}; // the limits of `render --size` and `--scale`
+    check(fv::app::picture_size_error(size));
     // The figure's parameters, checked as the command line checks its flags; one the figure does not take is
     // an error (the command line ignores it, but a keyword typed in vain is better said).
     fv::FigureInputs in;
@@ -132,8 +124,6 @@ py::bytes render(const std::string& id, const py::dict& params, int width, int h
     std::string bytes;
     {
         py::gil_scoped_release unlocked;
-        // One GL context at a time: OSMesa's are per thread, and rendering is not the slow part.
-        static std::mutex gl;
         fv::FigureSpec spec;
         try {
             spec = e->make(in);
@@ -145,21 +135,13 @@ py::bytes render(const std::string& id, const py::dict& params, int width, int h
             throw py::value_error(std::string("data: ") + err.what());
         }
         const fv::FigureData data = fv::compute_figure(spec);
+        // One GL context at a time: OSMesa's are per thread, and drawing is not the slow part.
+        static std::mutex gl;
         std::lock_guard<std::mutex> lock(gl);
-        fv::gfx::ContextOptions co;
-        co.backend = fv::gfx::Backend::Headless;
-        co.width = width;
-        co.height = height;
-        co.scale = static_cast<float>(scale);
-        fv::app::RenderSession session(co);
-        if (format == "png") {
-            const std::vector<unsigned char> png = fv::gfx::encode_png(session.render_figure(data));
-            bytes.assign(reinterpret_cast<const char*>(png.data()), png.size());
-        } else {
-            bytes = fv::gfx::render_vector(session.record_figure(data), format == "svg"
-                                                                            ? fv::gfx::VectorFormat::Svg
-                                                                            : fv::gfx::VectorFormat::Pdf);
-        }
+        fv::app::FigureRenderer renderer(size);
+        bytes = renderer.render(data, format == "png"   ? fv::app::PictureFormat::png
+                                      : format == "svg" ? fv::app::PictureFormat::svg
+                                                        : fv::app::PictureFormat::pdf);
     }
     return py::bytes(bytes);
 }

@@ -74,6 +74,10 @@ NOT_RUN = [
      "CI runs it (.ci/run): an instrumented build and run of the suite, tens of minutes on 2 cores"),
     ("docs/development.md", "./scripts/fuzz.sh [SECONDS]",
      "CI runs fuzz.sh 20 (.ci/run); SECONDS is a placeholder"),
+    ("docs/library.md", "./scripts/build.sh app", "run.sh runs it (the build this test runs in, app only)"),
+    ("docs/library.md", "cmake --install build --prefix ~/.local",
+     "install_consumer (label install) installs the build into a prefix of its own and builds tests/consumer "
+     "against it"),
     ("docs/figures.md", "FV_UPDATE_SNAPSHOTS=1 ctest --test-dir build -R Snapshot",
      "rewrites the snapshot baselines in tests/snapshots/"),
     ("docs/web.md", "./scripts/build-web.sh [OUTDIR]",

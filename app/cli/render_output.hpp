@@ -2,6 +2,7 @@
 // drawn; each figure's files written through the output-path policy (fv::write_file_atomic).
 #pragma once
 
+#include "figures/figure_renderer.hpp"
 #include "figures/render_figures.hpp"
 
 #include <CLI/CLI.hpp>
@@ -12,12 +13,12 @@
 
 namespace fv::cli {
 
-inline constexpr double kMinScale = 0.25, kMaxScale = 8;
-// The logical page (--size / --scale) the figure layout needs at least, and at most.
-inline constexpr int kMinPageW = 320, kMinPageH = 240, kMaxPageW = 7680, kMaxPageH = 4320;
+// --scale, the logical page (--size / --scale) and --size WxH (render and gui) take the figures layer's
+// limits, which the installed library checks too.
+using app::kMaxPageH, app::kMaxPageW, app::kMaxScale, app::kMaxSizeH, app::kMaxSizeW, app::kMinPageH,
+    app::kMinPageW, app::kMinScale, app::kMinSizeH, app::kMinSizeW;
 
-// An image size in pixels, --size WxH (render and gui).
-inline constexpr int kMinSizeW = 320, kMinSizeH = 240, kMaxSizeW = 7680, kMaxSizeH = 4320;
+// An image size in pixels.
 struct PixelSize {
     int w = 1280, h = 800;
 };

@@ -33,5 +33,10 @@ print("ok", where)
 (cd "$work" && "$work/venv/bin/python" -c "$probe" "$work/venv")
 
 cmake --install "$build" --component python --prefix "$work/prefix" >/dev/null
-platlib=$(grep -o 'FV_PYTHON_INSTALL_DIR:STRING=.*' "$build/CMakeCache.txt" | cut -d= -f2)
-(cd "$work" && PYTHONPATH="$work/prefix/$platlib" "$python" -c "$probe" "$work/prefix")
+init=$(find "$work/prefix" -path '*/frictionviz/__init__.py')
+platlib=$(dirname "$(dirname "$init")")
+case ${platlib#"$work/prefix/"} in
+    lib/python3*/site-packages | lib/python3*/dist-packages) ;;
+    *) echo "python_install: cmake --install put the package in $platlib, not the interpreter's layout" >&2; exit 1 ;;
+esac
+(cd "$work" && PYTHONPATH="$platlib" "$python" -c "$probe" "$work/prefix")

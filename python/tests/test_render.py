@@ -1,6 +1,7 @@
 """figures() and render() against `frictionviz render --list` and its PNG bytes."""
 
 import os
+import re
 
 import pytest
 
@@ -12,9 +13,17 @@ if not hasattr(fv._core, "render"):
 
 
 def test_figures_equal_cli_list():
+    # `render --list`: "ID<TAB>TITLE (FLAGS)", the flags a figure takes after its title; figures() gives the
+    # same ids and titles in the same order, and the flags as keywords (theta in degrees: theta_deg, ...).
     _, out, _ = cli("render", "--list")
-    want = [tuple(line.split("\t", 1)) for line in out.splitlines()]
-    assert [(i, t) for i, t, _ in fv.figures()] == want
+    rows = [line.split("\t", 1) for line in out.splitlines()]
+    figs = fv.figures()
+    assert [i for i, _, _ in figs] == [i for i, _ in rows]
+    keyword = {"theta": "theta_deg", "amplitude": "amplitude_um", "frequency": "frequency_khz"}
+    for (fid, title, params), (_, line) in zip(figs, rows):
+        assert line.startswith(title), (fid, title, line)
+        flags = re.findall(r"--([a-z]+)", line[len(title):])
+        assert sorted(keyword.get(f, f) for f in flags) == sorted(params), (fid, line, params)
 
 
 @pytest.mark.parametrize("fid,flags,params", [

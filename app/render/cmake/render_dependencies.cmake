@@ -1,0 +1,51 @@
+# The render layer's third-party libraries on the desktop, as imported targets: found the same way by the build
+# (app/render/CMakeLists.txt) and by the installed package (frictionviz-config.cmake, which ships this file), so
+# that the exported fvrender names targets, not this machine's paths.
+#   PkgConfig::GLFW3   the window context (linked although a headless program never opens a window)
+#   PkgConfig::CAIRO   SVG and PDF, with its FreeType font backend (Debian libcairo2-dev)
+#   fv_deps::imgui     Debian libimgui-dev: a static libimgui.a and the headers in /usr/include/imgui
+#   fv_deps::stb       Debian libstb-dev: the PNG writer and reader
+# OSMesa is not linked: the headless context loads it at run time. Sets fv_render_dependencies_FOUND and, when
+# something is missing, fv_render_dependencies_MISSING (the package config reports it instead of failing).
+set(fv_render_dependencies_MISSING "")
+find_package(PkgConfig QUIET)
+if(NOT PKG_CONFIG_FOUND)
+  list(APPEND fv_render_dependencies_MISSING pkg-config)
+else()
+  if(NOT TARGET PkgConfig::GLFW3)
+    pkg_check_modules(GLFW3 QUIET IMPORTED_TARGET glfw3)
+  endif()
+  if(NOT TARGET PkgConfig::GLFW3)
+    list(APPEND fv_render_dependencies_MISSING "glfw3 (pkg-config)")
+  endif()
+  if(NOT TARGET PkgConfig::CAIRO)
+    pkg_check_modules(CAIRO QUIET IMPORTED_TARGET cairo cairo-ft cairo-pdf cairo-svg freetype2)
+  endif()
+  if(NOT TARGET PkgConfig::CAIRO)
+    list(APPEND fv_render_dependencies_MISSING "cairo, cairo-ft, cairo-pdf, cairo-svg, freetype2 (pkg-config)")
+  endif()
+endif()
+# fv_deps::NAME from a header (found in its folder PATH_SUFFIX) and a library; else WHAT joins the missing.
+function(fv_imported_library name header suffix library what)
+  if(TARGET fv_deps::${name})
+    return()
+  endif()
+  string(TOUPPER ${name} var)
+  find_path(${var}_INCLUDE_DIR ${header} PATH_SUFFIXES ${suffix})
+  find_library(${var}_LIBRARY NAMES ${library})
+  if(${var}_INCLUDE_DIR AND ${var}_LIBRARY)
+    add_library(fv_deps::${name} UNKNOWN IMPORTED)
+    set_target_properties(fv_deps::${name} PROPERTIES IMPORTED_LOCATION "${${var}_LIBRARY}"
+                                                       INTERFACE_INCLUDE_DIRECTORIES "${${var}_INCLUDE_DIR}")
+  else()
+    list(APPEND fv_render_dependencies_MISSING "${what}")
+    set(fv_render_dependencies_MISSING "${fv_render_dependencies_MISSING}" PARENT_SCOPE)
+  endif()
+endfunction()
+fv_imported_library(imgui imgui.h imgui imgui "Dear ImGui (imgui.h, libimgui)")
+fv_imported_library(stb stb_image_write.h stb stb "stb (stb_image_write.h, libstb)")
+if(fv_render_dependencies_MISSING)
+  set(fv_render_dependencies_FOUND FALSE)
+else()
+  set(fv_render_dependencies_FOUND TRUE)
+endif()
