@@ -247,6 +247,8 @@ Command add_render_command(CLI::App& root) {
                                          e.id.c_str(), missing_flag(e, in).c_str());
                     }
                 } else if (const FigureEntry* e = find_registered(id)) {
+                    // A value of the wrong shape (--zeta 0.1:1 for scene) is named before a missing one.
+                    if (std::string why = input_error(*e, in, flag_name); !why.empty()) throw UsageError(why);
                     if (const std::string m = missing_flag(*e, in); !m.empty())
                         throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) + ")");
                     chosen.emplace_back(e, in);

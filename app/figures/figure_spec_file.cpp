@@ -99,14 +99,14 @@ void read_param(FigureParam p, const std::string& key, const Json& j, FigureInpu
         return;
     }
     case FigureParam::theta:
-        in.theta_deg = number_list(key, j);
-        return;
     case FigureParam::rdisp:
-        in.rdisp = number_list(key, j);
+    case FigureParam::i: {
+        // An empty list would read as "not given" (the default): refused here, where it is seen.
+        const std::vector<double> v = number_list(key, j);
+        if (v.empty()) throw SpecError(check_number_list(key, v, *param_range(p)));
+        (p == FigureParam::theta ? in.theta_deg : p == FigureParam::rdisp ? in.rdisp : in.i) = v;
         return;
-    case FigureParam::i:
-        in.i = number_list(key, j);
-        return;
+    }
     case FigureParam::model: {
         std::vector<Model> models;
         if (std::string why = read_model_list(key, joined(text_list(key, j)), models); !why.empty())
