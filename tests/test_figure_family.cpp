@@ -134,7 +134,7 @@ TEST_CASE("Registry: lists only where a figure takes them, checked as a spec fil
     CHECK(d.zeta_span == fv::kPaperZetaSpan);
 }
 
-TEST_CASE("rx: the legend names what varies, the title what does not; every curve has its own style",
+TEST_CASE("rx: the legend names what varies and the title what does not, every curve in its own style",
           "[figures][family]") {
     // The README's example: theta and i fixed, three r_disp and the rigid curve.
     const fv::FigureSpec spec = fv::find_registered("rx")->make({});

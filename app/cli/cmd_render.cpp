@@ -3,7 +3,6 @@
 #include "errors.hpp"
 #include "figure_flags.hpp"
 #include "figure_listing.hpp"
-#include "model_options.hpp"
 #include "output.hpp"
 #include "render_flags.hpp"
 #include "render_output.hpp"
