@@ -412,7 +412,7 @@ PYBIND11_MODULE(_core, m) {
           py::arg("shape"), py::arg("amplitude_um").none(true), py::arg("frequency_khz").none(true),
           py::arg("threads"));
     m.def("figures", &fvpy::figures);
-    m.def("render", &fvpy::render, py::arg("id"), py::arg("params"), py::arg("width"), py::arg("height"),
+    m.def("render", &fvpy::render, py::arg("spec"), py::arg("example"), py::arg("width"), py::arg("height"),
           py::arg("scale"), py::arg("format"));
     m.def("write_file", &write_file, py::arg("path"), py::arg("data"));
     m.attr("default_tolerance") = fv::SteadyOptions{}.ode_tolerance;

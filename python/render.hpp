@@ -8,12 +8,13 @@
 
 namespace fvpy {
 
-// [(id, title, [parameter keywords])] in the registry's order.
+// [(id, title, [parameter keys])] in the registry's order; the keys are a spec file's (fv::param_key).
 pybind11::list figures();
 
-// The figure `id` with `params` (zeta, theta_deg, rdisp, i, data, amplitude_um, frequency_khz, start; none:
-// the figure's example inputs) at width x height pixels and `scale`, as png, svg or pdf bytes.
-pybind11::bytes render(const std::string& id, const pybind11::dict& params, int width, int height,
-                       double scale, const std::string& format);
+// The figure a spec file's text names (figures/figure_spec_file.hpp: {"id": .., "theta": [30, 60], ..}), or
+// with `example` its example inputs, at width x height pixels and `scale`, as png, svg or pdf bytes:
+// (bytes, title, caption, parameters JSON). ValueError with the command line's message for a bad spec.
+pybind11::tuple render(const std::string& spec_text, bool example, int width, int height, double scale,
+                       const std::string& format);
 
 } // namespace fvpy

@@ -43,6 +43,9 @@ RUN = [
     ("docs/cli.md", "frictionviz render --figure map --rdisp 5 --i 0 --format png,pdf --out out/"),
     ("docs/cli.md", "frictionviz render --figure fig19 --data tests/data/synthetic_two_angles_rdisp2_i0.csv "
                     "--amplitude 0.7 --out out/"),
+    ("docs/cli.md", "frictionviz render --figure rx --theta 30,60 --rdisp 1,10 --i 0.5 --zeta 0.02:2 --size 640x400 "
+                    "--out out/"),
+    ("docs/cli.md", "frictionviz render --spec out/rx.json --format pdf --out out/"),
     ("docs/cli.md", "frictionviz animate --zeta 0.3 --theta 60 --rdisp 2 --i 1 --out loop.gif"),
     ("docs/cli.md", "frictionviz animate --zeta 0.15 --theta 90 --rdisp 2 --i 0 --view scene --size 1920x1200 "
                     "--scale 2 --out loop.mp4"),

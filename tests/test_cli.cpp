@@ -532,6 +532,171 @@ TEST_CASE("CLI registry: --figure all renders every listed id with its CSV and a
     const std::string fig15 = nlohmann::json::parse(slurp(dir + "/fig15.json")).at("caption");
     for (const char* v : {"ζ = 0.15", "θ = 90°", "r_disp = 2", "i = 1", "1024"})
         CHECK(fig15.find(v) != std::string::npos);
+    // Every figure again from the parameters of its ID.json (render --spec): the same files byte for byte.
+    const std::string again = scratch_dir() + "/registry-spec";
+    REQUIRE(std::system(("mkdir -p " + again).c_str()) == 0);
+    for (const std::string& id : ids) {
+        CAPTURE(id);
+        const Run s = run("render --spec " + dir + "/" + id + ".json --out " + again);
+        REQUIRE(s.code == 0);
+        const std::vector<std::string> files =
+            nlohmann::json::parse(slurp(dir + "/" + id + ".json")).at("files");
+        for (const std::string& f : files) {
+            CAPTURE(f);
+            CHECK(slurp(again + "/" + f) == slurp(dir + "/" + f));
+        }
+    }
+}
+
+TEST_CASE("CLI spec: ID.json parameters hold every input exactly and render --spec gives the same files",
+          "[cli][render][spec]") {
+    const std::string a = scratch_dir() + "/spec-a", b = scratch_dir() + "/spec-b";
+    REQUIRE(std::system(("mkdir -p " + a + " " + b).c_str()) == 0);
+    struct Case {
+        std::string id, flags;
+    };
+    // Values that are not short decimals (0.1 + 0.2, 1/3 typed with all its digits), lists, a log range, the
+    // other start, vector formats and another page.
+    for (const Case& c :
+         {Case{"fig4", "--zeta 0.30000000000000004 --theta 33.333333333333336 --format png,svg"},
+          Case{"rx", "--theta 0,90 --rdisp 2 --i 0,1 --model rigid,dahl --zeta 0.01:10 --start "
+                     "sliding --size 640x400 --scale 0.5"},
+          Case{"fig10", "--format pdf --size 400x300"}}) {
+        CAPTURE(c.id, c.flags);
+        const Run r = run("render --figure " + c.id + " " + c.flags + " --out " + a);
+        REQUIRE(r.code == 0);
+        const nlohmann::json j = nlohmann::json::parse(slurp(a + "/" + c.id + ".json"));
+        const nlohmann::json& p = j.at("parameters");
+        CHECK(p.at("id") == c.id);
+        if (c.id == "fig4") {
+            CHECK(p.at("zeta").get<double>() == 0.1 + 0.2);
+            CHECK(p.at("theta").get<double>() == 100.0 / 3);
+            CHECK(p.at("format") == nlohmann::json{"png", "svg"});
+        } else if (c.id == "rx") {
+            CHECK(p.at("theta") == nlohmann::json{0.0, 90.0});
+            CHECK(p.at("model") == nlohmann::json{"rigid", "dahl"});
+            CHECK(p.at("zeta") == nlohmann::json{0.01, 10.0});
+            CHECK(p.at("start") == "sliding");
+            CHECK(p.at("size") == nlohmann::json{640, 400});
+            CHECK(p.at("scale") == 0.5);
+        } else {
+            CHECK(p.size() == 4); // id, size, scale, format: a fixed figure has no other input
+        }
+        const Run s = run("render --spec " + a + "/" + c.id + ".json --out " + b);
+        REQUIRE(s.code == 0);
+        // A PDF names the time it was written (cairo's /CreationDate): every other byte is the same.
+        auto undated = [](std::string text) {
+            const std::size_t at = text.find("/CreationDate (D:");
+            if (at != std::string::npos) text.erase(at, text.find(')', at) - at);
+            return text;
+        };
+        for (const std::string& f : j.at("files").get<std::vector<std::string>>()) {
+            CAPTURE(f);
+            CHECK(undated(slurp(b + "/" + f)) == undated(slurp(a + "/" + f)));
+        }
+    }
+    // The parameters object alone is a spec too; --format given replaces the file's.
+    std::ofstream(a + "/alone.json") << R"({"id": "fig4", "zeta": 0.5, "theta": 30})";
+    const Run s = run("render --spec " + a + "/alone.json --format svg --out " + b);
+    CHECK(s.code == 0);
+    const nlohmann::json j = nlohmann::json::parse(slurp(b + "/fig4.json"));
+    CHECK(j.at("parameters").at("format") == nlohmann::json{"svg"});
+    CHECK(j.at("parameters").at("theta") == 30.0);
+}
+
+TEST_CASE("CLI spec: a bad spec file is a one-line usage error naming the key and nothing is written",
+          "[cli][render][spec]") {
+    const std::string dir = scratch_dir() + "/spec-bad", out = dir + "/out";
+    REQUIRE(std::system(("mkdir -p " + out).c_str()) == 0);
+    struct Case {
+        const char* json;
+        const char* says;
+    };
+    for (const Case& c : {
+             Case{R"({"zeta": 0.5})", "id is missing"},
+             Case{R"({"id": "fig99"})", "unknown figure 'fig99'; allowed: fig4"},
+             Case{R"({"id": 4})", "id: expected a string, got a number"},
+             Case{R"({"id": "fig4", "zeta": "0.5"})", "zeta: expected a number, got a string"},
+             Case{R"({"id": "fig4", "theta": [30, 60]})", "theta has 2 values; fig4 takes one"},
+             Case{R"({"id": "fig4", "zeta": 1e9})", "zeta = 1000000000 is out of range"},
+             Case{R"({"id": "fig4", "zeta": 0.5, "colour": "red"})",
+                  "unknown key 'colour' for fig4; allowed: id, zeta"},
+             Case{R"({"id": "fig10", "zeta": 0.5})", "unknown key 'zeta' for fig10"},
+             Case{R"({"id": "scene", "theta": 30, "rdisp": 2, "i": 1})", "zeta is missing: scene needs it"},
+             Case{R"({"id": "rx", "theta": [30, "60"]})", "theta: expected a list of numbers"},
+             Case{R"({"id": "rx", "theta": [30, 30]})", "theta has 30 twice"},
+             Case{R"({"id": "rx", "theta": []})", "theta is an empty list"},
+             Case{R"({"id": "rx", "zeta": [3, 1]})", "zeta = 3:1 is reversed"},
+             Case{R"({"id": "rx", "zeta": [1]})", "zeta: expected a range [FROM, TO]"},
+             Case{R"({"id": "rx", "model": ["dahl", "soft"]})", "'soft' is not a model"},
+             Case{R"({"id": "rx", "theta": [10, 20, 30], "rdisp": [1, 2, 3], "i": [0, 1]})", "at most 12"},
+             Case{R"({"id": "map", "rdisp": [1, 2]})", "rdisp has 2 values; map takes one"},
+             Case{R"({"id": "map", "start": "later"})", "'later' is not a start; allowed: rest, sliding"},
+             Case{R"({"id": "fig5", "size": [10, 10]})", "size"},
+             Case{R"({"id": "fig5", "size": "big"})", "size"},
+             Case{R"({"id": "fig5", "scale": 100})", "--scale"},
+             Case{R"({"id": "fig5", "format": ["png", "gif"]})", "unknown format 'gif'"},
+             Case{R"({"id": "fig5", "format": 3})", "format: expected a string or a list of strings"},
+             Case{R"({"parameters": 3})", "parameters: expected an object"},
+             Case{"[1, 2]", "expected a JSON object"},
+             Case{"{\"id\": \"fig5\",\n\n", "not JSON"},
+             Case{"", "not JSON"},
+             Case{R"({"id": "fig4", "zeta": 1e400})", "not JSON"},
+         }) {
+        CAPTURE(c.json);
+        std::ofstream(dir + "/spec.json") << c.json;
+        const Run r = run("render --spec " + dir + "/spec.json --out " + out);
+        CHECK(r.code == 2);
+        CHECK(lines(r.err) == 1);
+        CHECK(r.err.find(c.says) != std::string::npos);
+        CHECK(r.err.find("spec.json") != std::string::npos);
+        CHECK(files_in(out).empty());
+    }
+    // --spec takes the figure and its parameters from the file.
+    std::ofstream(dir + "/spec.json") << R"({"id": "fig5"})";
+    for (const char* more : {"--figure fig5", "--theta 30", "--rdisp 2", "--data x.csv", "--start rest"}) {
+        CAPTURE(more);
+        const Run r = run("render --spec " + dir + "/spec.json " + more + " --out " + out);
+        CHECK(r.code == 2);
+        CHECK(lines(r.err) == 1);
+        CHECK(r.err.find("--spec and") != std::string::npos);
+    }
+    CHECK(run("render --spec " + dir + "/missing.json --out " + out).code == 2);
+    CHECK(files_in(out).empty());
+}
+
+TEST_CASE("CLI families: lists of rx, ry and map through core's reader, one-line errors, no file written",
+          "[cli][render][family]") {
+    const std::string out = scratch_dir() + "/family-bad";
+    REQUIRE(std::system(("mkdir -p " + out).c_str()) == 0);
+    struct Case {
+        const char* args;
+        const char* says;
+    };
+    for (const Case& c : {
+             Case{"--figure rx --theta 30,,60", "--theta: '30,,60' has an empty item (number 2)"},
+             Case{"--figure rx --theta 30,60,30", "30 twice (items 1 and 3)"},
+             Case{"--figure rx --rdisp 1,0", "out of range"},
+             Case{"--figure rx --i 1,x", "not a decimal number"},
+             Case{"--figure rx --zeta 3:1", "reversed (FROM > TO)"},
+             Case{"--figure rx --zeta 1:1", "empty (FROM == TO)"},
+             Case{"--figure rx --zeta 0:1:5", "not a range"},
+             Case{"--figure rx --model dahl,dahl", "dahl twice"},
+             Case{"--figure rx --theta 10,20,30 --rdisp 1,2,3 --i 0,1", "= 21 curves; allowed: at most 12"},
+             Case{"--figure rx --zeta 0.5", "--zeta has"},
+             Case{"--figure ry --theta 10,20,30,40,50,60,70", "at most 12"},
+             Case{"--figure map --rdisp 1,2", "--rdisp has 2 values; map takes one (lists: rx, ry)"},
+             Case{"--figure scene --zeta 0.3 --theta 30,60 --rdisp 2 --i 1", "scene takes one"},
+             Case{"--figure scene --zeta 0.1:1 --theta 30 --rdisp 2 --i 1", "scene takes one"},
+             Case{"--figure rx --zeta 0.1:1 --vb 1 --amplitude 1 --frequency 1", "--vb"},
+         }) {
+        CAPTURE(c.args);
+        const Run r = run(std::string("render ") + c.args + " --out " + out);
+        CHECK(r.code == 2);
+        CHECK(lines(r.err) == 1);
+        CHECK(r.err.find(c.says) != std::string::npos);
+    }
+    CHECK(files_in(out).empty());
 }
 
 // ---- Physical units: --vb (m/s), --amplitude (um), --frequency (kHz), --zss (um)

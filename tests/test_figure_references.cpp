@@ -76,7 +76,7 @@ TEST_CASE("fig4: the friction against v_b is Eq. (3), its mean Eq. (11) or Eq. (
         CAPTURE(zeta, theta_deg);
         fv::FigureInputs in;
         in.zeta = zeta;
-        in.theta_deg = theta_deg;
+        in.theta_deg = {theta_deg};
         const fv::FigureData d = figure("fig4", in);
         REQUIRE(d.panels.size() == 2);
         const double th = theta_deg * kPi / 180;
@@ -191,8 +191,8 @@ TEST_CASE("ry: rigid r_y is the mean of Eq. (4), the Dahl r_y tends to it as r_d
     // Rigid limit of the Dahl model: at r_disp = 1000 within O(1/r_disp^2) of the rigid curve (for ζ away
     // from the rigid model's non-smooth points the error is ~1/r^2; allow 1e-3).
     fv::FigureInputs stiff;
-    stiff.rdisp = 1000;
-    stiff.i = 1;
+    stiff.rdisp = {1000};
+    stiff.i = {1};
     fv::FigureSpec spec = fv::find_registered("ry")->make(stiff);
     auto& curves = std::get<fv::RatioCurvesFigure>(spec.content);
     curves.zetas = {0.3, 0.6, 1.2, 2.0};

@@ -34,7 +34,7 @@ TEST_CASE("Registry: every figure registered once, in paper order, each defined 
     // Paper figures by number, then the others by id.
     const std::vector<std::string> expected{"fig4",  "fig5",  "fig6",  "fig8",   "fig9",   "fig10", "fig11",
                                             "fig12", "fig13", "fig14", "fig14a", "fig14b", "fig15", "fig16",
-                                            "fig17", "fig18", "fig19", "map",    "ry",     "scene"};
+                                            "fig17", "fig18", "fig19", "map",    "rx",     "ry",    "scene"};
     CHECK(ids == expected);
     for (const fv::FigureEntry& e : reg) {
         CAPTURE(e.id);

@@ -3,11 +3,12 @@
 #include "errors.hpp"
 #include "figure_flags.hpp"
 #include "figure_listing.hpp"
-#include "model_options.hpp"
 #include "output.hpp"
+#include "render_flags.hpp"
 #include "render_output.hpp"
 #include "test_hook.hpp"
 
+#include "figures/figure_spec_file.hpp"
 #include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
 
@@ -15,6 +16,7 @@
 #include "fv/figure_data.hpp"
 #include "fv/figure_registry.hpp"
 #include "fv/fit.hpp"
+#include "fv/input_file.hpp"
 #include "fv/measurements.hpp"
 
 #include <nlohmann/json.hpp>
@@ -39,6 +41,9 @@ namespace {
 // frames), 1 above 2^20 pixels (1920x1080, 7680x4320). tests/reliability/render_memory_test.cpp holds the
 // growth of memory with the number of figures to this budget plus one frame.
 constexpr std::size_t kEncodeBudget = std::size_t{16} << 20;
+
+// A spec file is a figure's ID.json: a few kB (a caption and a file list); anything near this is not one.
+constexpr std::size_t kMaxSpecBytes = std::size_t{1} << 20;
 
 std::size_t encoders_for(int w, int h) {
     const std::size_t job = std::size_t{2} * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
@@ -118,20 +123,6 @@ std::string figure_help() {
     return s;
 }
 
-// The inputs given, over the example's.
-FigureInputs over(FigureInputs example, const FigureInputs& given) {
-    for (auto [to, from] : {std::pair{&example.zeta, &given.zeta},
-                            {&example.theta_deg, &given.theta_deg},
-                            {&example.rdisp, &given.rdisp},
-                            {&example.i, &given.i},
-                            {&example.amplitude_um, &given.amplitude_um},
-                            {&example.frequency_khz, &given.frequency_khz}})
-        if (*from) *to = *from;
-    if (!given.data.empty()) example.data = given.data;
-    if (given.start) example.start = given.start;
-    return example;
-}
-
 // Every file render writes for `spec`: ID.png/.svg/.pdf as asked, the CSV tables and ID.json.
 std::vector<std::string> figure_files(const FigureSpec& spec, const OutputArgs& output) {
     std::vector<std::string> names;
@@ -142,16 +133,42 @@ std::vector<std::string> figure_files(const FigureSpec& spec, const OutputArgs& 
 }
 
 // ID.json beside the image: what it shows and everything it depends on.
+// `parameters`: every input, as a spec file takes them (figures/figure_spec_file.hpp).
 std::string caption_json(const FigureSpec& spec, const std::vector<std::string>& files,
-                         const std::string& status) {
+                         const std::string& status, const std::string& parameters) {
     nlohmann::ordered_json j;
     j["id"] = spec.id;
     j["title"] = plain_text(spec.title);
     j["caption"] = spec.caption + " " + figure_parameters(spec);
+    j["parameters"] = nlohmann::ordered_json::parse(parameters);
     j["files"] = files;
     j["status"] = status.empty() ? "ok" : status;
     j["version"] = "frictionviz " FV_VERSION;
     return j.dump(2) + "\n";
+}
+
+// The spec file's figure and inputs; its size, scale and format where the flags do not give them.
+std::pair<const FigureEntry*, FigureInputs> read_spec(const std::string& path, const CLI::App& cmd,
+                                                      std::string& size, OutputArgs& output) {
+    std::string text;
+    if (std::string why = read_input_file(path, text, {kMaxSpecBytes}); !why.empty())
+        throw UsageError("--spec " + path + ": " + why);
+    if (text.size() > kMaxSpecBytes)
+        throw UsageError("--spec " + path + ": larger than " + std::to_string(kMaxSpecBytes) +
+                         " bytes; allowed: a figure's ID.json or its parameters object");
+    try {
+        app::FigureSpecFile spec = app::parse_spec_file(text);
+        if (cmd.get_option("--size")->count() == 0) {
+            std::string s = spec.size;
+            if (std::string why = size_spec()(s); !why.empty()) throw app::SpecError("size: " + why);
+            size = spec.size;
+        }
+        if (cmd.get_option("--scale")->count() == 0) output.scale = spec.scale;
+        if (cmd.get_option("--format")->count() == 0) output.format = spec.format;
+        return {spec.entry, std::move(spec.inputs)};
+    } catch (const app::SpecError& err) {
+        throw UsageError("--spec " + path + ": " + err.what());
+    }
 }
 
 } // namespace
@@ -161,55 +178,36 @@ Command add_render_command(CLI::App& root) {
         std::string figure;
         std::string out;
         std::string size = "1280x800";
-        ModelArgs model; // its units: --amplitude, --frequency (fig19, scene, map), --vb, --zss (scene, map)
-        std::string data;
+        RenderFlags flags; // the figures' parameters
         std::string list;  // --list [tsv|markdown]
+        std::string spec;  // --spec FILE.json
         OutputArgs output; // --format, --scale
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
         root.add_subcommand("render", "render figures headless (OSMesa) as PNG, with the data behind "
                                       "each one as CSV and its caption as JSON beside it");
-    cmd->add_option("--figure", a->figure, figure_help() + " (required unless --list)");
+    cmd->add_option("--figure", a->figure, figure_help() + " (required unless --list or --spec)");
     cmd->add_option(
         "--out", a->out,
         "output directory (must exist); ID.png, its CSV and ID.json (id, title, caption naming every "
-        "parameter, files, version) are replaced atomically (required unless --list)");
+        "parameter, parameters: every input as --spec reads it, files, version) are replaced atomically "
+        "(required unless --list)");
+    cmd->add_option(
+           "--spec", a->spec,
+           "draw the figure a spec file describes: a figure's ID.json (its parameters object) or that "
+           "object alone; the same inputs give the same files byte for byte. Not with --figure or the "
+           "figure's flags; --size, --scale, --format given replace the file's")
+        ->check(file_name());
     cmd->add_option(
            "--list", a->list,
            "print the figures and exit: ID<TAB>TITLE per line (tsv, the default), or the README's table "
            "(markdown)")
         ->expected(0, 1)
         ->check(CLI::IsMember({"tsv", "markdown"}));
-    cmd->add_option("--data", a->data,
-                    figures_taking(FigureParam::data) +
-                        ": CSV of measured r_x (columns zeta,r_x or vb,r_x; optional theta_deg, sigma)")
-        ->check(file_name());
-    add_vibration_options(*cmd, a->model.units,
-                          figures_taking(FigureParam::amplitude) +
-                              ": for --vb, --zss (and fig19: a vb column, z_ss)");
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
-    // The scene's parameters: the same flags as `ratio` (required only for --figure scene).
-    a->model.zeta_opt =
-        cmd->add_option("--zeta", a->model.zeta, figures_taking(FigureParam::zeta) + ": velocity ratio")
-            ->transform(number_in(kZetaRange));
-    cmd->add_option("--theta", a->model.theta_deg,
-                    figures_taking(FigureParam::theta) +
-                        ": vibration angle in degrees (fig19: of points without theta_deg)")
-        ->transform(number_in(kThetaRange));
-    a->model.rdisp_opt =
-        cmd->add_option("--rdisp", a->model.rdisp,
-                        figures_taking(FigureParam::rdisp) + ": displacement ratio (map: default 2)")
-            ->transform(number_in(kRdispRange));
-    a->model.i_opt = cmd->add_option("--i", a->model.i,
-                                     figures_taking(FigureParam::i) + ": Dahl exponent (map: default 1)")
-                         ->transform(number_in(kIRange));
-    add_vb_zss_options(*cmd, a->model.units, UnitShape::single);
-    add_start_option(*cmd, a->model.solver.start,
-                     figures_taking(FigureParam::start) +
-                         ": the history where two steady states coexist, rest (the paper's) or sliding "
-                         "(vibration switched on while sliding)");
+    add_render_flags(*cmd, a->flags);
     return {
         cmd, [a, cmd] {
             if (cmd->get_option("--list")->count() > 0) {
@@ -217,38 +215,39 @@ Command add_render_command(CLI::App& root) {
                            stdout);
                 return;
             }
-            if (a->figure.empty())
-                throw UsageError("--figure is required (or --list); allowed: " + figure_names());
+            const bool from_spec = cmd->get_option("--spec")->count() > 0;
+            if (from_spec && cmd->get_option("--figure")->count() > 0)
+                throw UsageError("--spec and --figure: give one of them (the spec file names its figure)");
+            if (const std::string flag = first_given(a->flags); from_spec && !flag.empty())
+                throw UsageError("--spec and " + flag +
+                                 ": the spec file gives the figure's parameters; allowed with --spec: --out, "
+                                 "--size, --scale, --format");
+            if (a->figure.empty() && !from_spec)
+                throw UsageError("--figure is required (or --spec, --list); allowed: " + figure_names());
             if (a->out.empty() && cmd->get_option("--out")->count() == 0)
                 throw UsageError("--out is required: the directory to write the figures into");
-            // The inputs of the figures that take flags (--vb and --zss converted).
-            const UnitArgs& u = a->model.units;
-            FigureInputs in;
-            in.zeta = zeta_of(a->model.zeta_opt, a->model.zeta, u, false);
-            if (cmd->get_option("--theta")->count()) in.theta_deg = a->model.theta_deg;
-            in.rdisp = rdisp_of(a->model.rdisp_opt, a->model.rdisp, u, false);
-            if (a->model.i_opt->count()) in.i = a->model.i;
-            in.data = a->data;
-            if (*u.amplitude_opt) in.amplitude_um = u.amplitude;
-            if (*u.frequency_opt) in.frequency_khz = u.frequency;
-            in.start = given_start(*cmd, a->model.solver.start);
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
             // inputs.
             std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
-            std::stringstream ids(a->figure);
+            if (from_spec) chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output));
+            const FigureInputs in = from_spec ? FigureInputs{} : inputs_of(a->flags);
+            std::stringstream ids(from_spec ? std::string() : a->figure);
             std::string id;
             while (std::getline(ids, id, ',')) {
                 if (id == "all") {
                     for (const FigureEntry& e : figure_registry()) {
-                        if (!missing_param(e, in))
-                            chosen.emplace_back(&e, in);
-                        else if (!missing_param(e, over(e.example, in)))
-                            chosen.emplace_back(&e, over(e.example, in));
+                        const FigureInputs fit = fitting(e, in);
+                        if (!missing_param(e, fit))
+                            chosen.emplace_back(&e, fit);
+                        else if (!missing_param(e, over(e.example, fit)))
+                            chosen.emplace_back(&e, over(e.example, fit));
                         else
                             std::fprintf(stderr, "frictionviz: --figure all: %s left out (it needs %s)\n",
                                          e.id.c_str(), missing_flag(e, in).c_str());
                     }
                 } else if (const FigureEntry* e = find_registered(id)) {
+                    // A value of the wrong shape (--zeta 0.1:1 for scene) is named before a missing one.
+                    if (std::string why = input_error(*e, in, flag_name); !why.empty()) throw UsageError(why);
                     if (const std::string m = missing_flag(*e, in); !m.empty())
                         throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) + ")");
                     chosen.emplace_back(e, in);
@@ -257,17 +256,30 @@ Command add_render_command(CLI::App& root) {
                 }
             }
             if (chosen.empty()) throw UsageError("--figure: no figure named; allowed: " + figure_names());
+            // Each figure's inputs as it takes them: a list where it takes one value, a family of too many
+            // curves (a spec file's inputs are checked already, under its keys).
+            for (const auto& [e, inputs] : chosen)
+                if (std::string why = input_error(*e, inputs, flag_name); !why.empty()) throw UsageError(why);
             const PixelSize sz = parse_size(a->size);
-            check_output_args(a->output, sz.w, sz.h);
+            try {
+                check_output_args(a->output, sz.w, sz.h);
+            } catch (const UsageError& err) {
+                if (!from_spec) throw;
+                throw UsageError("--spec " + a->spec + ": " + err.what());
+            }
             check_out_dir(a->out);
             std::string dir = a->out;
             while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
             // The figures' definitions: fig19 reads and fits its data here, before any rendering, so
             // that a malformed file is a usage error with nothing written.
             std::vector<FigureSpec> specs;
+            std::vector<std::string> parameters; // each figure's, for its ID.json
             for (const auto& [e, inputs] : chosen) {
+                const FigureInputs resolved = with_defaults(*e, inputs);
+                parameters.push_back(
+                    app::parameters_json(*e, resolved, sz.w, sz.h, a->output.scale, a->output.pictures()));
                 try {
-                    specs.push_back(e->make(inputs));
+                    specs.push_back(e->make(resolved));
                 } catch (const DataError& err) {
                     throw UsageError(err.what());
                 } catch (const FitError& err) {
@@ -296,7 +308,9 @@ Command add_render_command(CLI::App& root) {
             job.dir = dir;
             job.formats = a->output.pictures();
             job.encoders = encoders_for(sz.w, sz.h);
-            job.extras = [&output = a->output](const FigureSpec& spec, FigureData& data) {
+            // render_figures calls extras once per figure, in order.
+            std::size_t next = 0;
+            job.extras = [&output = a->output, &parameters, &next](const FigureSpec& spec, FigureData& data) {
                 for (TableData& t : data.tables) apply_test_hook(t);
                 std::optional<FitResult> fit;
                 if (const auto* m = std::get_if<MeasurementsFigure>(&spec.content); m && m->fit)
@@ -310,7 +324,8 @@ Command add_render_command(CLI::App& root) {
                 }
                 names.push_back(data.id + ".json");
                 extras.failed = check_figure(data, fit ? &*fit : nullptr);
-                extras.files.push_back({names.back(), caption_json(spec, names, extras.failed)});
+                extras.files.push_back(
+                    {names.back(), caption_json(spec, names, extras.failed, parameters.at(next++))});
                 return extras;
             };
             job.wrote = [&](const std::string& written) {

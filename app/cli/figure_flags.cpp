@@ -14,6 +14,10 @@ ParamFlags flags_of(FigureParam p) {
     switch (p) {
     case FigureParam::zeta:
         return {"--zeta", "--vb"};
+    case FigureParam::zeta_range:
+        return {"--zeta", ""};
+    case FigureParam::model:
+        return {"--model", ""};
     case FigureParam::theta:
         return {"--theta", ""};
     case FigureParam::rdisp:

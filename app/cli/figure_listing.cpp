@@ -1,6 +1,7 @@
 #include "figure_listing.hpp"
 
 #include "figure_flags.hpp"
+#include "render_flags.hpp"
 
 #include "fv/figure_registry.hpp"
 
@@ -46,6 +47,10 @@ std::string figure_table_markdown() {
         std::string text = !e.summary.empty() ? e.summary : e.make(e.example).caption;
         if (!e.params.empty())
             text += " " + code("render --figure " + e.id) + " " + flags_text(e, code) + ".";
+        std::string lists;
+        for (const FigureParamUse& u : e.params)
+            if (u.list) lists += (lists.empty() ? "" : ", ") + code(flag_name(u.param) + " A,B,..");
+        if (!lists.empty()) text += " Lists, one curve per combination: " + lists + ".";
         text += readme_picture_note(e.id);
         s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + cell(text) + " |\n";
     }

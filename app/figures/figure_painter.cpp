@@ -228,6 +228,7 @@ void set_axes(gfx::Plot& plot, const PanelData& panel) {
     plot.y_axis.title = panel.y_title;
     plot.x_axis.min = panel.x_min;
     plot.x_axis.max = panel.x_max;
+    plot.x_axis.log = panel.log_x;
     plot.y_axis.min = panel.y_min;
     plot.y_axis.max = panel.y_max;
     plot.equal_aspect = panel.equal_aspect;

@@ -50,6 +50,10 @@ const char* input_name(FigureParam p) {
     switch (p) {
     case FigureParam::zeta:
         return "zeta";
+    case FigureParam::zeta_range:
+        return "zeta_span";
+    case FigureParam::model:
+        return "models";
     case FigureParam::theta:
         return "theta_deg";
     case FigureParam::rdisp:
@@ -75,6 +79,10 @@ FigureSpec registered_figure(const std::string& id, const FigureInputs& inputs) 
     if (!e) throw std::invalid_argument("unknown figure '" + id + "'; allowed: " + figure_ids());
     if (const std::optional<FigureParam> p = missing_param(*e, inputs))
         throw std::invalid_argument("figure " + id + " needs FigureInputs::" + input_name(*p));
+    // The checks every door applies (lists where the figure takes one value, ranges, the family's size).
+    if (const std::string why = input_error(*e, inputs, [](FigureParam p) { return input_name(p); });
+        !why.empty())
+        throw std::invalid_argument("figure " + id + ": " + why);
     return e->make(inputs);
 }
 

@@ -37,9 +37,10 @@ std::string picture_size_error(const PictureSize& size);
 
 // The definition of the registered figure `id` (fv/figure_registry.hpp: "fig10", "scene", "map", ...) for
 // `inputs`; inputs left unset are not given. Throws std::invalid_argument with a one-line message for an
-// unknown id (naming the known ones) or a required input not given, and what the figure's definition throws
-// for a data file (fv::DataError, fv::FitError: fig19). compute_figure (fv/figure_data.hpp) turns it into
-// numbers.
+// unknown id (naming the known ones), a required input not given or an input the figure does not admit
+// (fv::input_error: a list where it takes one value, a value out of range, too many curves), and what the
+// figure's definition throws for a data file (fv::DataError, fv::FitError: fig19). compute_figure
+// (fv/figure_data.hpp) turns it into numbers.
 FigureSpec registered_figure(const std::string& id, const FigureInputs& inputs = {});
 
 // A headless GL context (OSMesa, loaded at run time) with the fonts and canvas, made once and reused for any

@@ -1,6 +1,7 @@
 #include "fv/figure_data.hpp"
 #include "fv/axis_titles.hpp"
 
+#include "family_style.hpp"
 #include "figure_panels.hpp"
 #include "scene_parts.hpp"
 
@@ -22,21 +23,46 @@ std::string curve_label(const Curve& c, bool vary_theta) {
     return "r_{disp} = " + format_number("%g", c.rdisp);
 }
 
-// r_x(zeta) curves, steady states reached from `start`; one table row per point.
+// The marks of the points the solver could not vouch for (their curves have a gap there), at their last
+// value; empty when there are none.
+SeriesData unverified_marks(const std::vector<std::vector<SweepPoint>>& computed, bool side_force) {
+    SeriesData s{"no steady state vouched for (gap)", {}, {}, Ink::tip, Dash::solid, Mark::cross, 0};
+    for (const std::vector<SweepPoint>& pts : computed)
+        for (const SweepPoint& sp : pts)
+            if (!ok(sp.result.status)) {
+                s.x.push_back(sp.params.zeta);
+                s.y.push_back(side_force ? sp.result.ry : sp.result.rx);
+            }
+    return s;
+}
+
+// r_x(zeta) curves, steady states reached from `start`; one table row per point. A point the solver cannot
+// vouch for is not drawn as if it were valid: its curve has a gap there, marked (unverified_marks); the
+// table keeps its values and status.
 PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<SweepPoint>& rows,
                       int threads) {
     PanelData panel;
     panel.x_title = titles::kZeta;
     panel.y_title = spec.side_force ? titles::kRy : titles::kRx;
     const std::vector<double>& zetas = spec.zetas;
-    panel.x_min = std::min(0.0, zetas.front());
-    panel.x_max = zetas.back();
+    panel.x_min = spec.axis ? spec.axis->from : std::min(0.0, zetas.front());
+    panel.x_max = spec.axis ? spec.axis->to : zetas.back();
+    panel.log_x = spec.log_zeta;
     if (!spec.side_force) { // r_y: fitted to the curves
         panel.y_min = 0;
         panel.y_max = 1.05;
     }
     bool all_rigid = true;
     for (const auto& c : spec.curves) all_rigid = all_rigid && c.model == Model::rigid;
+    // On a log axis the curves are sampled evenly in u = log10(zeta), so that each decade gets its share;
+    // the start grid's ends stay exactly the span's.
+    std::vector<double> grid = zetas;
+    if (spec.log_zeta)
+        for (double& u : grid) u = std::log10(u);
+    auto zeta_of = [&](double x) {
+        if (!spec.log_zeta) return x;
+        return x == grid.front() ? zetas.front() : x == grid.back() ? zetas.back() : std::pow(10.0, x);
+    };
     // Each round of points over all curves in one flat list keeps both cores busy even when one curve is
     // slow. Without a budget the grid is the samples.
     std::vector<std::vector<SweepPoint>> computed(spec.curves.size());
@@ -46,7 +72,7 @@ PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<Sw
             const Curve& c = spec.curves[req[k].curve];
             const double nan = std::nan("");
             pts[k].model = c.model;
-            pts[k].params = {req[k].x, c.theta, c.model == Model::rigid ? nan : c.rdisp,
+            pts[k].params = {zeta_of(req[k].x), c.theta, c.model == Model::rigid ? nan : c.rdisp,
                              c.model == Model::rigid ? nan : c.i};
         }
         parallel_for(
@@ -66,11 +92,13 @@ PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<Sw
         return y;
     };
     AdaptiveSampling o;
-    o.x_span = *panel.x_max - *panel.x_min;
+    o.x_span = spec.log_zeta ? grid.back() - grid.front() : *panel.x_max - *panel.x_min;
     o.y_span = panel.y_min && panel.y_max ? *panel.y_max - *panel.y_min : 0; // 0: the values' own range
     o.budget = spec.zeta_budget > 0 ? spec.zeta_budget : zetas.size();
     if (spec.zeta_budget == 0) o.max_rounds = 1;
-    adaptive_sample(spec.curves.size(), zetas, o, eval);
+    adaptive_sample(spec.curves.size(), grid, o, eval);
+    const std::vector<SeriesData> styles =
+        spec.family ? family::curve_styles(spec.curves) : std::vector<SeriesData>{};
     rows.clear();
     for (std::size_t ci = 0; ci < spec.curves.size(); ++ci) {
         const Curve& c = spec.curves[ci];
@@ -80,7 +108,9 @@ PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<Sw
         });
         SeriesData s;
         s.label = curve_label(c, all_rigid);
-        if (spec.side_force) {
+        if (spec.family) {
+            s = styles[ci];
+        } else if (spec.side_force) {
             // One colour per angle, the model by the dash: "θ = 30°, Dahl" solid, "θ = 30°, rigid" dashed.
             s.label = curve_label({Model::rigid, c.theta, 0, 0}, true) +
                       (c.model == Model::rigid ? ", rigid" : ", Dahl");
@@ -93,10 +123,26 @@ PanelData ratio_panel(const RatioCurvesFigure& spec, Start start, std::vector<Sw
         }
         for (const SweepPoint& sp : pts) {
             s.x.push_back(sp.params.zeta);
-            s.y.push_back(spec.side_force ? sp.result.ry : sp.result.rx);
+            s.y.push_back(!ok(sp.result.status) ? std::nan("")
+                          : spec.side_force     ? sp.result.ry
+                                                : sp.result.rx);
             rows.push_back(sp);
         }
         panel.series.push_back(std::move(s));
+    }
+    if (SeriesData marks = unverified_marks(computed, spec.side_force); !marks.x.empty())
+        panel.series.push_back(std::move(marks));
+    if (spec.data) {
+        for (SeriesData& d :
+             family::data_series(*spec.data, spec.axis.value_or(ZetaSpan{0, kZetaRange.hi}))) {
+            // Noisy points beyond [0, 1] stay on the plot.
+            for (std::size_t k = 0; k < d.y.size(); ++k) {
+                const double err = d.y_err.empty() ? 0 : d.y_err[k];
+                panel.y_max = std::max(*panel.y_max, d.y[k] + err + 0.02);
+                panel.y_min = std::min(*panel.y_min, d.y[k] - err - 0.02);
+            }
+            panel.series.push_back(std::move(d));
+        }
     }
     return panel;
 }
@@ -481,7 +527,7 @@ void period_panels(const PeriodViewFigure& spec, FigureData& fig) {
 // The panels and tables of each kind of figure.
 void compute_content(const RatioCurvesFigure& spec, FigureData& fig, int threads) {
     TableData t;
-    fig.panels.push_back(ratio_panel(spec, Start::rest, t.ratios, threads));
+    fig.panels.push_back(ratio_panel(spec, spec.start, t.ratios, threads));
     fig.tables.push_back(std::move(t));
 }
 

@@ -1,7 +1,9 @@
 #include "fv/figure_registry.hpp"
 
 #include "fv/adaptive_sampling.hpp"
+#include "fv/figure_family.hpp"
 #include "fv/format.hpp"
+#include "fv/read_number.hpp"
 #include "fv/steady_state.hpp"
 
 #include <algorithm>
@@ -222,6 +224,15 @@ RegisterFigure::RegisterFigure(FigureEntry entry) {
             std::fprintf(stderr, "frictionviz: figure '%s' is registered twice\n", entry.id.c_str());
             std::abort();
         }
+    // Every caller (the command line, a spec file, tests, the Python module) gets the figure of the resolved
+    // inputs: make sees every default it has, given or not.
+    entry.make = [make = std::move(entry.make), defaults = entry.defaults,
+                  params = entry.params](const FigureInputs& in) {
+        FigureEntry e;
+        e.defaults = defaults;
+        e.params = params;
+        return make(with_defaults(e, in));
+    };
     registrations().push_back(std::move(entry));
 }
 
@@ -248,16 +259,64 @@ std::string figure_ids() {
     return s;
 }
 
+const char* param_key(FigureParam p) {
+    switch (p) {
+    case FigureParam::zeta:
+    case FigureParam::zeta_range:
+        return "zeta";
+    case FigureParam::theta:
+        return "theta";
+    case FigureParam::rdisp:
+        return "rdisp";
+    case FigureParam::i:
+        return "i";
+    case FigureParam::model:
+        return "model";
+    case FigureParam::data:
+        return "data";
+    case FigureParam::amplitude:
+        return "amplitude";
+    case FigureParam::frequency:
+        return "frequency";
+    case FigureParam::start:
+        return "start";
+    }
+    return "";
+}
+
+const ParamRange* param_range(FigureParam p) {
+    switch (p) {
+    case FigureParam::zeta:
+        return &kZetaRange;
+    case FigureParam::theta:
+        return &kThetaRange;
+    case FigureParam::rdisp:
+        return &kRdispRange;
+    case FigureParam::i:
+        return &kIRange;
+    case FigureParam::amplitude:
+        return &kAmplitudeRange;
+    case FigureParam::frequency:
+        return &kFrequencyRange;
+    default:
+        return nullptr;
+    }
+}
+
 bool given(const FigureInputs& in, FigureParam p) {
     switch (p) {
     case FigureParam::zeta:
         return in.zeta.has_value();
+    case FigureParam::zeta_range:
+        return in.zeta_span.has_value();
     case FigureParam::theta:
-        return in.theta_deg.has_value();
+        return !in.theta_deg.empty();
     case FigureParam::rdisp:
-        return in.rdisp.has_value();
+        return !in.rdisp.empty();
     case FigureParam::i:
-        return in.i.has_value();
+        return !in.i.empty();
+    case FigureParam::model:
+        return !in.models.empty();
     case FigureParam::data:
         return !in.data.empty();
     case FigureParam::amplitude:
@@ -270,10 +329,143 @@ bool given(const FigureInputs& in, FigureParam p) {
     return false;
 }
 
+FigureInputs over(FigureInputs base, const FigureInputs& top) {
+    for (auto [to, from] : {std::pair{&base.zeta, &top.zeta},
+                            {&base.amplitude_um, &top.amplitude_um},
+                            {&base.frequency_khz, &top.frequency_khz}})
+        if (*from) *to = *from;
+    for (auto [to, from] :
+         {std::pair{&base.theta_deg, &top.theta_deg}, {&base.rdisp, &top.rdisp}, {&base.i, &top.i}})
+        if (!from->empty()) *to = *from;
+    if (top.zeta_span) base.zeta_span = top.zeta_span;
+    if (!top.models.empty()) base.models = top.models;
+    if (!top.data.empty()) base.data = top.data;
+    if (top.start) base.start = top.start;
+    return base;
+}
+
 std::optional<FigureParam> missing_param(const FigureEntry& e, const FigureInputs& in) {
     for (const FigureParamUse& u : e.params)
         if (u.required && !given(in, u.param)) return u.param;
     return std::nullopt;
+}
+
+FigureInputs with_defaults(const FigureEntry& e, const FigureInputs& given_inputs) {
+    const FigureInputs all = over(e.defaults, given_inputs);
+    FigureInputs out; // only what `e` takes
+    for (const FigureParamUse& u : e.params) switch (u.param) {
+        case FigureParam::zeta:
+            out.zeta = all.zeta;
+            break;
+        case FigureParam::zeta_range:
+            out.zeta_span = all.zeta_span;
+            break;
+        case FigureParam::theta:
+            out.theta_deg = all.theta_deg;
+            break;
+        case FigureParam::rdisp:
+            out.rdisp = all.rdisp;
+            break;
+        case FigureParam::i:
+            out.i = all.i;
+            break;
+        case FigureParam::model:
+            out.models = all.models;
+            break;
+        case FigureParam::data:
+            out.data = all.data;
+            break;
+        case FigureParam::amplitude:
+            out.amplitude_um = all.amplitude_um;
+            break;
+        case FigureParam::frequency:
+            out.frequency_khz = all.frequency_khz;
+            break;
+        case FigureParam::start:
+            out.start = all.start;
+            break;
+        }
+    return out;
+}
+
+FigureInputs fitting(const FigureEntry& e, FigureInputs in) {
+    auto use = [&](FigureParam p) -> const FigureParamUse* {
+        for (const FigureParamUse& u : e.params)
+            if (u.param == p) return &u;
+        return nullptr;
+    };
+    for (auto [p, list] : {std::pair{FigureParam::theta, &in.theta_deg},
+                           {FigureParam::rdisp, &in.rdisp},
+                           {FigureParam::i, &in.i}})
+        if (list->size() > 1 && !(use(p) && use(p)->list)) list->clear();
+    if (in.models.size() > 1 && !(use(FigureParam::model) && use(FigureParam::model)->list))
+        in.models.clear();
+    if (!use(FigureParam::zeta_range)) in.zeta_span.reset();
+    if (!use(FigureParam::zeta)) in.zeta.reset();
+    if (!(use(FigureParam::data) && use(FigureParam::data)->required)) {
+        in.data.clear();
+        in.amplitude_um.reset();
+        in.frequency_khz.reset();
+    }
+    return in;
+}
+
+std::string figures_taking_lists(FigureParam p) {
+    std::string s;
+    for (const FigureEntry& e : figure_registry())
+        for (const FigureParamUse& u : e.params)
+            if (u.param == p && u.list) s += (s.empty() ? "" : ", ") + e.id;
+    return s;
+}
+
+namespace {
+
+const std::vector<double>* list_of(const FigureInputs& in, FigureParam p) {
+    if (p == FigureParam::theta) return &in.theta_deg;
+    if (p == FigureParam::rdisp) return &in.rdisp;
+    if (p == FigureParam::i) return &in.i;
+    return nullptr;
+}
+
+} // namespace
+
+std::string input_error(const FigureEntry& e, const FigureInputs& in,
+                        const std::function<std::string(FigureParam)>& name) {
+    // zeta as one number where the figure takes a range, and the other way round.
+    auto takes = [&](FigureParam p) {
+        return std::any_of(e.params.begin(), e.params.end(),
+                           [p](const FigureParamUse& u) { return u.param == p; });
+    };
+    if (takes(FigureParam::zeta_range) && in.zeta && !in.zeta_span)
+        return name(FigureParam::zeta_range) + " has one value; " + e.id +
+               " takes a range FROM:TO (e.g. 0.01:10; default 0:3)";
+    if (takes(FigureParam::zeta) && in.zeta_span && !in.zeta)
+        return name(FigureParam::zeta) + " is a range; " + e.id + " takes one value";
+    for (const FigureParamUse& u : e.params) {
+        if (!given(in, u.param)) continue;
+        const std::string n = name(u.param);
+        const std::vector<double>* list = list_of(in, u.param);
+        const std::size_t count = list ? list->size() : u.param == FigureParam::model ? in.models.size() : 1;
+        if (count > 1 && !u.list) {
+            const std::string lists = figures_taking_lists(u.param);
+            return n + " has " + std::to_string(count) + " values; " + e.id + " takes one" +
+                   (lists.empty() ? "" : " (lists: " + lists + ")");
+        }
+        if (list) {
+            if (std::string why = check_number_list(n, *list, *param_range(u.param)); !why.empty())
+                return why;
+        } else if (u.param == FigureParam::model) {
+            if (std::string why = check_model_list(n, in.models); !why.empty()) return why;
+        } else if (u.param == FigureParam::zeta_range) {
+            if (std::string why = check_zeta_span(n, *in.zeta_span); !why.empty()) return why;
+        } else if (const ParamRange* r = param_range(u.param)) {
+            const double v = u.param == FigureParam::zeta        ? *in.zeta
+                             : u.param == FigureParam::amplitude ? *in.amplitude_um
+                                                                 : *in.frequency_khz;
+            if (std::string why = range_message(n, v, *r); !why.empty()) return why;
+        }
+    }
+    return e.check ? e.check(with_defaults(e, in)) : std::string();
 }
 
 const std::vector<FigureSpec>& paper_figures() {

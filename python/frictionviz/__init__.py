@@ -14,6 +14,7 @@ See docs/python.md.
 
 from __future__ import annotations
 
+import json
 import os
 from dataclasses import dataclass, field
 from typing import Any, List, Optional
@@ -309,13 +310,19 @@ def _write_file(path, data: bytes) -> None:
 
 
 class Figure:
-    """A rendered figure: ``png`` bytes (and ``svg`` when asked for), shown inline by Jupyter
-    (``_repr_png_`` / ``_repr_svg_``); ``save(path)`` writes the bytes."""
+    """A rendered figure: its ``data`` bytes (PNG, SVG or PDF), ``title``, ``caption`` (naming every parameter
+    behind it, as ID.json's) and ``parameters`` (a dict: the spec `frictionviz render --spec` reads, so the
+    command line draws the same figure from it). Shown inline by Jupyter (``_repr_png_`` / ``_repr_svg_``);
+    ``save(path)`` writes the bytes, ``save_spec(path)`` the parameters as JSON."""
 
-    def __init__(self, id: str, data: bytes, format: str):
+    def __init__(self, id: str, data: bytes, format: str, title: str = "", caption: str = "",
+                 parameters: Optional[dict] = None):
         self.id = id
         self.format = format
         self.data = data
+        self.title = title
+        self.caption = caption
+        self.parameters = parameters or {}
 
     def _repr_png_(self):
         return self.data if self.format == "png" else None
@@ -326,29 +333,65 @@ class Figure:
     def save(self, path) -> None:
         _write_file(path, self.data)
 
+    def save_spec(self, path) -> None:
+        _write_file(path, (json.dumps(self.parameters) + "\n").encode("utf-8"))
+
     def __repr__(self) -> str:
         return f"Figure({self.id!r}, {self.format}, {len(self.data)} bytes)"
 
 
+# The Python keyword of each spec key where it differs: the unit in the name, so that an angle in radians or
+# an amplitude in metres is not passed by mistake.
+_KEYWORD = {"theta": "theta_deg", "amplitude": "amplitude_um", "frequency": "frequency_khz"}
+_SPEC_KEY = {v: k for k, v in _KEYWORD.items()}
+
+
 def figures() -> List[tuple]:
     """The figures `frictionviz render` knows: [(id, title, [parameter keywords])], in the registry's order."""
-    return [(i, t, list(p)) for i, t, p in _core.figures()]
+    return [(i, t, [_KEYWORD.get(k, k) for k in p]) for i, t, p in _core.figures()]
+
+
+def _spec_value(name: str, value):
+    """A keyword's value as the spec file takes it: numbers exact (json writes repr), sequences and arrays as
+    lists, a (FROM, TO) zeta range as a list of two, strings as they are."""
+    if isinstance(value, (str, os.PathLike)):
+        return os.fspath(value)
+    a = np.asarray(value)
+    if a.dtype.kind in "US":
+        return a.tolist()
+    if a.dtype.kind not in "biuf":
+        raise TypeError(f"{name}: expected a number, a list of numbers or a string, got {type(value).__name__}")
+    a = a.astype(np.float64)
+    if not np.isfinite(a).all():
+        bad = a[~np.isfinite(a)].ravel()[0]
+        raise ValueError(f"{name} = {bad} is not a finite number")
+    return a.tolist()
 
 
 def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: float = 1.0, **params):
     """Renders figure ``id`` headless (OSMesa for PNG, cairo for SVG and PDF), as `frictionviz render` does.
 
-    params  the figure's parameters (figures() lists them): zeta, theta_deg (DEGREES), rdisp, i, data (a
-            path), amplitude_um, frequency_khz, start; none given: the figure's example inputs
+    params  the figure's parameters (figures() lists them): zeta, theta_deg (DEGREES), rdisp, i, model, data
+            (a path), amplitude_um, frequency_khz, start. rx and ry take lists for theta_deg, rdisp, i and
+            model (one curve per combination) and a (FROM, TO) zeta range; none given: the figure's example
+            inputs (as `render --figure all`)
     size    (width, height) in pixels; scale the CLI's --scale
-    out     None: returns a Figure (bytes in .data, inline in Jupyter); a path: writes the bytes there and
-            returns the path
+    out     None: returns a Figure (bytes in .data, inline in Jupyter); a path: writes the bytes there
+            (atomically) and returns the path
 
-    The PNG bytes equal those of `frictionviz render --figure ID --size WxH` (tests/test_render.py).
+    The checks and messages are those of `frictionviz render --spec` (ValueError); the PNG bytes equal the
+    CLI's for the same figure, size and parameters (tests/test_render.py).
     """
+    spec = {"id": id}
+    for name, value in params.items():
+        if name in _SPEC_KEY.values():
+            raise TypeError(f"render: {name}: use {_KEYWORD[name]} (the unit is in the name)")
+        spec[_SPEC_KEY.get(name, name)] = _spec_value(name, value)
     w, h = size
-    data = _core.render(id, params, int(w), int(h), float(scale), format)
+    data, title, caption, parameters = _core.render(json.dumps(spec), not params, int(w), int(h), float(scale),
+                                                    format)
+    fig = Figure(id, data, format, title, caption, json.loads(parameters))
     if out is None:
-        return Figure(id, data, format)
+        return fig
     _write_file(out, data)
     return out

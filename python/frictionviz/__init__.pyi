@@ -1,6 +1,6 @@
 # Type stub of the frictionviz package (docs/python.md). Angles are in DEGREES (theta_deg) everywhere.
 from os import PathLike
-from typing import Any, List, Literal, Optional, Tuple, Union
+from typing import Any, Dict, List, Literal, Optional, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -111,7 +111,12 @@ class Figure:
     id: str
     format: str
     data: bytes
-    def __init__(self, id: str, data: bytes, format: str) -> None: ...
+    title: str
+    caption: str
+    parameters: Dict[str, Any]
+    def __init__(self, id: str, data: bytes, format: str, title: str = ..., caption: str = ...,
+                 parameters: Optional[Dict[str, Any]] = ...) -> None: ...
+    def save_spec(self, path: Path) -> None: ...
     def _repr_png_(self) -> Optional[bytes]: ...
     def _repr_svg_(self) -> Optional[str]: ...
     def save(self, path: Path) -> None: ...

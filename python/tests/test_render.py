@@ -50,3 +50,34 @@ def test_svg_and_errors():
         fv.render("fig10", zeta=0.5)
     with pytest.raises(ValueError, match=r"zeta = 200 is out of range"):
         fv.render("scene", zeta=200, theta_deg=60, rdisp=2, i=1)
+
+
+def test_family_equals_cli_and_spec_round_trip(tmp_path):
+    # A family of our own from Python equals `render --figure rx` with the same lists, and the Figure's
+    # parameters are a spec file from which the command line draws the same bytes.
+    cli("render", "--figure", "rx", "--theta", "30,60", "--rdisp", "1,3", "--i", "0.5", "--model", "dahl,rigid",
+        "--zeta", "0.05:2", "--size", "640x400", "--out", tmp_path)
+    want = (tmp_path / "rx.png").read_bytes()
+    fig = fv.render("rx", size=(640, 400), theta_deg=[30, 60], rdisp=[1, 3], i=0.5, model=["dahl", "rigid"],
+                    zeta=(0.05, 2))
+    assert fig.data == want
+    assert "r_disp" in fig.caption and fig.title
+    assert fig.parameters["theta"] == [30, 60] and fig.parameters["zeta"] == [0.05, 2]
+    fig.save_spec(tmp_path / "spec.json")
+    again = tmp_path / "again"
+    again.mkdir()
+    cli("render", "--spec", tmp_path / "spec.json", "--out", again)
+    assert (again / "rx.png").read_bytes() == want
+
+
+def test_render_errors_are_the_spec_files():
+    with pytest.raises(ValueError, match="theta"):
+        fv.render("rx", theta_deg=[30, 30])           # a value twice
+    with pytest.raises(ValueError, match="allowed"):
+        fv.render("map", rdisp=[1, 3])                # map takes one r_disp
+    with pytest.raises(TypeError, match="theta_deg"):
+        fv.render("scene", zeta=0.3, theta=60, rdisp=2, i=1)   # degrees must be said
+    with pytest.raises(ValueError, match="finite"):
+        fv.render("rx", rdisp=[1, float("nan")])
+    with pytest.raises(ValueError, match="unknown"):
+        fv.render("fig99")

@@ -97,6 +97,7 @@ enum class Legend {
 struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
     bool equal_aspect = false;
+    bool log_x = false; // a logarithmic x axis (x_min > 0)
     std::optional<double> x_min, x_max, y_min, y_max;
     std::vector<SeriesData> series;
     std::vector<SegmentData> segments;

@@ -7,6 +7,7 @@
 #include "fv/steady_state.hpp"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -15,6 +16,13 @@ namespace fv {
 
 struct FigureData;
 struct FitResult;
+struct MeasurementSet;
+
+// A range of zeta: curves over [from, to], from < to (figure_family.hpp reads and checks it).
+struct ZetaSpan {
+    double from = 0, to = 3;
+    bool operator==(const ZetaSpan& o) const { return from == o.from && to == o.to; }
+};
 
 // The order of FigureContent's alternatives (a spec's kind is the index of its content).
 enum class FigureKind {
@@ -50,6 +58,14 @@ struct RatioCurvesFigure {
     std::vector<double> zetas;
     std::size_t zeta_budget = 0;
     bool side_force = false; // plot r_y, the mean force across v_b, instead of r_x
+    // A family (figure_family.hpp: rx, ry with lists): each curve's colour and dash by what varies, the
+    // legend naming only that; its zeta axis spans `axis` (else from min(0, first zeta) to the last), on a
+    // log scale with log_zeta (sampled evenly in log zeta then).
+    bool family = false;
+    std::optional<ZetaSpan> axis;
+    bool log_zeta = false;
+    Start start = Start::rest;                  // the history where steady states coexist
+    std::shared_ptr<const MeasurementSet> data; // measured r_x drawn over the curves (rx --data)
 };
 
 // The rigid model at one velocity ratio and angle (r_disp and i do not apply).

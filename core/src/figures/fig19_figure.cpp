@@ -18,7 +18,7 @@ FigureSpec fig19(const FigureInputs& in) {
     FitOptions fo;
     ro.amplitude_um = in.amplitude_um;
     ro.frequency_khz = in.frequency_khz;
-    fo.theta_deg = in.theta_deg;
+    if (!in.theta_deg.empty()) fo.theta_deg = in.theta_deg.front();
     const double amplitude = in.amplitude_um.value_or(units::kLittmannAmplitudeUm);
     const double frequency = in.frequency_khz.value_or(units::kLittmannFrequencyKhz);
     fo.amplitude_um = amplitude;
@@ -52,7 +52,9 @@ FigureSpec fig19(const FigureInputs& in) {
         "r_disp fitted by least squares in ln r_disp over [0.1, 100] (" +
         std::string(b.weighted ? "weights 1/σ²" : "unweighted") +
         "), model curves at 120 evenly spaced ζ from the continuous-time solver (tolerance 1e-8)" +
-        (in.theta_deg ? "; θ = " + format_number("%g", *in.theta_deg) + "° for points without one" : "") +
+        (!in.theta_deg.empty()
+             ? "; θ = " + format_number("%g", in.theta_deg.front()) + "° for points without one"
+             : "") +
         "; vibration A = " + a_text + " µm, f = " + f_text + " kHz" +
         (paper_vibration
              ? " (where --amplitude or --frequency is not given: the paper's experiment, Littmann "

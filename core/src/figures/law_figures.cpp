@@ -37,7 +37,9 @@ FigureEntry fig4_entry() {
     e.title = "mechanism: velocity and Coulomb friction turning over a period, rigid model";
     e.kind = FigureKind::mechanism;
     e.params = {{FigureParam::zeta}, {FigureParam::theta}};
-    e.make = [](const FigureInputs& in) { return fig4(in.zeta.value_or(0.5), in.theta_deg.value_or(90)); };
+    e.defaults.zeta = 0.5;
+    e.defaults.theta_deg = {90};
+    e.make = [](const FigureInputs& in) { return fig4(in.zeta.value_or(0.5), one(in.theta_deg, 90)); };
     return e;
 }
 

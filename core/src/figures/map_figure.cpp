@@ -11,8 +11,12 @@ FigureEntry map_entry() {
     e.title = "r_x over (ζ, θ) with the best vibration angle θ*(ζ), beyond the paper";
     e.kind = FigureKind::map;
     e.params = {{FigureParam::rdisp}, {FigureParam::i}, {FigureParam::start}};
+    // One map a figure: lists are refused (docs/figures.md says why and how to draw several).
+    e.defaults.rdisp = {2};
+    e.defaults.i = {1};
+    e.defaults.start = Start::rest;
     e.make = [](const FigureInputs& in) {
-        return map_figure(in.rdisp.value_or(2), in.i.value_or(1), in.start.value_or(Start::rest));
+        return map_figure(one(in.rdisp, 2), one(in.i, 1), in.start.value_or(Start::rest));
     };
     e.summary =
         "Beyond the paper: r_x over (ζ, θ) for r_disp = 2, i = 1 (a 200 × 91 grid), with the best angle "

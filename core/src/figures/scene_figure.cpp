@@ -15,11 +15,15 @@ FigureEntry scene_entry() {
                 {FigureParam::rdisp, true},
                 {FigureParam::i, true},
                 {FigureParam::start}};
-    e.example = {0.3, 30, 2, 1};
+    e.defaults.start = Start::rest;
+    e.example.zeta = 0.3;
+    e.example.theta_deg = {30};
+    e.example.rdisp = {2};
+    e.example.i = {1};
     e.make = [](const FigureInputs& in) {
-        return scene_figure({in.zeta.value_or(0), in.theta_deg.value_or(0) * kPi / 180, in.rdisp.value_or(1),
-                             in.i.value_or(1)},
-                            in.start.value_or(Start::rest));
+        return scene_figure(
+            {in.zeta.value_or(0), one(in.theta_deg, 0) * kPi / 180, one(in.rdisp, 1), one(in.i, 1)},
+            in.start.value_or(Start::rest));
     };
     return e;
 }
