@@ -39,10 +39,13 @@ TEST_CASE("registered_figure gives a registered figure's definition and names wh
     }
     fv::FigureInputs in;
     in.zeta = 0.3;
-    in.theta_deg = 60;
-    in.rdisp = 2;
-    in.i = 1;
+    in.theta_deg = {60};
+    in.rdisp = {2};
+    in.i = {1};
     CHECK(fv::app::registered_figure("scene", in).kind() == fv::FigureKind::scene);
+    // A list where the figure takes one value: the same check as every other door's.
+    in.theta_deg = {30, 60};
+    CHECK_THROWS_WITH(fv::app::registered_figure("scene", in), Catch::Contains("theta_deg"));
 }
 
 TEST_CASE("picture_size_error holds the limits of render --size and --scale", "[figures]") {
