@@ -116,6 +116,11 @@ const ScriptAction kActions[] = {
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.speed = s.number; }},
     {"trail", ScriptArg::number, kTrailRange, "trail length in periods",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.trail_periods = s.number; }},
+    {"frame",
+     ScriptArg::word,
+     {},
+     "body | ground: what stands still in the top view",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.frame = parse_frame(s.text); }},
     {"curves",
      ScriptArg::none,
      {},
@@ -234,6 +239,8 @@ std::string word_error(const ScriptAction& a, const std::string& v) {
         Start unused = Start::rest;
         return parse_start(v, unused) ? "" : "start = " + quoted_text(v) + "; allowed: " + kStartNames;
     }
+    if (std::string(a.name) == "frame")
+        return parse_frame(v) ? "" : "frame = " + quoted_text(v) + "; allowed: body, ground";
     for (const FigureSpec* f : presets())
         if (f->id == v) return "";
     return "unknown preset " + quoted_text(v) + "; allowed: " + preset_ids();
