@@ -224,3 +224,21 @@ TEST_CASE("Top view frame: in the ground frame a stuck tip stands still while th
         CHECK(marks(g, Mark::circle).size() >= 1);
     }
 }
+
+TEST_CASE("Top view frame: the choice goes from the panel to the view and to an exported animation",
+          "[frame][gui]") {
+    AppState a(Model::dahl, Params{0.3, 0, 2, 0}, 0.7, 60);
+    CHECK(a.view().frame == FrameChoice::body); // the default, as before the choice
+    UiEdits e;
+    e.frame = FrameChoice::ground;
+    e.export_animation = AnimationRequest{"loop.gif", AnimationSpec{}};
+    const AppState::Actions act = a.sync(e);
+    CHECK(a.view().frame == FrameChoice::ground);
+    REQUIRE(act.export_animation);
+    CHECK(act.export_animation->spec.frame == FrameChoice::ground);
+    // A double-click resets zoom and pan, not the frame.
+    UiEdits reset;
+    reset.reset_view = true;
+    a.sync(reset);
+    CHECK(a.view().frame == FrameChoice::ground);
+}

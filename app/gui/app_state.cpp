@@ -198,6 +198,7 @@ AppState::Actions AppState::sync(const UiEdits& e, bool wait) {
         spec.model = ui_.session.model;
         spec.params = ui_.session.params;
         spec.steady.start = ui_.session.start;
+        spec.frame = ui_.session.view.frame; // the top view as on screen
         spec.vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
     }
     return act;
