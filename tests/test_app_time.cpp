@@ -109,9 +109,9 @@ TEST_CASE("App time: 'steady state' lands on the solver's periodic state", "[gui
     CHECK(r.ui().status.find("no transient") != std::string::npos);
 }
 
-TEST_CASE(
-    "App scene: the spring is green while the tip sticks and vermillion while it slips (theta = 0, i = 0)",
-    "[gui][scene]") {
+TEST_CASE("App scene: the spring is green while the tip sticks and reddish purple while it slips (theta = 0, "
+          "i = 0)",
+          "[gui][scene]") {
     // theta = 0, i = 0 is a 1-D stick-slip element: P = zeta tau + sin tau (in x_v). In the steady state with
     // 2 z_ss longer than P's backward travel, the tip slips forward until P turns back (zeta + cos tau = 0 at
     // tau1), sticks while P goes back and forth, and slips again once P has come back to where it turned
@@ -139,9 +139,9 @@ TEST_CASE(
         INFO("phase " << std::fmod(c.phase, 2 * kPi) << ", tau1 " << tau1 << ", tau3 " << tau3);
         const SeriesData* s = spring(panel, sim.P());
         REQUIRE(s != nullptr);
-        CHECK(s->ink == (c.slips ? Ink::tip : Ink::pull));
+        CHECK(s->ink == (c.slips ? Ink::slip : Ink::pull));
         REQUIRE(panel.circles.size() == 1);
-        CHECK(panel.circles[0].ink == (c.slips ? Ink::tip : Ink::pull));
+        CHECK(panel.circles[0].ink == (c.slips ? Ink::slip : Ink::pull));
         CHECK(sim.slipping() == c.slips);
     }
 }

@@ -5,7 +5,9 @@
 // - no two texts of a figure overlap (labels, ticks, titles, legends), on the default page and the
 // snapshots';
 // - every force plot states its sign convention, F = (P − T) F_c / z_ss, on its axis and in its caption;
-// - format_number never prints a negative zero.
+// - format_number never prints a negative zero;
+// - the app's live top view, through a steady period at theta = 0, 30, 90 and 150 degrees in the body and the
+// ground frame: no two texts overlap, no label lies on an arrow or a marker, no arrow lies along another.
 #include "figures/figure_painter.hpp"
 #include "figures/render_session.hpp"
 #include "gui/app_state.hpp"
@@ -15,6 +17,8 @@
 #include "fv/figure_registry.hpp"
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
+#include "fv/live_panels.hpp"
+#include "fv/ode_solver.hpp"
 #include "tools/figure_examples.hpp"
 
 #include <catch2/catch.hpp>
@@ -386,4 +390,79 @@ TEST_CASE("format_number: a value that rounds to zero has no sign", "[layout][mi
     CHECK(fv::format_number("%.4f", -0.1553) == "-0.1553");
     CHECK(fv::format_number("%.0e", 1e-8) == "1e-08");
     CHECK(fv::format_number("%g", -2.5) == "-2.5");
+}
+
+namespace {
+
+// The first pair of arrows in `list` of which one runs along the other (more than a third of its shaft
+// within the two shafts' half widths plus a pixel of the other's), as a description, or "": one would hide
+// the other.
+std::string arrow_on_arrow(const DisplayList& list) {
+    std::vector<const fv::gfx::dl::Arrow*> arrows;
+    for (const auto& c : list.commands)
+        if (const auto* a = std::get_if<fv::gfx::dl::Arrow>(&c)) arrows.push_back(a);
+    auto distance = [](Vec2 p, Vec2 a, Vec2 b) {
+        const float dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+        const float t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.f, 1.f) : 0.f;
+        return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
+    };
+    for (const auto* a : arrows)
+        for (const auto* b : arrows) {
+            if (a == b) continue;
+            const float reach = 0.5f * (a->style.shaft.width + b->style.shaft.width) + 1;
+            int near = 0;
+            constexpr int kN = 24;
+            for (int k = 0; k <= kN; ++k) {
+                const float t = static_cast<float>(k) / kN;
+                const Vec2 p{a->from.x + t * (a->to.x - a->from.x), a->from.y + t * (a->to.y - a->from.y)};
+                near += distance(p, b->from, b->to) <= reach;
+            }
+            if (near * 3 > kN + 1)
+                return "arrow from (" + std::to_string(a->from.x) + ", " + std::to_string(a->from.y) +
+                       ") along the arrow from (" + std::to_string(b->from.x) + ", " +
+                       std::to_string(b->from.y) + ")";
+        }
+    return "";
+}
+
+} // namespace
+
+TEST_CASE("The live top view reads at every angle: no text on text, label on a shape or arrow on arrow",
+          "[layout][labels][live]") {
+    // The app's top view at 1280x800 (the panel beside it), through a steady period. At theta = 0 P, T, the
+    // spring and both arrows lie on one line: the labels collided and the v arrow hid under the friction's.
+    const Rect top = fv::app::layout_dashboard({346, 4, 1276, 796}).top_view;
+    fv::app::RenderSession& s = session();
+    int labels = 0, arrows = 0;
+    for (const double theta_deg : {0.0, 30.0, 90.0, 150.0})
+        for (const double zeta : {0.15, 0.5}) {
+            const fv::Params p{zeta, theta_deg * fv::kPi / 180, 2, 0};
+            fv::LiveSim sim(fv::Model::dahl, p);
+            sim.start_steady(fv::ode_solve(p).lag);
+            sim.step(2 * sim.steps_per_period());
+            const int n = sim.steps_per_period();
+            for (int k = 0; k < 16; ++k) {
+                sim.step(n / 16);
+                for (const fv::FrameChoice frame : {fv::FrameChoice::body, fv::FrameChoice::ground}) {
+                    fv::ViewState view;
+                    view.frame = frame;
+                    fv::gfx::Canvas& canvas = s.canvas();
+                    canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
+                    fv::app::paint_panel(canvas, fv::top_view_panel(sim, view), top);
+                    canvas.end_recording();
+                    const DisplayList& list = canvas.display_list();
+                    for (const auto& c : list.commands) {
+                        labels += std::holds_alternative<fv::gfx::dl::Text>(c);
+                        arrows += std::holds_alternative<fv::gfx::dl::Arrow>(c);
+                    }
+                    INFO("theta " << theta_deg << ", zeta " << zeta << ", step " << k << ", "
+                                  << fv::to_string(frame) << " frame");
+                    CHECK(overlapping_texts(list, s.fonts(), 1.0f) == "");
+                    CHECK(label_on_shape(list, s.fonts()) == "");
+                    CHECK(arrow_on_arrow(list) == "");
+                }
+            }
+        }
+    CHECK(labels > 1000);
+    CHECK(arrows > 3 * 4 * 2 * 16 * 2);
 }

@@ -59,6 +59,7 @@ Session unusual() {
     s.view.pan = Vec2(0.3, -1.25);
     s.view.follow = false;
     s.view.trail_periods = 3.5;
+    s.view.frame = FrameChoice::ground;
     s.presentation = true;
     s.pins.push_back({"Dahl, θ = 60°, r_{disp} = 2, i = 0", {0, 0.5, 1.0 / 3}, {0.1, std::nan(""), 0.7}});
     s.pins.push_back({"rigid, θ = 90°", {0.25}, {0.2 + 0.1}});
@@ -83,6 +84,7 @@ void check_same(const Session& a, const Session& b) {
     CHECK(a.view.pan.y() == b.view.pan.y());
     CHECK(a.view.follow == b.view.follow);
     CHECK(a.view.trail_periods == b.view.trail_periods);
+    CHECK(a.view.frame == b.view.frame);
     CHECK(a.presentation == b.presentation);
     REQUIRE(a.pins.size() == b.pins.size());
     for (std::size_t k = 0; k < a.pins.size(); ++k) {
@@ -127,6 +129,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     CHECK(s.view.pan.y() != d.view.pan.y());
     CHECK(s.view.follow != d.view.follow);
     CHECK(s.view.trail_periods != d.view.trail_periods);
+    CHECK(s.view.frame != d.view.frame);
     CHECK(s.pins.size() != d.pins.size());
     CHECK(s.presentation != d.presentation);
     CHECK(s.data_file != d.data_file);
@@ -150,6 +153,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
                             "\"zoom\": 2.5",
                             "\"follow\": false",
                             "\"trail_periods\": 3.5",
+                            "\"frame\": \"ground\"",
                             "\"data\": \"",
                             "\"pan\": [0.3, -1.25]",
                             "\"presentation\": true",
@@ -235,6 +239,11 @@ TEST_CASE("session JSON: the start goes through the file, a session from before 
     CHECK(a.sim().tau() == 0);
     CHECK((a.sim().P() - a.sim().T()).x() == Approx(10).epsilon(1e-15));
     CHECK(session_of(a.ui()).start == Start::sliding);
+    // The top view's frame likewise: body when missing (as before it could be chosen), a bad name refused.
+    CHECK(parse_session(old, "old.json").view.frame == FrameChoice::body);
+    CHECK(parse_session(R"({"version": 1, "view": {"frame": "ground"}})", "s.json").view.frame ==
+          FrameChoice::ground);
+    CHECK(refusal(R"({"version": 1, "view": {"frame": "floor"}})").find("frame") != std::string::npos);
 }
 
 TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offending key or value",
@@ -280,6 +289,7 @@ TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offendi
                   "s.json:2:2: unknown key \"zetta\"; allowed: version, model, zeta"},
              Case{"{\"version\": 1,\n \"view\": {\"zoom\": 2, \"tilt\": 1}}",
                   "s.json:2:22: unknown key \"tilt\" in \"view\"; allowed: zoom, pan, follow, trail_periods, "
+                  "frame, "
                   "presentation"},
              Case{"{\"version\": 1,\n \"view\": {\"zoom\": 50}}",
                   "s.json:2:19: zoom = 50 is out of range; allowed: zoom in [0.05, 20]"},

@@ -67,7 +67,7 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
     };
     for (const Case& c : {
              Case{"?zeta=0.3&thetta=60",
-                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start"},
+                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start, frame"},
              Case{"?zeta=abc", "column 7: zeta = 'abc' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=0x10", "column 7: zeta = '0x10' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=inf", "column 7: zeta = 'inf' is not a decimal number; allowed: zeta in [0, 100]"},
@@ -87,6 +87,8 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
              Case{"?start=moving", "column 8: start = 'moving'; allowed: rest, sliding"},
              Case{"?start=", "column 8: start = ''; allowed: rest, sliding"},
              Case{"?start=rest&start=sliding", "column 13: 'start' is given twice; each key at most once"},
+             Case{"?frame=floor", "column 8: frame = 'floor'; allowed: body, ground"},
+             Case{"?frame=body&frame=ground", "column 13: 'frame' is given twice; each key at most once"},
              Case{"?zeta=1&i=1&zeta=2", "column 13: 'zeta' is given twice; each key at most once"},
              Case{"?model=dahl&model=dahl", "column 13: 'model' is given twice; each key at most once"},
              Case{"?zeta=1&&i=1", "column 9: empty item (a stray '&'); expected KEY=VALUE"},
@@ -217,4 +219,30 @@ TEST_CASE("share link: damaged links are refused with one line, never anything e
             REQUIRE(w.find_first_of("\r\n") == std::string::npos);
         }
     }
+}
+
+TEST_CASE("share link: the ground frame goes through the link, and a body-frame link has no frame key",
+          "[link]") {
+    const Params p{0.3, 0, 2, 0};
+    const std::string ground = share_link(Model::dahl, p, Start::rest, FrameChoice::ground);
+    CHECK(ground == "?zeta=0.3&theta=0&rdisp=2&i=0&model=dahl&frame=ground");
+    CHECK(share_link(Model::dahl, p, Start::sliding, FrameChoice::ground) ==
+          "?zeta=0.3&theta=0&rdisp=2&i=0&model=dahl&start=sliding&frame=ground");
+    Model m = Model::rigid;
+    Params q{};
+    Start start = Start::rest;
+    FrameChoice frame = FrameChoice::body;
+    apply_share_link(parse_share_link(ground), m, q, start, frame);
+    CHECK(frame == FrameChoice::ground);
+    CHECK(start == Start::rest);
+    CHECK(q.zeta == p.zeta);
+    // The body frame is the default: its link is the one written before the frame could be chosen, and a
+    // link without the key keeps the frame it is applied over.
+    const std::string body = share_link(Model::dahl, p, Start::rest, FrameChoice::body);
+    CHECK(body == share_link(Model::dahl, p));
+    CHECK(body.find("frame") == std::string::npos);
+    apply_share_link(parse_share_link(body), m, q, start, frame);
+    CHECK(frame == FrameChoice::ground);
+    apply_share_link(parse_share_link("?frame=body"), m, q, start, frame);
+    CHECK(frame == FrameChoice::body);
 }

@@ -55,7 +55,7 @@ int main() {
         if (!query.empty()) {
             try {
                 fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params,
-                                     o.start.start);
+                                     o.start.start, o.start.view.frame);
                 // As gui --link does: the physical view (with the page's default A and f) must be finite.
                 if (const std::string why = fv::units::physical_view_error(
                         o.start.params, o.start.amplitude_um, o.start.frequency_khz);
@@ -70,9 +70,10 @@ int main() {
         }
         // The address changes only when the state does: a page opened without a query (or with a bad one)
         // keeps its address until a slider moves.
-        std::string shown = fv::share_link(o.start.model, o.start.params, o.start.start);
+        std::string shown = fv::share_link(o.start.model, o.start.params, o.start.start, o.start.view.frame);
         o.on_state = [&shown](const fv::app::UiState& ui) {
-            std::string link = fv::share_link(ui.session.model, ui.session.params, ui.session.start);
+            std::string link =
+                fv::share_link(ui.session.model, ui.session.params, ui.session.start, ui.session.view.frame);
             if (link == shown) return;
             shown = std::move(link);
             fv_replace_page_query(shown.c_str());

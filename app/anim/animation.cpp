@@ -30,21 +30,6 @@ std::string pretty(double v) {
     return o.str();
 }
 
-// Every x coordinate of the panel moved by dx (the loop's axes move with the body and with time).
-void shift_x(PanelData& p, double dx) {
-    const Vec2 d(dx, 0);
-    for (SeriesData& s : p.series)
-        for (double& x : s.x) x += dx;
-    for (SegmentData& s : p.segments) s.a += d, s.b += d;
-    for (PointData& q : p.points) q.at += d;
-    for (CircleData& c : p.circles) c.center += d;
-    for (ArrowData& a : p.arrows) a.from += d, a.to += d;
-    for (BandData& b : p.bands) b.x0 += dx, b.x1 += dx;
-    if (p.heatmap) p.heatmap->x0 += dx, p.heatmap->x1 += dx;
-    if (p.x_min) *p.x_min += dx;
-    if (p.x_max) *p.x_max += dx;
-}
-
 std::string caption_of(const Spec& s, double rx) {
     const Params& p = s.params;
     std::string c = s.model == Model::rigid ? "rigid model" : "Dahl model, i = " + format_number("%g", p.i);
@@ -52,6 +37,18 @@ std::string caption_of(const Spec& s, double rx) {
     if (s.model == Model::dahl) c += "   r_{disp} = " + format_number("%g", p.rdisp);
     c += "   steady state: r_{x} = " + format_number("%.4f", rx);
     return c;
+}
+
+// The top view's frame for the loop: the parameters' (top_view_frame.hpp). In the ground frame the body
+// drifts D = zeta 2 pi per period; where the loop carries it across the frame at least once, the frame is
+// widened (about its centre, both ways) to D / k for whole k, so that the last frame wraps onto the first.
+FrameBox loop_frame(const Spec& s, double aspect) {
+    FrameBox b = steady_frame(s.model, s.params, ViewState{}.trail_periods, aspect);
+    const double drift = s.periods * 2 * kPi * s.params.zeta, w = b.width();
+    if (s.frame != FrameChoice::ground || !(w > 0) || drift < w) return b;
+    const double k = (drift / std::floor(drift / w)) / w;
+    const double mx = 0.5 * (b.x0 + b.x1), my = 0.5 * (b.y0 + b.y1);
+    return {mx + k * (b.x0 - mx), mx + k * (b.x1 - mx), my + k * (b.y0 - my), my + k * (b.y1 - my)};
 }
 
 } // namespace
@@ -129,6 +126,27 @@ Frames::Frames(const Spec& spec)
     // line is labelled) would be decided by rounding.
     start_.step(2 * n + 1);
     sim_ = start_;
+    box_ = loop_frame(spec, 0);
+}
+
+gfx::Rect Frames::top_view_area(gfx::Vec2 page) const {
+    const gfx::Rect area{4, 24, page.x - 4, page.y - 4};
+    return spec_.view == View::scene ? area : app::layout_dashboard(area).top_view;
+}
+
+void Frames::fit(gfx::Canvas& canvas, gfx::Vec2 page, float pixel_ratio) {
+    // Twice: the y tick labels' width depends on the frame, the frame on the area they leave.
+    for (int pass = 0; pass < 2; ++pass) {
+        canvas.begin(page, pixel_ratio, gfx::colors::white);
+        ViewState view;
+        view.frame = spec_.frame;
+        view.box = box_;
+        const gfx::PlotTransform t =
+            app::paint_panel(canvas, top_view_panel(sim_at(0), view), top_view_area(page));
+        canvas.end_recording();
+        if (t.area.width() > 0 && t.area.height() > 0) aspect_ = t.area.width() / t.area.height();
+        box_ = loop_frame(spec_, aspect_);
+    }
 }
 
 const LiveSim& Frames::sim_at(int k) {
@@ -153,22 +171,29 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     canvas.text({page.x / 2, 5}, caption_of(spec_, rx_), ts);
     const gfx::Rect area{4, 24, page.x - 4, page.y - 4};
 
-    // The top view in the frame moving with the body's mean velocity v_b: the camera fixed on where P would
-    // be without vibrating, the axis reading x - v_b t. The trails stay where they were laid down.
+    // The top view in the frame fixed for the loop's parameters (it never re-frames). Body frame: the camera
+    // moves with the body's mean velocity v_b, on where P would be without vibrating, the axis reading
+    // x - v_b t; the trails stay where they were laid down. Ground frame: the floor stands still and the
+    // body wraps round at the edges.
     ViewState view;
-    const double centre = sim.vibration_centre().x();
-    view.follow = false;
-    view.pan = Vec2(centre, 0);
+    view.frame = spec_.frame;
+    view.box = box_;
+    view.aspect = aspect_;
     PanelData top = top_view_panel(sim, view);
-    shift_x(top, -centre);
-    top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
+    if (spec_.frame == FrameChoice::body) {
+        const double centre = sim.vibration_centre().x();
+        shift_panel_x(top, -centre);
+        // Set rather than shifted back: the same numbers in every frame, not the same up to round-off.
+        top.x_min = box_.x0, top.x_max = box_.x1;
+        top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
+    }
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
         return;
     }
     // The force plot's time axis counts back from now, so that it reads the same every period.
     PanelData force = force_panel_live(sim, curves_);
-    shift_x(force, -sim.tau());
+    shift_panel_x(force, -sim.tau());
     force.x_title = "time τ − τ_{now}";
     app::paint_dashboard(
         canvas, area,
@@ -184,6 +209,7 @@ std::string export_animation(const Spec& spec, const std::string& path, const Pr
     Frames frames(spec);
     const int total = frames.count();
     const gfx::Vec2 page = session.logical_page();
+    frames.fit(session.canvas(), page, session.pixel_ratio());
     auto render = [&](int k) {
         gfx::Canvas& canvas = session.canvas();
         canvas.begin(page, session.pixel_ratio(), gfx::colors::white);

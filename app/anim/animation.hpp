@@ -50,6 +50,12 @@ class Frames {
     // Draws frame k over the logical page (the canvas between begin() and end()). Frames are cheapest in
     // increasing order; any order works.
     void paint(gfx::Canvas& canvas, gfx::Vec2 page, int k);
+    // Measures the top view's data area on this page (drawing frame 0 into a recording that is thrown
+    // away), so that its frame fits the area exactly: the ground frame's wrap-around then falls on the
+    // axes' edges. Without it the frame is the parameters' own, widened by the painter.
+    void fit(gfx::Canvas& canvas, gfx::Vec2 page, float pixel_ratio);
+    // The frame the top view shows in every frame of the loop (relative to the vibration centre).
+    const FrameBox& frame_box() const { return box_; }
     // The steady r_x the caption shows.
     double rx() const { return rx_; }
 
@@ -62,6 +68,9 @@ class Frames {
     std::optional<RatioCurves> curves_;
     LiveSim start_, sim_;
     int at_ = 0; // the frame sim_ is at
+    FrameBox box_;
+    double aspect_ = 0;
+    gfx::Rect top_view_area(gfx::Vec2 page) const;
 };
 
 struct Progress {

@@ -33,7 +33,7 @@ void draw_progress(int done, int total) {
 Command add_animate_command(CLI::App& root) {
     struct Args {
         ModelArgs model;
-        std::string out, view = "dashboard", size = "960x600";
+        std::string out, view = "dashboard", size = "960x600", frame = "body";
         int periods = 2, lesson = 0;
         double fps = 30, speed = 0.5, scale = 1;
     };
@@ -76,6 +76,12 @@ Command add_animate_command(CLI::App& root) {
                     "panel (top view, force plot, r_x(zeta)); both under a caption with the parameters")
         ->check(CLI::IsMember({"scene", "dashboard"}))
         ->capture_default_str();
+    cmd->add_option("--frame", a->frame,
+                    "what stands still in the top view: body (the camera moves with the body, the floor "
+                    "slides past) or ground (the floor stands still, a stuck tip T too; the body drifts "
+                    "through and wraps round at the edges)")
+        ->check(CLI::IsMember({"body", "ground"}))
+        ->capture_default_str();
     return {cmd, [a, cmd] {
                 const std::optional<anim::Format> format = anim::format_for_path(a->out);
                 if (!format)
@@ -105,6 +111,9 @@ Command add_animate_command(CLI::App& root) {
                 s.fps = a->fps;
                 s.speed = a->speed;
                 s.view = a->view == "scene" ? anim::View::scene : anim::View::dashboard;
+                s.frame = parse_frame(a->frame).value_or(FrameChoice::body);
+                if (a->lesson > 0 && cmd->get_option("--frame")->count() == 0) // the step's, unless asked
+                    s.frame = app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup.frame;
                 const PixelSize sz = parse_size(a->size);
                 s.width = sz.w;
                 s.height = sz.h;

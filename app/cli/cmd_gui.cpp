@@ -58,7 +58,7 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (const auto start = given_start(cmd, a.model.solver.start)) s.start = *start;
     if (cmd.get_option("--link")->count() > 0) {
         try {
-            apply_share_link(parse_share_link(a.link), s.model, s.params, s.start);
+            apply_share_link(parse_share_link(a.link), s.model, s.params, s.start, s.view.frame);
         } catch (const LinkError& e) {
             throw UsageError("--link: " + std::string(e.what()));
         }

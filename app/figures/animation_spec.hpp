@@ -5,6 +5,7 @@
 
 #include "fv/params.hpp"
 #include "fv/steady_state.hpp"
+#include "fv/top_view_frame.hpp"
 
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@ struct AnimationSpec {
     int width = 960, height = 600; // pixels (MP4: even)
     float scale = 1;               // pixels per logical unit
     AnimationView view = AnimationView::dashboard;
+    FrameChoice frame = FrameChoice::body; // what stands still in the top view: the body or the ground
     AnimationFormat format = AnimationFormat::gif;
     SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point (its start: the
                           // history that picks between coexisting steady states)

@@ -203,6 +203,8 @@ gfx::Color ink_color(Ink ink, std::size_t series_index) {
         return gfx::palette(1); // vermillion
     case Ink::pull:
         return gfx::palette(2); // green
+    case Ink::slip:
+        return gfx::palette(3); // reddish purple
     case Ink::force:
         return gfx::palette(0);
     case Ink::magnitude:

@@ -32,6 +32,7 @@ void set_up(UiEdits& e, const LessonSetup& u) {
     e.start = u.start;
     e.panel = u.panel;
     e.speed = u.speed;
+    e.frame = u.frame;
     e.playing = true;
     e.reset = true;
 }
@@ -64,6 +65,7 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
     step_carry_ = 0;
     step_pending_ = false;
     refresh_units();
+    retarget_frame(true);
     worker_.request(ratio_request());
     return loaded;
 }
@@ -194,7 +196,9 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
     }
     if (e.speed) ui_.session.speed = std::clamp(*e.speed, kSpeedRange.lo, kSpeedRange.hi);
     ViewState& view = ui_.session.view;
-    if (e.reset_view) view = ViewState{1, {0, 0}, true, view.trail_periods};
+    if (e.reset_view) view = ViewState{1, {0, 0}, true, view.trail_periods, view.rewind, view.frame};
+    if (e.frame) view.frame = *e.frame;
+    if (e.view_aspect && std::isfinite(*e.view_aspect) && *e.view_aspect > 0) view_aspect_ = *e.view_aspect;
     if (e.zoom) view.zoom = std::clamp(*e.zoom, kZoomRange.lo, kZoomRange.hi);
     if (e.pan)
         for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp((*e.pan)[k], kPanRange.lo, kPanRange.hi);
@@ -203,6 +207,7 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         sim_.set_history_periods(std::max(view.trail_periods, kHistoryPeriods));
     }
     if (model_changed) sim_.apply(ui_.session.model, ui_.session.params);
+    retarget_frame(false); // a new frame only where the parameters, the trail or the area changed it
     if (model_changed || ask_worker || data_changed || start_changed) worker_.request(ratio_request());
     if (e.pin) pin_current_curve(wait); // the curve of this frame's parameters (scripts wait for it)
     if (reset) sim_.reset(ui_.session.start), step_carry_ = 0;
@@ -224,9 +229,30 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         spec.model = ui_.session.model;
         spec.params = ui_.session.params;
         spec.steady.start = ui_.session.start;
+        spec.frame = ui_.session.view.frame; // the top view as on screen
         spec.vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
     }
     return act;
+}
+
+ViewState AppState::view() const {
+    ViewState v = ui_.session.view;
+    v.box = eased_frame(frame_from_, frame_to_, frame_ease_);
+    v.aspect = view_aspect_;
+    return v;
+}
+
+void AppState::retarget_frame(bool snap) {
+    const FrameBox to =
+        steady_frame(ui_.session.model, ui_.session.params, ui_.session.view.trail_periods, view_aspect_);
+    if (snap) {
+        frame_from_ = frame_to_ = to, frame_ease_ = 1;
+        return;
+    }
+    if (to == frame_to_) return;
+    frame_from_ = eased_frame(frame_from_, frame_to_, frame_ease_); // from where it is now: no jump
+    frame_to_ = to;
+    frame_ease_ = 0;
 }
 
 double AppState::frame_tau() const {
@@ -234,6 +260,8 @@ double AppState::frame_tau() const {
 }
 
 void AppState::advance(double dt) {
+    // The frame eases in wall time, playing or not.
+    if (frame_ease_ < 1) frame_ease_ = std::min(1.0, frame_ease_ + dt / kFrameEaseSeconds);
     // While rewound, playing replays the history towards the live state; then the simulation runs on.
     if (ui_.session.playing && ui_.session.view.rewind > 0) {
         ui_.session.view.rewind = std::max(0.0, ui_.session.view.rewind - dt * ui_.session.speed * 2 * kPi);

@@ -51,6 +51,9 @@ class AppState {
     void advance(double dt_seconds);
 
     const UiState& ui() const { return ui_; }
+    // The view to draw: the session's, with the top view's frame as it is now (eased over kFrameEaseSeconds
+    // of wall time from the last parameter set's to this one's, by advance()).
+    ViewState view() const;
     const LiveSim& sim() const { return sim_; }
     RatioWorker& worker() { return worker_; }
     MechanismBase& mechanism() { return mechanism_; } // the mechanism panel's base, kept between frames
@@ -62,6 +65,9 @@ class AppState {
     void pin_current_curve(bool wait);
     double frame_tau() const; // dimensionless time of one displayed frame at the current speed (1/60 s)
     void refresh_units();
+    // The frame for the parameters, trail and area in effect: eased to from the frame shown now, or
+    // (`snap`) shown at once.
+    void retarget_frame(bool snap);
     // The whole state from `s` and `data`; the simulation restarts at tau = 0. Returns the data's status
     // line ("loaded FILE: N points"), or "" without data.
     std::string show_session(const Session& s, std::optional<MeasurementSet> data);
@@ -75,6 +81,9 @@ class AppState {
     bool step_pending_ = false;
     bool drop_fit_ = false; // a session was opened while a fit ran: its result is for another state
     int syncs_ = 0;
+    // The top view's frame: eased from `from` to `to`, `ease` of the way (0..1, in kFrameEaseSeconds).
+    FrameBox frame_from_, frame_to_;
+    double frame_ease_ = 1, view_aspect_ = 0;
 };
 
 } // namespace fv::app

@@ -37,6 +37,8 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.lesson) lesson = o.lesson;
     if (o.zoom) zoom = o.zoom;
     if (o.pan) pan = o.pan;
+    if (o.frame) frame = o.frame;
+    if (o.view_aspect) view_aspect = o.view_aspect;
     reset_view |= o.reset_view;
     if (o.status) status = o.status;
     if (o.amplitude_um) amplitude_um = o.amplitude_um;
@@ -268,6 +270,19 @@ UiEdits draw_animation_controls(const UiState& ui, const LiveSim& sim) {
     if (slider_double("trail", &trail, 0.25, 4, "%.2f periods")) e.trail_periods = trail;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("how much of P's and T's past path the top view draws, fading (periods)");
+    // The top view's camera: riding on the body, or standing on the floor (a stuck tip then stands still).
+    const FrameChoice frame = ui.session.view.frame;
+    if (ImGui::RadioButton("body", frame == FrameChoice::body)) e.frame = FrameChoice::body;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The camera rides on the body: the body stays put and the floor slides past "
+                          "underneath, so a tip stuck to the floor moves backwards on screen.");
+    ImGui::SameLine();
+    if (ImGui::RadioButton("ground", frame == FrameChoice::ground)) e.frame = FrameChoice::ground;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The camera stands on the floor: a tip stuck to the floor stands still, and the "
+                          "body drifts across and comes back in at the other edge.");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("frame of the top view");
 
     return e;
 }

@@ -222,7 +222,8 @@ UiEdits draw_file_dialogs(FileDialogs& dialog) {
 }
 
 void draw_share_link(const UiState& ui) {
-    std::string link = share_link(ui.session.model, ui.session.params, ui.session.start);
+    std::string link =
+        share_link(ui.session.model, ui.session.params, ui.session.start, ui.session.view.frame);
     // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
     // height, so the panel's rows below stay where they are.
     const ImGuiStyle& st = ImGui::GetStyle();

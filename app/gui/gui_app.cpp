@@ -184,6 +184,8 @@ class GuiLoop {
         // slider is dragged, every frame).
         if (!queued_.moves_curves()) app_.worker().run_slice(std::chrono::milliseconds(6));
         queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
+        if (const gfx::Rect& a = transforms_.top_view.area; a.width() > 0 && a.height() > 0)
+            queued_.view_aspect = static_cast<double>(a.width()) / a.height();
         if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
             queued_.show_help = false;
         ImGui::Render();
@@ -240,7 +242,7 @@ class GuiLoop {
         gfx::Canvas& canvas = session_.canvas();
         canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
         const DashboardPanels panels =
-            dashboard_panels(app_.sim(), ui.session.view, curves, busy, ui.session.panel,
+            dashboard_panels(app_.sim(), app_.view(), curves, busy, ui.session.panel,
                              {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins}, &app_.mechanism());
         transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, panels,
                                       present ? kPresentationScale : 1.0f);

@@ -24,20 +24,22 @@ constexpr Entry kScene[] = {
      "line at angle θ (Eqs. 28–29)"},
     {Ink::spring, "body (dashed box)",
      "the sliding body (the block) that carries P; v_b arrow: its mean velocity"},
-    {Ink::tip, "T", "the tip of the asperity: where the contact meets the fixed plane"},
+    {Ink::tip, "T",
+     "the tip of the asperity: where the contact meets the fixed plane (its trail vermillion)"},
     {Ink::pull, "spring, green",
      "the asperity P–T sticks (i = 0) or creeps (i > 0): z = |P − T| < z_ss, T "
      "barely moves"},
-    {Ink::tip, "spring, vermillion", "the asperity slips: z = z_ss, T is dragged behind P (Eq. 27)"},
+    {Ink::slip, "spring, purple", "the asperity slips: z = z_ss, T is dragged behind P (Eq. 27)"},
     {Ink::pull, "circle", "radius z_ss around P: how far the asperity stretches before it slips"},
     {Ink::body, "v", "P's velocity: v_b plus the vibration velocity (Eq. 1), drawn at 0.4 x_v per v_v"},
-    {Ink::black, "friction", "the friction force on the body, −F: the asperity pulls P back towards T"},
+    {Ink::black, "−F", "the friction force on the body: the asperity pulls P back towards T"},
 };
 constexpr Entry kPlots[] = {
     {Ink::force, "F_x, F_y, |F|",
      "friction force F/F_c = (P − T)/z_ss (Dahl; rigid: F_c along the velocity), "
      "positive F_x resists v_b"},
-    {Ink::tip, "shading", "times the tip slips"},
+    {Ink::slip, "shading", "times the tip slips"},
+    {Ink::slip, "loop", "the hysteresis loop: green where the tip sticks or creeps, purple where it slips"},
     {Ink::black, "period mean F_x",
      "F_x averaged over the period before each instant (Eq. 30): it settles on "
      "r_x once the start-up transient is over"},

@@ -78,7 +78,7 @@ class StepReader {
         if (s.title.empty() || s.text.empty()) fail("empty title or text; allowed: plain words");
         const auto setup = step_.find("setup");
         if (setup == step_.end() || !setup->is_object()) fail("missing \"setup\"; allowed: an object");
-        only(*setup, {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed"});
+        only(*setup, {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed", "frame"});
         LessonSetup& u = s.setup;
         const std::string model = text(*setup, "model");
         if (const auto m = parse_model(model))
@@ -97,6 +97,11 @@ class StepReader {
         else
             fail("panel \"" + panel + "\"; allowed: curves, map, loop, why");
         u.speed = number(*setup, "speed", kSpeedRange, 0.25);
+        const std::string frame = setup->contains("frame") ? text(*setup, "frame") : "body";
+        if (const auto f = parse_frame(frame))
+            u.frame = *f;
+        else
+            fail("frame \"" + frame + "\"; allowed: body, ground");
         return s;
     }
 

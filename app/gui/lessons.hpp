@@ -8,7 +8,8 @@
 #include "lower_panel.hpp"
 
 #include "fv/params.hpp"
-#include "fv/steady_state.hpp" // Start
+#include "fv/steady_state.hpp"   // Start
+#include "fv/top_view_frame.hpp" // FrameChoice
 
 #include <stdexcept>
 #include <string>
@@ -22,7 +23,8 @@ struct LessonSetup {
     Params params;
     Start start = Start::rest;
     LowerPanel panel = LowerPanel::curves;
-    double speed = 0.25; // vibration periods per second (kSpeedRange)
+    double speed = 0.25;                   // vibration periods per second (kSpeedRange)
+    FrameChoice frame = FrameChoice::body; // what stands still in the top view
 };
 
 struct LessonStep {

@@ -122,6 +122,11 @@ const ScriptAction kActions[] = {
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.speed = s.number; }},
     {"trail", ScriptArg::number, kTrailRange, "trail length in periods",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.trail_periods = s.number; }},
+    {"frame",
+     ScriptArg::word,
+     {},
+     "body | ground: what stands still in the top view",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.frame = parse_frame(s.text); }},
     {"curves",
      ScriptArg::none,
      {},
@@ -241,6 +246,8 @@ std::string word_error(const ScriptAction& a, const std::string& v) {
         Start unused = Start::rest;
         return parse_start(v, unused) ? "" : "start = " + quoted_text(v) + "; allowed: " + kStartNames;
     }
+    if (std::string(a.name) == "frame")
+        return parse_frame(v) ? "" : "frame = " + quoted_text(v) + "; allowed: body, ground";
     if (std::string(a.name) == "lesson") {
         long long n = 0;
         return read_integer("lesson", v, 0, static_cast<long long>(lesson_steps().size()), n);

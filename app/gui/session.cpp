@@ -347,6 +347,7 @@ std::string session_json(const Session& s) {
                      {"pan", {s.view.pan.x(), s.view.pan.y()}},
                      {"follow", s.view.follow},
                      {"trail_periods", s.view.trail_periods},
+                     {"frame", to_string(s.view.frame)},
                      {"presentation", s.presentation}};
     j["pins"] = Json::array();
     for (const PinnedCurve& p : s.pins) {
@@ -489,11 +490,15 @@ Session parse_session(const std::string& text, const std::string& file) {
         const Json& v = j["view"];
         if (!v.is_object())
             r.fail_at("/view", "view: expected an object {\"zoom\": ..}, got " + type_name(v));
-        r.only(v, "/view", {"zoom", "pan", "follow", "trail_periods", "presentation"});
+        r.only(v, "/view", {"zoom", "pan", "follow", "trail_periods", "frame", "presentation"});
         r.get(v, "/view", "presentation", s.presentation, nullptr);
         r.get(v, "/view", "zoom", s.view.zoom, kZoomRange);
         r.get(v, "/view", "follow", s.view.follow, nullptr);
         r.get(v, "/view", "trail_periods", s.view.trail_periods, kTrailRange);
+        // The top view's frame; a session saved before it could be chosen has none: body, as it was then.
+        std::string frame = to_string(s.view.frame);
+        r.get(v, "/view", "frame", frame, one_of("frame", {"body", "ground"}));
+        s.view.frame = parse_frame(frame).value_or(FrameChoice::body);
         if (v.contains("pan")) {
             const Json& p = v["pan"];
             if (!p.is_array() || p.size() != 2)

@@ -81,6 +81,10 @@ struct UiEdits {
     std::optional<double> zoom;
     std::optional<Vec2> pan;
     bool reset_view = false;
+    std::optional<FrameChoice> frame; // the top view's frame: body or ground (zoom and pan stay)
+    // The top view's data area width / height in pixels as last drawn (the loop measures it): the frame is
+    // fitted to it (top_view_frame.hpp).
+    std::optional<double> view_aspect;
     // A message for the status line from outside the state (a file the loop wrote or could not write, the
     // animation export's progress): shown unless this frame's own edits say something newer.
     std::optional<std::string> status;

@@ -75,7 +75,102 @@ SeriesData key(const std::string& label, Ink ink, float width, float opacity = 1
     return s;
 }
 
+// Where the v and friction arrows start, relative to P: where one of them lies near the other's line or the
+// spring T-P (within 60 degrees; the friction on the body always does: it pulls P towards T), it is moved
+// `gap` off that line, the two to opposite sides, v to the side it points to, so that they part and none
+// hides another or the spring.
+struct ArrowOffsets {
+    Vec2 v{0, 0}, f{0, 0};
+};
+ArrowOffsets arrow_offsets(const Vec2& v, const Vec2& f, const Vec2& spring, double gap) {
+    auto along = [](const Vec2& a, const Vec2& b) {
+        const double na = a.norm(), nb = b.norm();
+        return na > 0 && nb > 0 && std::abs(a.x() * b.y() - a.y() * b.x()) < std::sin(kPi / 3) * na * nb;
+    };
+    ArrowOffsets o;
+    const Vec2 base = f.norm() > 0 ? f : v;
+    if (!(base.norm() > 0)) return o;
+    // One normal for both: to the side v points to (up on screen where v runs along the friction's line).
+    Vec2 n = Vec2(-base.y(), base.x()) / base.norm();
+    const double side = v.dot(n);
+    if (side < 0 || (std::abs(side) <= 1e-9 * v.norm() && (n.y() < 0 || (n.y() == 0 && n.x() < 0)))) n = -n;
+    if (along(v, f) || along(v, spring)) o.v = gap * n;
+    if (along(f, v) || along(f, spring)) o.f = -gap * n;
+    return o;
+}
+
+// The axis ranges from the frame `box` (relative to the vibration centre C). body: the camera on C (or on
+// the origin when the user has panned away from following), the floor sliding past. ground: the window
+// stands still on the floor, C's place in it taken modulo its width, and the picture drawn again one width
+// to the left and right without labels, so that the body leaving at one edge comes in at the other.
+void place_frame(PanelData& panel, const FrameBox& box, const Vec2& C, const ViewState& view) {
+    if (view.frame == FrameChoice::body) {
+        const Vec2 origin = (view.follow ? C : Vec2(0, 0)) + view.pan;
+        panel.x_min = origin.x() + box.x0, panel.x_max = origin.x() + box.x1;
+        panel.y_min = origin.y() + box.y0, panel.y_max = origin.y() + box.y1;
+        return;
+    }
+    panel.x_title = "x / x_{v} on the floor (it stands still; the body wraps round at the edges)";
+    const double w = box.width(), left = box.x0 + view.pan.x();
+    panel.x_min = left, panel.x_max = left + w;
+    panel.y_min = C.y() + box.y0 + view.pan.y(), panel.y_max = C.y() + box.y1 + view.pan.y();
+    if (!(w > 0)) return;
+    shift_panel_x(panel, -w * std::floor((C.x() - left) / w));
+    panel.x_min = left, panel.x_max = left + w; // shifted with the rest: set again
+    PanelData copy;
+    for (const SeriesData& s : panel.series)
+        if (!s.x.empty()) copy.series.push_back(s), copy.series.back().label.clear();
+    copy.segments = panel.segments, copy.circles = panel.circles, copy.arrows = panel.arrows;
+    copy.points = panel.points;
+    for (SegmentData& s : copy.segments) s.label.clear();
+    for (ArrowData& a : copy.arrows) a.label.clear();
+    for (PointData& q : copy.points) q.label.clear();
+    // A label goes with the copy whose arrow head or point is well inside the window (at most one is); none
+    // while the body crosses the edge, where a label would be drawn beyond the axes.
+    const double margin = 0.06 * w;
+    auto inside_at = [&](double x, double dx) {
+        return x + dx >= left + margin && x + dx <= left + w - margin;
+    };
+    std::vector<PanelData> copies;
+    for (const double dx : {-w, w}) {
+        PanelData c = copy;
+        for (std::size_t k = 0; k < c.arrows.size(); ++k)
+            if (inside_at(panel.arrows[k].to.x(), dx)) c.arrows[k].label = panel.arrows[k].label;
+        for (std::size_t k = 0; k < c.points.size(); ++k)
+            if (inside_at(panel.points[k].at.x(), dx)) c.points[k].label = panel.points[k].label;
+        copies.push_back(std::move(c));
+    }
+    for (ArrowData& a : panel.arrows)
+        if (!inside_at(a.to.x(), 0)) a.label.clear();
+    for (PointData& q : panel.points)
+        if (!inside_at(q.at.x(), 0)) q.label.clear();
+    for (std::size_t k = 0; k < copies.size(); ++k) {
+        PanelData& c = copies[k];
+        const double dx = k == 0 ? -w : w;
+        shift_panel_x(c, dx);
+        panel.series.insert(panel.series.end(), c.series.begin(), c.series.end());
+        panel.segments.insert(panel.segments.end(), c.segments.begin(), c.segments.end());
+        panel.circles.insert(panel.circles.end(), c.circles.begin(), c.circles.end());
+        panel.arrows.insert(panel.arrows.end(), c.arrows.begin(), c.arrows.end());
+        panel.points.insert(panel.points.end(), c.points.begin(), c.points.end());
+    }
+}
+
 } // namespace
+
+void shift_panel_x(PanelData& p, double dx) {
+    const Vec2 d(dx, 0);
+    for (SeriesData& s : p.series)
+        for (double& x : s.x) x += dx;
+    for (SegmentData& s : p.segments) s.a += d, s.b += d;
+    for (PointData& q : p.points) q.at += d;
+    for (CircleData& c : p.circles) c.center += d;
+    for (ArrowData& a : p.arrows) a.from += d, a.to += d;
+    for (BandData& b : p.bands) b.x0 += dx, b.x1 += dx;
+    if (p.heatmap) p.heatmap->x0 += dx, p.heatmap->x1 += dx;
+    if (p.x_min) *p.x_min += dx;
+    if (p.x_max) *p.x_max += dx;
+}
 
 SimMoment moment_at(const LiveSim& sim, double rewind) {
     SimMoment m;
@@ -143,66 +238,57 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
         }
     }
     const Vec2 P = m.P, T = m.T;
-    // The frame (below): the trails' extent so far, P included.
-    double x0 = P.x(), x1 = P.x(), y0 = P.y(), y1 = P.y();
-    auto take = [&](double x, double y) {
-        if (!std::isfinite(x) || !std::isfinite(y)) return;
-        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
-    };
-    for (const SeriesData& s : panel.series)
-        for (std::size_t k = 0; k < s.x.size(); ++k) take(s.x[k], s.y[k]);
-    // The spring's zigzag scales with the view: about half the trails' height, as the frame below shows it.
-    const double half_h = std::max(0.5 * (y1 - y0), 0.5) * 1.08 * view.zoom;
+    // The frame: fixed for the parameters (top_view_frame.hpp; the app eases it between parameter sets),
+    // scaled about its centre by the zoom. It does not follow the trajectory's extent, so nothing in the
+    // picture grows or shrinks with the phase.
+    FrameBox box = view.box ? *view.box : steady_frame(sim.model(), p, view.trail_periods, view.aspect);
+    {
+        const double mx = 0.5 * (box.x0 + box.x1), my = 0.5 * (box.y0 + box.y1);
+        const double hw = 0.5 * box.width() * view.zoom, hh = 0.5 * box.height() * view.zoom;
+        box = {mx - hw, mx + hw, my - hh, my + hh};
+    }
     // What moves, drawn behind the trails' heads: the body around P (it carries P and
     // drifts at v_b), the line P vibrates on (+-x_v at theta through where P would be without vibrating),
     // the asperity as a spring from its tip T (held by the fixed plane while it sticks) to P, green while it
-    // sticks or creeps inside the circle z < z_ss, vermillion while it slips on it.
-    const double bw = (rigid ? 0.3 : 1.15 * p.zss() + 0.25), bh = (rigid ? 0.22 : 1.15 * p.zss() + 0.18);
+    // sticks or creeps inside the circle z < z_ss, reddish purple while it slips on it.
+    const BodyOutline outline = body_outline(sim.model(), p);
+    const double bw = outline.half_w, bh = outline.half_h;
     panel.series.insert(panel.series.begin(), box_series(P, bw, bh, "body (carries P, drifts at v_{b})"));
     const Vec2 C = m.centre, dir{std::cos(p.theta), std::sin(p.theta)};
-    panel.segments.push_back({C - dir, C + dir, Ink::body, Dash::dotted, 1.3f,
-                              "vibration ±x_{v} at θ = " + format_number("%.0f°", p.theta * 180 / kPi),
-                              std::sin(m.tau) > 0 ? 0.05f : 0.95f, 0}); // the label at the end far from P
+    // The line is named in the legend: a label beside it met T, the arrows or v_b at one angle or another.
+    panel.segments.push_back({C - dir, C + dir, Ink::body, Dash::dotted, 1.3f, "", 0.5f, 0});
+    panel.series.push_back(key("P's vibration: ±x_{v} at θ = " + format_number("%.0f°", p.theta * 180 / kPi),
+                               Ink::body, 1.3f, 1, Dash::dotted));
     panel.arrows.push_back({P + Vec2(-bw, bh), P + Vec2(-bw + 0.4 * p.zeta, bh), Ink::body, "v_{b}", 2.0f});
     if (!rigid) {
-        const Ink state = slip ? Ink::tip : Ink::pull;
+        const Ink state = slip ? Ink::slip : Ink::pull;
         panel.circles.push_back({P, p.zss(), state, slip ? Dash::solid : Dash::dashed, 1.6f});
-        panel.series.push_back(spring_series(T, P, 0.035 * half_h, state));
+        panel.series.push_back(spring_series(T, P, 0.02 * box.height(), state));
         panel.series.push_back(
             key(p.i == 0 ? "asperity sticks (z < z_{ss})" : "asperity creeps (z < z_{ss})", Ink::pull, 2.4f));
-        panel.series.push_back(key("asperity slips (z = z_{ss})", Ink::tip, 2.4f));
+        panel.series.push_back(key("asperity slips (z = z_{ss})", Ink::slip, 2.4f));
     }
     // Arrows: P's velocity (scaled by 0.4) and the friction force on the body, -F: the force plot's F is
-    // (P - T)/z_ss in units of F_c, positive along v_b (the ratio's convention); F_c drawn as 0.5 x_v.
-    const Vec2 v = m.velocity, F = m.F;
-    panel.arrows.push_back({P, P + 0.4 * v, Ink::body, "v", 2.5f});
-    panel.arrows.push_back({P, P - 0.5 * F, Ink::black, "friction", 2.5f});
+    // (P - T)/z_ss in units of F_c, positive along v_b (the ratio's convention); F_c drawn as 0.5 x_v. The
+    // friction's label is "−F", short (the legend says "friction on the body = −F"): "friction" found no
+    // free place beside its arrow at some instants, crowded by T, P and v.
+    const Vec2 v = 0.4 * m.velocity, f = -0.5 * m.F;
+    const ArrowOffsets off = arrow_offsets(v, f, rigid ? Vec2::Zero() : Vec2(P - T), 0.02 * box.height());
+    panel.arrows.push_back({P + off.v, P + off.v + v, Ink::body, "v", 2.5f});
+    panel.arrows.push_back({P + off.f, P + off.f + f, Ink::black, "−F", 2.5f});
     panel.series.push_back(key("friction on the body = −F", Ink::black, 2.5f));
+    // P's and T's labels on their far sides from each other (off the spring between them; P above and T
+    // below where they nearly coincide): they never meet, however close P and T are.
+    const Vec2 d = P - T;
+    const int up = d.y() > 1e-9 * (1 + d.norm()) || std::abs(d.y()) <= 1e-9 * (1 + d.norm()) ? -1 : 1;
+    const int right = d.x() >= 0 ? 1 : -1;
     panel.points.push_back(scene::body_mark(P, 11));
-    if (!rigid) panel.points.push_back(scene::tip_mark(T, slip ? Ink::tip : Ink::pull, 11));
-
-    // Camera: framed on the trails (above), the arrows at P, and the z_ss circle and the body around P
-    // unless they are far larger than the trails (tiny r_disp: the paths would shrink to a dot), with a
-    // margin. The half sizes go up in steps of 5% so that the frame does not breathe with every sample;
-    // zoom and pan act on that frame.
-    for (const ArrowData& a : panel.arrows)
-        if (a.from == P) take(a.to.x(), a.to.y());
-    const double around_p = rigid ? std::max(bw, bh) : 1.15 * p.zss() + 0.25;
-    if (around_p <= 2 * std::max({x1 - x0, y1 - y0, 1.0})) {
-        take(P.x() - around_p, P.y() - around_p);
-        take(P.x() + around_p, P.y() + around_p);
+    panel.points.back().label_dx = rigid ? 0 : right, panel.points.back().label_dy = rigid ? 0 : up;
+    if (!rigid) {
+        panel.points.push_back(scene::tip_mark(T, slip ? Ink::slip : Ink::pull, 11));
+        panel.points.back().label_dx = -right, panel.points.back().label_dy = -up;
     }
-    auto stepped = [](double half) {
-        return std::pow(1.05, std::ceil(std::log(std::max(half, 1e-3)) / std::log(1.05)));
-    };
-    const double frame_w = stepped(0.5 * (x1 - x0) * 1.08) * view.zoom,
-                 frame_h = stepped(0.5 * (y1 - y0) * 1.08) * view.zoom;
-    const double cx = (view.follow ? 0.5 * (x0 + x1) : 0) + view.pan.x(),
-                 cy = (view.follow ? 0.5 * (y0 + y1) : 0) + view.pan.y();
-    panel.x_min = cx - frame_w;
-    panel.x_max = cx + frame_w;
-    panel.y_min = cy - frame_h;
-    panel.y_max = cy + frame_h;
+    place_frame(panel, box, C, view);
     return panel;
 }
 
@@ -232,10 +318,10 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
             if (!panel.bands.empty() && panel.bands.back().x1 >= a) {
                 panel.bands.back().x1 = h[k].tau;
             } else {
-                panel.bands.push_back({std::max(a, t0), h[k].tau, Ink::tip, 0.13f});
+                panel.bands.push_back({std::max(a, t0), h[k].tau, Ink::slip, 0.13f});
             }
         }
-        panel.series.push_back(key("T slips", Ink::tip, 9, 0.25f));
+        panel.series.push_back(key("T slips", Ink::slip, 9, 0.25f));
     }
     // F_x averaged over the period before each instant (the history's running sums): once the transient is
     // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
@@ -358,6 +444,7 @@ LoopData hysteresis_loop(const LiveSim& sim, double rewind) {
         if (s.tau < t0 - 1e-9 || s.tau > t1 + 1e-9) continue;
         loop.u.push_back(std::sin(s.tau));
         loop.f.push_back(s.F.dot(dir));
+        loop.slip.push_back(s.slip);
         if (prev) {
             // Midpoint rule on each step: the force over the step times P's move over it.
             const Vec2 F = 0.5 * (s.F + prev->F);
@@ -385,8 +472,29 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     // together dissipate); the loop's area is the vibration's share.
     panel.title = "last period: W = ∮F·dP = " + format_number("%.3g", loop.work) + " F_{c}x_{v}, loop area " +
                   format_number("%.3g", loop.vibration_work);
-    SeriesData s{"", loop.u, loop.f, Ink::tip, Dash::solid, Mark::none, 2.2f};
-    panel.series.push_back(std::move(s));
+    // Coloured by the tip's state, as the top view's spring: the stick ramps green, the slips reddish purple.
+    // Each run of one state is a series; the runs share their end samples so that the loop stays closed.
+    for (std::size_t k = 0; k < loop.u.size();) {
+        std::size_t e = k + 1;
+        while (e < loop.u.size() && loop.slip[e] == loop.slip[k]) ++e;
+        const std::size_t last = std::min(e, loop.u.size() - 1);
+        SeriesData s{"",
+                     {loop.u.begin() + static_cast<std::ptrdiff_t>(k),
+                      loop.u.begin() + static_cast<std::ptrdiff_t>(last) + 1},
+                     {loop.f.begin() + static_cast<std::ptrdiff_t>(k),
+                      loop.f.begin() + static_cast<std::ptrdiff_t>(last) + 1},
+                     loop.slip[k] ? Ink::slip : Ink::pull,
+                     Dash::solid,
+                     Mark::none,
+                     2.2f};
+        panel.series.push_back(std::move(s));
+        k = e;
+    }
+    if (sim.model() == Model::dahl) {
+        panel.legend = Legend::best;
+        panel.series.push_back(key(sim.params().i == 0 ? "T sticks" : "T creeps", Ink::pull, 2.4f));
+        panel.series.push_back(key("T slips", Ink::slip, 2.4f));
+    }
     return panel;
 }
 

@@ -108,6 +108,10 @@ ShareLink parse_share_link(std::string_view text) {
             if (!parse_start(value, s))
                 fail(vat, "start = " + quoted_text(value) + "; allowed: " + kStartNames);
             link.start = s;
+        } else if (key == "frame") {
+            once(link.frame.has_value());
+            link.frame = parse_frame(value);
+            if (!link.frame) fail(vat, "frame = " + quoted_text(value) + "; allowed: body, ground");
         } else {
             fail(at, "unknown key " + quoted_text(key) + "; allowed: " + kLinkKeys);
         }
@@ -129,6 +133,11 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params, Start
     if (link.start) start = *link.start;
 }
 
+void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start, FrameChoice& frame) {
+    apply_share_link(link, model, params, start);
+    if (link.frame) frame = *link.frame;
+}
+
 double theta_degrees(double theta_rad) {
     const double deg = theta_rad * 180 / kPi;
     double best = deg;
@@ -145,11 +154,12 @@ double theta_degrees(double theta_rad) {
     return best + 0.0; // -0.0 maps back to 0 as well: never print -0
 }
 
-std::string share_link(Model model, const Params& p, Start start) {
+std::string share_link(Model model, const Params& p, Start start, FrameChoice frame) {
     return "?zeta=" + shortest_decimal(p.zeta) + "&theta=" + shortest_decimal(theta_degrees(p.theta)) +
            "&rdisp=" + shortest_decimal(p.rdisp) + "&i=" + shortest_decimal(p.i) +
            "&model=" + to_string(model) +
-           (start == Start::rest ? "" : std::string("&start=") + to_string(start));
+           (start == Start::rest ? "" : std::string("&start=") + to_string(start)) +
+           (frame == FrameChoice::body ? "" : std::string("&frame=") + to_string(frame));
 }
 
 } // namespace fv

@@ -14,7 +14,8 @@
 namespace fv {
 
 // Colours by meaning; the renderer owns the actual palette.
-enum class Ink { automatic, body, tip, spring, pull, force, magnitude, rigid, black };
+// body: P (blue); tip: T (vermilion); pull: the asperity sticks (green); slip: it slips (reddish purple).
+enum class Ink { automatic, body, tip, spring, pull, force, magnitude, rigid, black, slip };
 enum class Dash { solid, dashed, dotted };
 enum class Mark { none, circle, square, triangle, diamond, cross };
 

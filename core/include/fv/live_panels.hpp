@@ -10,6 +10,7 @@
 #include "fv/measurements.hpp"
 #include "fv/pinned_curve.hpp"
 #include "fv/ratio_curves.hpp"
+#include "fv/top_view_frame.hpp"
 
 #include <optional>
 #include <utility>
@@ -17,15 +18,24 @@
 
 namespace fv {
 
-// How the top view is framed and which moment the panels show (the app's mouse and time slider set it; the
-// animation export sets its own, following the body).
+// How the top view is framed and which moment the panels show (the app's mouse, time slider and view
+// controls set it; the animation export sets its own).
 struct ViewState {
-    double zoom = 1;    // > 1 shows less
-    Vec2 pan{0, 0};     // data units, added to the followed centre
-    bool follow = true; // keep P's drift in view
+    double zoom = 1;    // the frame's size times this (< 1 shows less, larger)
+    Vec2 pan{0, 0};     // data units, added to the followed centre (ground frame: to the window's place)
+    bool follow = true; // body frame: keep the body in view (false: the camera stays where it was put)
     double trail_periods = 1.5;
     double rewind = 0; // dimensionless time behind the live simulation that is shown (0: live)
+    FrameChoice frame = FrameChoice::body; // what stands still on screen: the body or the ground
+    // Not saved, set each frame by whoever draws: the frame shown (the app eases it from one parameter set's
+    // to the next; unset: steady_frame of the parameters), and the top view's data area width / height in
+    // pixels (0: not known yet), which the ground frame's wrap-around needs.
+    std::optional<FrameBox> box;
+    double aspect = 0;
 };
+
+// Every x coordinate of the panel moved by dx (a camera that moves with the body, the ground frame's wrap).
+void shift_panel_x(PanelData& p, double dx);
 
 // The state shown at `rewind` behind the live simulation (from its history; the live state at 0).
 struct SimMoment {
@@ -62,6 +72,7 @@ PanelData map_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& c
 // (F_c x_v units): W = sum of F . dP, and the loop's area, the sum of F_par du (the vibration's share).
 struct LoopData {
     std::vector<double> u, f;
+    std::vector<bool> slip; // per sample: the tip slips (LiveSample::slip)
     double work = 0, vibration_work = 0;
     bool complete = false; // a whole period was recorded
 };

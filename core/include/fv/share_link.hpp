@@ -2,6 +2,7 @@
 //
 //   ?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl        (theta in degrees, as on the command line)
 //   ?zeta=0.075&theta=90&rdisp=0.1&i=5&model=dahl&start=sliding   (the history: written only when sliding)
+//   ?zeta=0.3&theta=0&rdisp=2&i=0&model=dahl&frame=ground   (the top view's frame: written only for ground)
 //
 // The app shows it for the state on screen (with a Copy button), `frictionviz gui --link STRING` starts from
 // it, and the browser build reads the same keys from its page address; so this parser has no GUI in it and
@@ -9,16 +10,17 @@
 //
 // Accepted: the query alone ("zeta=0.3&theta=60"), with its '?' or a whole URL. As in a browser, everything
 // from the first '#' on is a fragment and ignored; the query is what follows the first '?' before it
-// ("#?zeta=0.5" has no query). Keys are zeta, theta, rdisp, i, model, start, each at most once, any subset
-// (the rest keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the
-// command line) inside the shared range table (param_ranges.hpp), dahl|rigid or rest|sliding; %XX escapes are
-// decoded ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming the column,
-// what was wrong and what is allowed.
+// ("#?zeta=0.5" has no query). Keys are zeta, theta, rdisp, i, model, start, frame, each at most once, any
+// subset (the rest keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the
+// command line) inside the shared range table (param_ranges.hpp), dahl|rigid, rest|sliding or body|ground;
+// %XX escapes are decoded ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming
+// the column, what was wrong and what is allowed.
 #pragma once
 
 #include "fv/params.hpp"
-#include "fv/read_number.hpp"  // shortest_decimal
-#include "fv/steady_state.hpp" // Start
+#include "fv/read_number.hpp"    // shortest_decimal
+#include "fv/steady_state.hpp"   // Start
+#include "fv/top_view_frame.hpp" // FrameChoice
 
 #include <optional>
 #include <stdexcept>
@@ -27,12 +29,13 @@
 
 namespace fv {
 
-inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start";
+inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame";
 
 struct ShareLink {
     std::optional<double> zeta, theta_deg, rdisp, i;
     std::optional<Model> model;
-    std::optional<Start> start; // the history (docs/model.md, "Which steady state")
+    std::optional<Start> start;       // the history (docs/model.md, "Which steady state")
+    std::optional<FrameChoice> frame; // what stands still in the app's top view
 };
 
 // what(): "column N: message" (N counts bytes of the text given, from 1).
@@ -46,12 +49,14 @@ ShareLink parse_share_link(std::string_view text);
 // its start over `start`. (The three-argument form leaves the start to the caller.)
 void apply_share_link(const ShareLink& link, Model& model, Params& params);
 void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start);
+void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start, FrameChoice& frame);
 
 // "?zeta=Z&theta=DEG&rdisp=R&i=I&model=M" for the state given, every number the shortest decimal that reads
 // back as the same double (theta: see theta_degrees), so parsing the link gives the same parameters; then
 // "&start=sliding" for that start only, so that the link of the paper's start (rest, the default) is the
-// same as before the start could be chosen.
-std::string share_link(Model model, const Params& params, Start start = Start::rest);
+// same as before the start could be chosen; and "&frame=ground" for that frame only, likewise.
+std::string share_link(Model model, const Params& params, Start start = Start::rest,
+                       FrameChoice frame = FrameChoice::body);
 
 // theta in degrees such that degrees * kPi / 180 gives theta_rad back bit for bit where a nearby double does
 // (the nicest of them: 60, not 60.00000000000001), else theta_rad * 180 / kPi.
