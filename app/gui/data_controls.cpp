@@ -219,8 +219,11 @@ UiEdits draw_file_dialogs(FileDialogs& dialog) {
     return e;
 }
 
-void draw_share_link(const UiState& ui) {
-    std::string link = share_link(ui.session.model, ui.session.params, ui.session.start);
+UiEdits draw_share_link(const UiState& ui, const ShareAddress& where) {
+    UiEdits e;
+    // The field shows the link (what fits on the row); Copy link copies the whole address.
+    std::string link = session_link(ui.session);
+    const std::string address = where.base + link;
     // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
     // height, so the panel's rows below stay where they are.
     const ImGuiStyle& st = ImGui::GetStyle();
@@ -230,15 +233,28 @@ void draw_share_link(const UiState& ui) {
                             2 * st.FramePadding.x - st.ItemSpacing.x);
     ImGui::InputText("##link", &link, ImGuiInputTextFlags_ReadOnly);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees) and the start when it is not "
-                          "from rest\n%s\n"
-                          "frictionviz gui --link '%s' starts from it, and the browser version reads the "
-                          "same keys from its address.",
-                          link.c_str(), link.c_str());
+        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees), the start when it is not "
+                          "from rest, and the panel, presentation mode, speed and pinned curves when they "
+                          "are not the defaults\n%s\n%s"
+                          "frictionviz gui --link '%s' starts from it, and the browser version opens it.%s",
+                          address.c_str(),
+                          where.from_page
+                              ? "This page's address.\n"
+                              : "The site's address is a setting: gui --web-base URL or "
+                                "FRICTIONVIZ_WEB_BASE (docs/web.md), where your class's site is.\n",
+                          link.c_str(),
+                          pins_not_in_link(ui.session) > 0
+                              ? "\nPins opened from an older session file are not in it (their parameters "
+                                "are not known)."
+                              : "");
     ImGui::SameLine();
-    if (ImGui::SmallButton(copy)) ImGui::SetClipboardText(link.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("copy the share link to the clipboard");
+    if (ImGui::SmallButton(copy)) {
+        ImGui::SetClipboardText(address.c_str());
+        e.status = "Copy link: " + address;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("copy this address to the clipboard");
     ImGui::PopStyleVar();
+    return e;
 }
 
 } // namespace fv::app
