@@ -157,7 +157,9 @@ std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
         ImGui::OpenPopup(t.title);
         d.open_requested = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+    // At most the page's width less a margin (a phone's page is 390 wide).
+    ImGui::SetNextWindowSize(ImVec2(std::min(440.0f, ImGui::GetIO().DisplaySize.x - 16), 0),
+                             ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal(t.title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return std::nullopt;
     ImGui::TextWrapped("%s", t.help);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();

@@ -82,6 +82,8 @@ bool draw_help_overlay(bool open, const gfx::Rect& area) {
     const float w = std::min(area.width() - 40, 720.0f);
     ImGui::SetNextWindowPos(ImVec2(area.x0 + (area.width() - w) / 2, area.y0 + 20), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
+    // No taller than the area (a phone, a small window): the overlay scrolls beyond it.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, std::max(100.0f, area.height() - 40)));
     ImGui::SetNextWindowBgAlpha(0.96f);
     bool keep = true;
     ImGui::Begin("What you see (F1 or ? closes)", &keep,

@@ -14,9 +14,10 @@ ScreenLayout screen_layout(gfx::Vec2 page, bool presentation) {
         l.beside = {panel_w, 0, page.x, page.y};
         return l;
     }
-    // Across the top: 42% of the height (the parameters' sliders and the share link in view on a phone),
-    // the rest for the pictures; the panel scrolls to the rest of its rows.
-    const float panel_h = std::min(page.y, std::max(160.0f, std::round(page.y * 0.42f)));
+    // Across the top: 36% of the height (on a phone the parameters' sliders and the share link in view),
+    // the rest for the pictures, which need it more (three plots, two with legends); the panel scrolls to
+    // the rest of its rows.
+    const float panel_h = std::min(page.y, std::max(160.0f, std::round(page.y * 0.36f)));
     l.stacked = true;
     l.controls = {0, 0, page.x, panel_h};
     l.pictures = {4, panel_h + 4, page.x - 4, page.y - 4};

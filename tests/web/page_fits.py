@@ -2,7 +2,8 @@
 """Checks the layout the app's page published (web/app_main.cpp: the body's data-fv-layout, from
 chromium --dump-dom) for a window of WIDTH x HEIGHT CSS pixels at devicePixelRatio DPR:
 
-- the canvas fills the window (its CSS box is the window's) and its backing store is the CSS size times the
+- the canvas fills the window (its CSS box is the window's; for a page narrower than Chromium's narrowest
+  window, 500, the canvas's CSS width is pinned to the page's by page_fits.sh) and its backing store is the CSS size times the
   ratio the app draws at, min(DPR, 3), rounded; the app's logical page is that CSS size;
 - every part the app draws (the panel, the top view, the force plot, the lower panel) lies inside the page,
   none overlaps another, each large enough to read (a plot at least 120 x 90 CSS pixels, the panel at least
@@ -11,8 +12,11 @@ chromium --dump-dom) for a window of WIDTH x HEIGHT CSS pixels at devicePixelRat
 - a narrow window (less than 720 CSS pixels) has the panel across the top (`stacked`), a wide one down the
   left edge.
 
-    page_fits.py DOM.html WIDTH HEIGHT DPR
+With SHOT.png, the canvas the page saved into its DOM (data-fv-shot, page_fits_shot.js) is written there.
+
+    page_fits.py DOM.html WIDTH HEIGHT DPR [SHOT.png]
 """
+import base64
 import html
 import json
 import re
@@ -34,7 +38,9 @@ def main():
             errors.append(what)
 
     ratio = min(dpr, 3.0)
-    expect(lay["window"] == [width, height], f"window {lay['window']}, expected {[width, height]}")
+    # Chromium's windows are at least 500 wide: page_fits.sh pins a narrower canvas's CSS width instead.
+    expect(lay["window"] == [max(width, 500), height],
+           f"window {lay['window']}, expected {[max(width, 500), height]}")
     expect(lay["canvas_css"] == [0, 0, width, height],
            f"canvas CSS box {lay['canvas_css']}, expected the window [0, 0, {width}, {height}]")
     want_backing = [round(width * ratio), round(height * ratio)]
@@ -61,6 +67,13 @@ def main():
     print(f"{width:g}x{height:g} at {dpr:g}: canvas {lay['canvas']}, stacked {app['stacked']}, panel {app['controls']} "
           f"(scrolls {app['controls_scroll_max']:g} px), top view {app['top_view']}, force {app['force']}, "
           f"lower {app['lower']}")
+    if len(sys.argv) > 5:
+        shot = re.search(r'data-fv-shot="data:image/png;base64,([^"]*)"', text)
+        if shot:
+            with open(sys.argv[5], "wb") as f:
+                f.write(base64.b64decode(shot.group(1)))
+        else:
+            print(f"(no picture of the canvas in {dom})")
     if errors:
         sys.exit("\n".join(errors))
 
