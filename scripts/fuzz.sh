@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes the measurements CSV reader, the command-line parser, the output-path policy, the session reader and
-# the script parser with libFuzzer (clang, ASan + UBSan): builds the fuzz targets (scripts/sanitize-build.sh,
+# the script parser and the share link with libFuzzer (clang, ASan + UBSan): builds the fuzz targets (scripts/sanitize-build.sh,
 # in build-sanitize/, the build the sanitizer test suite uses) and runs each for SECONDS (default 60), starting
 # from the seed corpus tests/fuzz/corpus/TARGET/. New inputs go to build-fuzz/corpus/TARGET/ (the seeds are not
 # touched); a crash is saved as build-fuzz/artifacts/TARGET/crash-* and makes the script fail.
@@ -9,12 +9,12 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-60}
 # The fuzz targets of the instrumented build the sanitizer test suite uses (built only where missing).
-bash scripts/sanitize-build.sh fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script
+bash scripts/sanitize-build.sh fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script fuzz_share_link
 # intercept_tls_get_addr=0: see scripts/test-sanitize.sh (LeakSanitizer tracer crash at exit with GCC <= 13).
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:intercept_tls_get_addr=0"
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
 status=0
-for target in fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script; do
+for target in fuzz_measurements fuzz_cli fuzz_output_path fuzz_session fuzz_script fuzz_share_link; do
   corpus=build-fuzz/corpus/$target
   artifacts=build-fuzz/artifacts/$target
   mkdir -p "$corpus" "$artifacts"

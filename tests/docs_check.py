@@ -85,7 +85,8 @@ NOT_RUN = [
      "rewrites the snapshot baselines in tests/snapshots/"),
     ("docs/web.md", "./scripts/build-web.sh [OUTDIR]",
      "run by the web_build test (label web); OUTDIR is a placeholder"),
-    ("docs/web.md", "./scripts/serve-web.sh [SITE_DIR] [PORT]", "a local web server that runs until Ctrl-C"),
+    ("docs/web.md", "./scripts/serve-web.sh [--classroom] [SITE_DIR] [PORT]",
+     "a web server that runs until Ctrl-C"),
 ]
 
 SHELL_INFO = {"sh", "bash", "shell", "console"}

@@ -45,8 +45,8 @@ TEST_CASE("gui --platform: bad choices exit 2 with one line naming what is allow
          {Case{"--platform nope --frames 1", "window,headless,auto"},
           Case{"--platform '' --frames 1", "window,headless,auto"},
           Case{"--headless --platform window --frames 1", "--headless"}, Case{"--headless", "--frames"},
-          Case{"--platform headless", "--frames"}, Case{"--headless --frames 1 --size 640x400", "800x480"},
-          Case{"--headless --frames 1 --size 1600x1000 --scale 2.5", "800x480"},
+          Case{"--platform headless", "--frames"}, Case{"--headless --frames 1 --size 400x300", "320x320"},
+          Case{"--headless --frames 1 --size 700x1000 --scale 2.5", "320x320"},
           Case{"--headless --frames 1 --size 9000x800", "7680"},
           Case{"--headless --frames 1 --scale 0.1", "0.25"}, Case{"--headless --frames 1 --scale 9", "8"}}) {
         const Run r = gui(std::string(c.args) + " --screenshot " + shot);

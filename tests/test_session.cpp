@@ -5,6 +5,7 @@
 #include "gui/app_state.hpp"
 #include "gui/script.hpp"
 #include "gui/session.hpp"
+#include "gui/session_link.hpp"
 
 #include "fv/param_ranges.hpp"
 
@@ -61,7 +62,10 @@ Session unusual() {
     s.view.trail_periods = 3.5;
     s.view.frame = FrameChoice::ground;
     s.presentation = true;
-    s.pins.push_back({"Dahl, θ = 60°, r_{disp} = 2, i = 0", {0, 0.5, 1.0 / 3}, {0.1, std::nan(""), 0.7}});
+    s.pins.push_back({"Dahl, θ = 60°, r_{disp} = 2, i = 0",
+                      {0, 0.5, 1.0 / 3},
+                      {0.1, std::nan(""), 0.7},
+                      PinSource{Model::dahl, kPi / 3, 2, 0, Start::sliding}});
     s.pins.push_back({"rigid, θ = 90°", {0.25}, {0.2 + 0.1}});
     s.data_file = kData;
     return s;
@@ -90,6 +94,14 @@ void check_same(const Session& a, const Session& b) {
     for (std::size_t k = 0; k < a.pins.size(); ++k) {
         CHECK(a.pins[k].label == b.pins[k].label);
         CHECK(a.pins[k].zeta == b.pins[k].zeta);
+        REQUIRE(a.pins[k].source.has_value() == b.pins[k].source.has_value());
+        if (a.pins[k].source) {
+            CHECK(a.pins[k].source->model == b.pins[k].source->model);
+            CHECK(a.pins[k].source->theta == b.pins[k].source->theta);
+            CHECK(a.pins[k].source->rdisp == b.pins[k].source->rdisp);
+            CHECK(a.pins[k].source->i == b.pins[k].source->i);
+            CHECK(a.pins[k].source->start == b.pins[k].source->start);
+        }
         REQUIRE(a.pins[k].rx.size() == b.pins[k].rx.size());
         for (std::size_t n = 0; n < a.pins[k].rx.size(); ++n) // NaN: a gap on both sides
             CHECK((a.pins[k].rx[n] == b.pins[k].rx[n] ||
@@ -321,6 +333,9 @@ TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offendi
              Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"colour\": 1, \"zeta\": [1], \"r_x\": "
                   "[1]}]}",
                   "s.json:1:40: unknown key \"colour\" in \"pins/0\""},
+             Case{"{\"version\": 1, \"pins\": [{\"label\": \"a\", \"zeta\": [1], \"r_x\": [1],\n \"link\": "
+                  "\"dahl:60\"}]}",
+                  "s.json:2:10: link: a Dahl pin is dahl:THETA:RDISP:I[:START]"},
              Case{"{\"version\": 1, \"pins\": [1, 2, 3, 4, 5, 6, 7]}",
                   "s.json:1:24: pins: 7 curves; allowed: at most 6"},
          }) {
@@ -506,4 +521,63 @@ TEST_CASE("docs/app.md names every script action", "[gui][script][docs]") {
         CAPTURE(name);
         CHECK(doc.find("`" + name + "`", section) != std::string::npos);
     }
+}
+
+TEST_CASE(
+    "share link of the app's state: the view and the pins go through a link, a default view adds nothing",
+    "[gui][session][link]") {
+    // A default view: the link is the five keys, as before the view keys existed.
+    Session d;
+    CHECK(session_link(d) == share_link(d.model, d.params, d.start));
+    CHECK(share_address({}, d) == std::string(kDefaultWebBase) + share_link(d.model, d.params, d.start));
+    // Pins made in the app (the worker's curves), a panel, presentation and a speed: through the link and
+    // back, the pins computed again on their own path (compute_pin) come out as the app drew them.
+    AppState app(Model::dahl, Params{0.2, kPi / 3, 2, 1}, 0.7, 60);
+    app.sync({}, true);
+    UiEdits e;
+    e.pin = true;
+    app.sync(e, true);
+    e = {};
+    e.model = Model::rigid;
+    app.sync(e, true);
+    e = {};
+    e.pin = true;
+    e.panel = LowerPanel::loop;
+    e.presentation = true;
+    e.speed = 1.5;
+    app.sync(e, true);
+    const SessionState& s = app.ui().session;
+    REQUIRE(s.pins.size() == 2);
+    const std::string link = session_link(s);
+    CHECK(link == "?zeta=0.2&theta=60&rdisp=2&i=1&model=rigid&panel=loop&present=1&speed=1.5"
+                  "&pins=dahl:60:2:1,rigid:60");
+    Session opened;
+    const ShareLink l = parse_share_link("https://example.org/fv/" + link);
+    CHECK(l.notices.empty());
+    apply_link(l, opened);
+    CHECK(opened.model == Model::rigid);
+    CHECK(opened.panel == LowerPanel::loop);
+    CHECK(opened.presentation);
+    CHECK(opened.speed == 1.5);
+    REQUIRE(opened.pins.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+        INFO(k);
+        CHECK(opened.pins[k].label == s.pins[k].label);
+        CHECK(opened.pins[k].zeta == s.pins[k].zeta);
+        REQUIRE(opened.pins[k].rx.size() == s.pins[k].rx.size());
+        for (std::size_t n = 0; n < s.pins[k].rx.size(); ++n)
+            CHECK((opened.pins[k].rx[n] == s.pins[k].rx[n] ||
+                   (std::isnan(opened.pins[k].rx[n]) && std::isnan(s.pins[k].rx[n]))));
+    }
+    // A pin whose source is not known (an older session file) stays out of the link, and is counted.
+    SessionState old = s;
+    old.pins[0].source.reset();
+    CHECK(session_link(old).find("&pins=rigid:60") != std::string::npos);
+    CHECK(pins_not_in_link(old) == 1);
+    // Site addresses the desktop's --web-base takes, and what it refuses.
+    CHECK(web_base_error("https://example.org/frictionviz/").empty());
+    CHECK(web_base_error("http://192.168.1.20:8000/").empty());
+    for (const char* bad :
+         {"example.org/fv/", "ftp://x/", "https://x/?a=1", "https://x/#top", "https://x/a b", "https://x/\n"})
+        CHECK_FALSE(web_base_error(bad).empty());
 }

@@ -67,7 +67,8 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
     };
     for (const Case& c : {
              Case{"?zeta=0.3&thetta=60",
-                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start, frame"},
+                  "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start, frame, "
+                  "panel, present, speed, pins"},
              Case{"?zeta=abc", "column 7: zeta = 'abc' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=0x10", "column 7: zeta = '0x10' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=inf", "column 7: zeta = 'inf' is not a decimal number; allowed: zeta in [0, 100]"},
@@ -245,4 +246,140 @@ TEST_CASE("share link: the ground frame goes through the link, and a body-frame 
     CHECK(frame == FrameChoice::ground);
     apply_share_link(parse_share_link("?frame=body"), m, q, start, frame);
     CHECK(frame == FrameChoice::body);
+}
+
+TEST_CASE("share link: the view's keys (panel, presentation, speed, pins) read back as written", "[link]") {
+    ShareLink view;
+    view.panel = LowerPanel::map;
+    view.presentation = true;
+    view.speed = 1.0 / 3; // no short decimal: written as the shortest that reads back
+    view.pins = std::vector<PinSource>{{Model::dahl, 60 * kPi / 180, 2, 1, Start::rest},
+                                       {Model::rigid, 30 * kPi / 180, 1, 1, Start::rest},
+                                       {Model::dahl, kPi / 2, 0.1, 5, Start::sliding}};
+    const std::string keys = view_link_keys(view);
+    CHECK(keys ==
+          "&panel=map&present=1&speed=0.3333333333333333&pins=dahl:60:2:1,rigid:30,dahl:90:0.1:5:sliding");
+    const ShareLink l = parse_share_link(share_link(Model::dahl, Params{0.3, kPi / 3, 5, 1}) + keys);
+    CHECK(l.notices.empty());
+    CHECK(l.zeta == 0.3);
+    CHECK(l.panel == LowerPanel::map);
+    CHECK(l.presentation == true);
+    CHECK(l.speed == 1.0 / 3);
+    REQUIRE(l.pins);
+    REQUIRE(l.pins->size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+        const PinSource &a = (*view.pins)[k], &b = (*l.pins)[k];
+        INFO(k);
+        CHECK(a.model == b.model);
+        CHECK(a.theta == b.theta);
+        if (a.model == Model::dahl) { // the rigid curve depends on theta alone: the link carries nothing else
+            CHECK(a.rdisp == b.rdisp);
+            CHECK(a.i == b.i);
+            CHECK(a.start == b.start);
+        }
+    }
+    // Every panel, and presentation off, by name.
+    for (LowerPanel p : kLowerPanels)
+        CHECK(parse_share_link(std::string("?panel=") + panel_name(p)).panel == p);
+    CHECK(parse_share_link("?present=0").presentation == false);
+    // Random pins come back bit for bit (theta within the one ulp degrees to radians may cost).
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> theta(0, kPi), logr(-1, 4), i(0, 10), speed(0.05, 10);
+    for (int k = 0; k < 2000; ++k) {
+        ShareLink v;
+        v.speed = speed(rng);
+        std::vector<PinSource> pins;
+        for (std::size_t n = 0; n <= k % kMaxPins; ++n)
+            pins.push_back({n % 3 ? Model::dahl : Model::rigid, theta(rng), std::pow(10.0, logr(rng)), i(rng),
+                            n % 2 ? Start::sliding : Start::rest});
+        v.pins = pins;
+        const std::string keys2 = view_link_keys(v);
+        INFO(keys2);
+        REQUIRE(keys2.size() < 1 + kMaxPinsText + 40); // bounded: the longest pins value fits the limit
+        const ShareLink r = parse_share_link("?model=dahl" + keys2);
+        REQUIRE(r.notices.empty());
+        REQUIRE(r.speed == v.speed);
+        REQUIRE(r.pins->size() == pins.size());
+        for (std::size_t n = 0; n < pins.size(); ++n) {
+            REQUIRE(std::abs((*r.pins)[n].theta - pins[n].theta) <=
+                    std::nextafter(pins[n].theta, 4.0) - pins[n].theta);
+            if (pins[n].model == Model::rigid) continue;
+            REQUIRE((*r.pins)[n].rdisp == pins[n].rdisp);
+            REQUIRE((*r.pins)[n].i == pins[n].i);
+            REQUIRE((*r.pins)[n].start == pins[n].start);
+        }
+    }
+}
+
+TEST_CASE("share link: old links read as before, with no view keys and nothing noted", "[link]") {
+    for (const std::string text :
+         {"?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl",
+          "?zeta=0.075&theta=90&rdisp=0.1&i=5&model=dahl&start=sliding", "?zeta=0.5"}) {
+        INFO(text);
+        const ShareLink l = parse_share_link(text);
+        CHECK_FALSE(l.panel);
+        CHECK_FALSE(l.presentation);
+        CHECK_FALSE(l.speed);
+        CHECK_FALSE(l.pins);
+        CHECK(l.notices.empty());
+    }
+    // A view with nothing set writes nothing: the app's link of a default view is the five keys.
+    CHECK(view_link_keys(ShareLink{}).empty());
+    ShareLink none;
+    none.pins = std::vector<PinSource>{};
+    CHECK(view_link_keys(none).empty());
+}
+
+TEST_CASE(
+    "share link: a view value that does not read is ignored with a notice, the rest of the link applied",
+    "[link]") {
+    struct Case {
+        std::string text, notice;
+    };
+    const std::string long_pins(kMaxPinsText + 1, '1');
+    for (const Case& c : {
+             Case{"?zeta=0.4&panel=graph",
+                  "column 17: panel = 'graph'; allowed: curves, map, loop, why; ignored"},
+             Case{"?zeta=0.4&present=yes", "column 19: present = 'yes'; allowed: 1, 0; ignored"},
+             Case{"?zeta=0.4&speed=100",
+                  "column 17: speed = 100 is out of range; allowed: speed in [0.05, 10]; "
+                  "ignored"},
+             Case{"?zeta=0.4&speed=fast",
+                  "column 17: speed = 'fast' is not a decimal number; allowed: speed in [0.05, 10]; ignored"},
+             Case{"?zeta=0.4&pins=",
+                  "column 16: pins is empty; expected MODEL:THETA[:RDISP:I[:START]] joined by "
+                  "','; ignored"},
+             Case{"?zeta=0.4&pins=dahl:60", "column 16: pin 1 ('dahl:60'): a Dahl pin is "
+                                            "dahl:THETA:RDISP:I[:START]; ignored"},
+             Case{"?zeta=0.4&pins=rigid:30,rigid:30:2", "column 16: pin 2 ('rigid:30:2'): a rigid pin is "
+                                                        "rigid:THETA; ignored"},
+             Case{"?zeta=0.4&pins=coulomb:30",
+                  "column 16: pin 1 ('coulomb:30'): model 'coulomb'; allowed: dahl, "
+                  "rigid; ignored"},
+             Case{"?zeta=0.4&pins=dahl:400:2:1",
+                  "column 16: pin 1 ('dahl:400:2:1'): theta = 400 is out of range; "
+                  "allowed: theta in [0, 180]; ignored"},
+             Case{"?zeta=0.4&pins=dahl:60:2:1:later",
+                  "column 16: pin 1 ('dahl:60:2:1:later'): start 'later'; "
+                  "allowed: rest, sliding; ignored"},
+             Case{"?zeta=0.4&pins=rigid:1,rigid:2,rigid:3,rigid:4,rigid:5,rigid:6,rigid:7",
+                  "column 16: 7 pins; allowed: at most 6; ignored"},
+             Case{"?zeta=0.4&pins=" + long_pins,
+                  "column 16: pins is 601 characters long; allowed: at most 600; "
+                  "ignored"},
+         }) {
+        INFO(c.text);
+        ShareLink l;
+        REQUIRE_NOTHROW(l = parse_share_link(c.text));
+        CHECK(l.zeta == 0.4);
+        REQUIRE(l.notices.size() == 1);
+        CHECK(l.notices[0] == c.notice);
+        CHECK_FALSE(l.panel);
+        CHECK_FALSE(l.presentation);
+        CHECK_FALSE(l.speed);
+        CHECK_FALSE(l.pins);
+    }
+    // A view key given twice is a damaged link like any other key given twice, ignored value or not.
+    CHECK(refusal("?panel=map&panel=loop") == "column 12: 'panel' is given twice; each key at most once");
+    CHECK(refusal("?panel=graph&panel=loop") == "column 14: 'panel' is given twice; each key at most once");
 }

@@ -2,10 +2,13 @@
 // canvas, WebGL 2). The page is web/index.html.
 //
 // The page's address is a share link (fv/share_link.hpp, what `frictionviz gui --link` reads): its query sets
-// the model, parameters and start (rest or sliding) at start, and as the sliders move the address follows
-// (history.replaceState), so a copied address reopens the same setup. A link that does not read shows the
-// defaults and says why on the page, never a blank page.
+// the model, parameters, start and view (panel, presentation, speed, pins) at start, and as the state changes
+// the address follows (history.replaceState), so a copied address reopens the same setup; Copy link copies
+// it. A link that does not read shows the defaults and says why on the page, never a blank page; a view value
+// that does not read is ignored with a notice. Every frame the page's layout goes to Module.fvLayout (and the
+// body's data-fv-layout attribute) for the tests (tests/web/page_fits.sh).
 #include "gui/gui_app.hpp"
+#include "gui/session_link.hpp"
 
 #include "fv/share_link.hpp"
 #include "fv/units.hpp"
@@ -23,23 +26,64 @@ namespace {
 // location.search ("" or "?...").
 EM_JS(char*, fv_page_query, (), { return allocateUTF8(window.location.search); });
 
-// The page's message line (index.html's #status), in red.
-EM_JS(void, fv_show_page_error, (const char* text), {
+// location.origin + location.pathname: the address a share link is appended to.
+EM_JS(char*, fv_page_base, (), { return allocateUTF8(window.location.origin + window.location.pathname); });
+
+// The page's message line (index.html's #status), in red (an error) or grey (a notice).
+EM_JS(void, fv_show_page_message, (const char* text, int error), {
     var line = document.getElementById("status");
     if (!line) return;
     line.textContent = UTF8ToString(text);
-    line.className = "error";
+    line.className = error ? "error" : "notice";
 });
+
+// The app's status line as the body's data-fv-status (the tests read it from the DOM).
+EM_JS(void, fv_publish_status, (const char* text), {
+    if (document.body) document.body.setAttribute("data-fv-status", UTF8ToString(text));
+});
+
+// The layout as JSON, for the tests: the app's (`json`) with what the browser says of the window and the
+// canvas, as Module.fvLayout and the body's data-fv-layout (chromium --dump-dom).
+// clang-format off
+EM_JS(void, fv_publish_layout, (const char* json), {
+    var c = Module["canvas"];
+    var r = c.getBoundingClientRect();
+    var j = "{\"app\":" + UTF8ToString(json) + ",\"window\":[" + window.innerWidth + "," + window.innerHeight +
+            "],\"dpr\":" + window.devicePixelRatio + ",\"canvas_css\":[" + r.left + "," + r.top + "," + r.width +
+            "," + r.height + "],\"canvas\":[" + c.width + "," + c.height + "]}";
+    Module["fvLayout"] = j;
+    if (document.body) document.body.setAttribute("data-fv-layout", j);
+});
+// clang-format on
 
 // Replaces the address's query (the hash stays), without a new history entry.
 EM_JS(void, fv_replace_page_query, (const char* query),
       { history.replaceState(history.state, "", UTF8ToString(query) + window.location.hash); });
 
-std::string page_query() {
-    char* q = fv_page_query();
+std::string taken(char* q) {
     std::string s = q ? q : "";
     std::free(q);
     return s;
+}
+
+std::string rect_json(const fv::gfx::Rect& r) {
+    char b[128];
+    std::snprintf(b, sizeof b, "[%.1f,%.1f,%.1f,%.1f]", r.x0, r.y0, r.x1, r.y1);
+    return b;
+}
+
+// What the page's layout test checks (tests/web/page_fits.py): the page and the canvas's backing store, and
+// every rectangle the app drew into, in CSS pixels.
+std::string layout_json(const fv::app::ShownLayout& l) {
+    char b[256];
+    std::snprintf(b, sizeof b,
+                  "{\"page\":[%.1f,%.1f],\"ratio\":%.3f,\"framebuffer\":[%d,%d],\"stacked\":%s,"
+                  "\"controls_scroll_max\":%.1f,",
+                  l.page.x, l.page.y, l.pixel_ratio, l.framebuffer.width, l.framebuffer.height,
+                  l.screen.stacked ? "true" : "false", l.controls_scroll_max);
+    return b + std::string("\"controls\":") + rect_json(l.screen.controls) +
+           ",\"top_view\":" + rect_json(l.panels.top_view) + ",\"force\":" + rect_json(l.panels.force) +
+           ",\"lower\":" + rect_json(l.panels.ratio) + "}";
 }
 
 } // namespace
@@ -51,11 +95,17 @@ int main() {
     try {
         fv::app::GuiOptions o;
         o.platform = "web";
-        const std::string query = page_query();
+        o.share.base = taken(fv_page_base());
+        o.share.from_page = true;
+        const std::string query = taken(fv_page_query());
         if (!query.empty()) {
             try {
-                fv::apply_share_link(fv::parse_share_link(query), o.start.model, o.start.params,
-                                     o.start.start, o.start.view.frame);
+                const fv::ShareLink link = fv::parse_share_link(query);
+                fv::app::apply_link(link, o.start);
+                // A view value that did not read: ignored, said on the page and in the status line.
+                for (const std::string& n : link.notices)
+                    o.start_notice += (o.start_notice.empty() ? "link: " : "; ") + n;
+                if (!o.start_notice.empty()) fv_show_page_message(o.start_notice.c_str(), 0);
                 // As gui --link does: the physical view (with the page's default A and f) must be finite.
                 if (const std::string why = fv::units::physical_view_error(
                         o.start.params, o.start.amplitude_um, o.start.frequency_khz);
@@ -63,20 +113,29 @@ int main() {
                     throw fv::LinkError(why + " (the app's default amplitude and frequency)");
             } catch (const fv::LinkError& e) {
                 o.start = fv::app::Session{}; // the defaults, whatever the link had set before its error
+                o.start_notice.clear();
                 const std::string msg =
                     "This link could not be read (" + std::string(e.what()) + "); showing the default setup.";
-                fv_show_page_error(msg.c_str());
+                fv_show_page_message(msg.c_str(), 1);
             }
         }
         // The address changes only when the state does: a page opened without a query (or with a bad one)
         // keeps its address until a slider moves.
-        std::string shown = fv::share_link(o.start.model, o.start.params, o.start.start, o.start.view.frame);
-        o.on_state = [&shown](const fv::app::UiState& ui) {
-            std::string link =
-                fv::share_link(ui.session.model, ui.session.params, ui.session.start, ui.session.view.frame);
+        std::string shown = fv::app::session_link(o.start);
+        std::string status;
+        o.on_state = [&shown, &status](const fv::app::UiState& ui) {
+            if (ui.status != status) fv_publish_status((status = ui.status).c_str());
+            std::string link = fv::app::session_link(ui.session);
             if (link == shown) return;
             shown = std::move(link);
             fv_replace_page_query(shown.c_str());
+        };
+        std::string published;
+        o.on_layout = [&published](const fv::app::ShownLayout& l) {
+            std::string j = layout_json(l);
+            if (j == published) return;
+            published = std::move(j);
+            fv_publish_layout(published.c_str());
         };
         return fv::app::run_gui(o);
     } catch (const std::exception& e) {

@@ -11,12 +11,15 @@
 #include "gui/gui_app.hpp"
 #include "gui/platform.hpp"
 #include "gui/script.hpp"
+#include "gui/session_link.hpp"
 
 #include "fv/atomic_file.hpp"
 #include "fv/measurements.hpp"
 #include "fv/share_link.hpp"
 #include "fv/units.hpp"
 
+#include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 namespace fv::cli {
@@ -58,7 +61,13 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (const auto start = given_start(cmd, a.model.solver.start)) s.start = *start;
     if (cmd.get_option("--link")->count() > 0) {
         try {
-            apply_share_link(parse_share_link(a.link), s.model, s.params, s.start, s.view.frame);
+            const ShareLink link = parse_share_link(a.link);
+            app::apply_link(link, s);
+            // A view value that did not read is ignored (share_link.hpp): said on stderr and in the app.
+            for (const std::string& n : link.notices) {
+                std::fprintf(stderr, "frictionviz: --link: %s\n", n.c_str());
+                o.start_notice += (o.start_notice.empty() ? "--link: " : "; ") + n;
+            }
         } catch (const LinkError& e) {
             throw UsageError("--link: " + std::string(e.what()));
         }
@@ -99,7 +108,7 @@ Command add_gui_command(CLI::App& root) {
         std::string platform = "auto", size;
         double scale = 0;
         int frames = 0, bench = 0;
-        std::string script, screenshot, data, session, link;
+        std::string script, screenshot, data, session, link, web_base;
         int lesson = 0;
     };
     auto a = std::make_shared<Args>();
@@ -131,6 +140,11 @@ Command add_gui_command(CLI::App& root) {
         cmd->add_option("--link", a->link,
                         "start from a share link, ?zeta=Z&theta=DEG&rdisp=R&i=I&model=dahl|rigid "
                         "(any of the keys; or a URL with that query), instead of the model flags");
+    cmd->add_option("--web-base", a->web_base,
+                    std::string("the address of the browser version's site, which Copy link puts before the "
+                                "share link so that a student can click it (default: the environment's "
+                                "FRICTIONVIZ_WEB_BASE, else ") +
+                        app::kDefaultWebBase + ", scripts/serve-web.sh on this machine; docs/web.md)");
     // A session holds the whole state, a link the model and its parameters: flags for the same things
     // would contradict them.
     for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--start", "--vb", "--zss"}) {
@@ -183,14 +197,22 @@ Command add_gui_command(CLI::App& root) {
                 o.height = sz.h;
             }
             o.scale = static_cast<float>(a->scale);
-            // The app needs room for its panel and plots: a logical page of at least 800 x 480.
+            // The app needs room for its panel and plots (a narrow page has the panel on top, a phone's
+            // 390 x 844 included): a logical page of at least 320 x 320.
             if (o.width > 0) {
                 const double s = a->scale > 0 ? a->scale : 1;
-                if (o.width / s < 800 || o.height / s < 480)
+                if (o.width / s < 320 || o.height / s < 320)
                     throw UsageError("--size " + a->size +
-                                     " leaves a page smaller than 800x480 logical "
-                                     "units at the scale; allowed: --size at least 800x480 times --scale");
+                                     " leaves a page smaller than 320x320 logical "
+                                     "units at the scale; allowed: --size at least 320x320 times --scale");
             }
+            // Where Copy link points: the flag, the environment, the default (session_link.hpp).
+            const char* env_base = std::getenv("FRICTIONVIZ_WEB_BASE");
+            o.share.base = !a->web_base.empty()         ? a->web_base
+                           : env_base && *env_base != 0 ? std::string(env_base)
+                                                        : std::string(app::kDefaultWebBase);
+            if (const std::string why = app::web_base_error(o.share.base); !why.empty())
+                throw UsageError((a->web_base.empty() ? "FRICTIONVIZ_WEB_BASE: " : "--web-base: ") + why);
             o.frames = a->frames;
             o.lesson = a->lesson;
             o.bench_frames = a->bench;

@@ -5,6 +5,12 @@
 namespace fv::app {
 
 DashboardLayout layout_dashboard(const gfx::Rect& a) {
+    // An upright area (the app's pictures below its panel on a phone): the three one above the other, each
+    // the full width, rather than two plots side by side half as wide.
+    if (a.height() > 1.1f * a.width()) {
+        const float s1 = a.y0 + a.height() * 0.40f, s2 = a.y0 + a.height() * 0.70f;
+        return {{a.x0, a.y0, a.x1, s1 - 4}, {a.x0, s1 + 4, a.x1, s2 - 4}, {a.x0, s2 + 4, a.x1, a.y1}};
+    }
     const float split = a.y0 + a.height() * 0.6f;
     const float mid = (a.x0 + a.x1) / 2;
     return {

@@ -12,6 +12,8 @@ namespace fv::app {
 struct DashboardLayout {
     gfx::Rect top_view, force, ratio;
 };
+// The top view above, the force and lower panels side by side below; in an upright area (taller than 1.1
+// times its width) the three stacked.
 DashboardLayout layout_dashboard(const gfx::Rect& area);
 
 struct DashboardPanels {

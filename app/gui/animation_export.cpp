@@ -97,7 +97,10 @@ std::optional<AnimationRequest> draw_export_dialog(ExportDialog& d, double speed
         d.open_requested = false;
         d.error.clear();
     }
-    ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 30, 0), ImGuiCond_Appearing);
+    // At most the page's width less a margin (a phone's page is 390 wide).
+    ImGui::SetNextWindowSize(
+        ImVec2(std::min(ImGui::GetFontSize() * 30, ImGui::GetIO().DisplaySize.x - 16), 0),
+        ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal("Export animation", nullptr, ImGuiWindowFlags_NoSavedSettings)) return {};
     std::optional<AnimationRequest> out;
     ImGui::TextWrapped("A seamless loop of the steady state at the current parameters, %d periods at %.2g "

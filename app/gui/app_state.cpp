@@ -292,16 +292,7 @@ void AppState::pin_current_curve(bool wait) {
         ui_.status = "the curve is still being computed: pin it once it is drawn";
         return;
     }
-    const Params& p = ui_.session.params;
-    const bool rigid = ui_.session.model == Model::rigid;
-    PinnedCurve pin;
-    pin.label =
-        std::string(rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.3g", p.theta * 180 / kPi) + "°" +
-        (rigid ? ""
-               : ", r_{disp} = " + format_number("%.3g", p.rdisp) + ", i = " + format_number("%g", p.i)) +
-        (rigid || ui_.session.start == Start::rest ? "" : ", from sliding");
-    pin.zeta = curves->zetas;
-    pin.rx = rigid ? curves->rigid_rx : curves->model_rx;
+    PinnedCurve pin = pin_of(pin_source(ui_.session.model, ui_.session.params, ui_.session.start), *curves);
     ui_.status = "pinned: " + pin.label;
     ui_.session.pins.push_back(std::move(pin));
 }

@@ -17,9 +17,10 @@
 
 namespace fv::app {
 
-// App-only ranges (not model parameters): animation speed in vibration periods per second, trail length in
-// periods. The panel's sliders span a part of them.
-inline constexpr ParamRange kSpeedRange{0.05, 10};
+// App-only ranges (not model parameters): animation speed in vibration periods per second (in the shared
+// table, fv/param_ranges.hpp, since share links carry it), trail length in periods. The panel's sliders span
+// a part of them.
+using fv::kSpeedRange;
 // How much of the past the app keeps to rewind through, in vibration periods (at least the trail).
 inline constexpr double kHistoryPeriods = 6;
 inline constexpr ParamRange kTrailRange{0.1, 10};

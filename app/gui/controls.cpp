@@ -121,14 +121,14 @@ void draw_coexisting_states(const std::optional<RatioCurves>& curves, const Live
 
 // The model's parameters, the model and the start (with the coexisting states where there are several).
 UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
-                                const std::optional<RatioCurves>& curves) {
+                                const std::optional<RatioCurves>& curves, const ShareAddress& share) {
     UiEdits e;
     Params p = ui.session.params;
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
     ImGui::TextUnformatted("Parameters");
     ImGui::SameLine();
-    draw_share_link(ui); // the share link of these parameters, on the header's row
+    e.merge(draw_share_link(ui, share)); // the share link of this state, on the header's row
     changed |= slider_double("ζ", &p.zeta, kSliders.zeta, "%.3f");
     range_tooltip("velocity ratio ζ = v_b / v_v, Eq. (6)", kSliders.zeta, kZetaRange);
     changed |= slider_double("θ [°]", &theta_deg, kSliders.theta_deg, "%.1f");
@@ -397,17 +397,17 @@ UiEdits draw_panel_choice(const UiState& ui) {
 } // namespace
 
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height, FileDialogs& dialog) {
+                      bool busy, ControlsPlace& place, FileDialogs& dialog, const ShareAddress& share) {
     UiEdits e;
-    ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(width, height), ImGuiCond_Always);
+    ImGui::SetNextWindowPos(ImVec2(place.rect.x0, place.rect.y0), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(place.rect.width(), place.rect.height()), ImGuiCond_Always);
     ImGui::Begin("frictionviz", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_MenuBar);
     e.merge(draw_menu(ui, dialog));
     e.merge(draw_lesson_card(ui));
     ImGui::PushItemWidth(-ImGui::GetFontSize() * 4.8f); // room for the labels at any font size
-    e.merge(draw_parameter_controls(ui, sim, curves));
+    e.merge(draw_parameter_controls(ui, sim, curves, share));
     // Presentation mode folds the physical units, the search details and the data away; the presets stay
     // (a lecture jumps between them).
     if (!ui.session.presentation) {
@@ -427,6 +427,7 @@ UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional
     if (!ui.status.empty()) ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::PopItemWidth();
     e.merge(draw_file_dialogs(dialog));
+    place.scroll_max = ImGui::GetScrollMaxY();
     ImGui::End();
     return e;
 }

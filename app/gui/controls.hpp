@@ -17,9 +17,16 @@ struct SliderRanges {
 };
 inline constexpr SliderRanges kSliders{kZetaSlider, kThetaSlider, kRdispSlider, kISlider};
 
-// Draws the panel at the left edge (width in logical pixels) and returns what the user changed.
+// Where the panel goes (screen_layout.hpp) and, after the frame, how far its rows scroll (0: all in view).
+struct ControlsPlace {
+    gfx::Rect rect;
+    float scroll_max = 0; // out
+};
+
+// Draws the panel at `place` (logical pixels) and returns what the user changed. share: the address the
+// share link is appended to.
 UiEdits draw_controls(const UiState& ui, const LiveSim& sim, const std::optional<RatioCurves>& curves,
-                      bool busy, float width, float height, FileDialogs& dialog);
+                      bool busy, ControlsPlace& place, FileDialogs& dialog, const ShareAddress& share);
 
 // Space, Right, R, S, Esc (ignored while a text field has the keyboard or a dialog is open).
 UiEdits keyboard_edits(const UiState& ui);

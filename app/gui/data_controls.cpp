@@ -159,7 +159,9 @@ std::optional<std::string> path_dialog(PathDialog& d, const PathDialogText& t) {
         ImGui::OpenPopup(t.title);
         d.open_requested = false;
     }
-    ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+    // At most the page's width less a margin (a phone's page is 390 wide).
+    ImGui::SetNextWindowSize(ImVec2(std::min(440.0f, ImGui::GetIO().DisplaySize.x - 16), 0),
+                             ImGuiCond_Appearing);
     if (!ImGui::BeginPopupModal(t.title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return std::nullopt;
     ImGui::TextWrapped("%s", t.help);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
@@ -221,9 +223,11 @@ UiEdits draw_file_dialogs(FileDialogs& dialog) {
     return e;
 }
 
-void draw_share_link(const UiState& ui) {
-    std::string link =
-        share_link(ui.session.model, ui.session.params, ui.session.start, ui.session.view.frame);
+UiEdits draw_share_link(const UiState& ui, const ShareAddress& where) {
+    UiEdits e;
+    // The field shows the link (what fits on the row); Copy link copies the whole address.
+    std::string link = session_link(ui.session);
+    const std::string address = where.base + link;
     // As tall as a line of text (no vertical frame padding): it shares the header's row, which keeps its
     // height, so the panel's rows below stay where they are.
     const ImGuiStyle& st = ImGui::GetStyle();
@@ -233,15 +237,28 @@ void draw_share_link(const UiState& ui) {
                             2 * st.FramePadding.x - st.ItemSpacing.x);
     ImGui::InputText("##link", &link, ImGuiInputTextFlags_ReadOnly);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees) and the start when it is not "
-                          "from rest\n%s\n"
-                          "frictionviz gui --link '%s' starts from it, and the browser version reads the "
-                          "same keys from its address.",
-                          link.c_str(), link.c_str());
+        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees), the start when it is not "
+                          "from rest, and the panel, presentation mode, speed and pinned curves when they "
+                          "are not the defaults\n%s\n%s"
+                          "frictionviz gui --link '%s' starts from it, and the browser version opens it.%s",
+                          address.c_str(),
+                          where.from_page
+                              ? "This page's address.\n"
+                              : "The site's address is a setting: gui --web-base URL or "
+                                "FRICTIONVIZ_WEB_BASE (docs/web.md), where your class's site is.\n",
+                          link.c_str(),
+                          pins_not_in_link(ui.session) > 0
+                              ? "\nPins opened from an older session file are not in it (their parameters "
+                                "are not known)."
+                              : "");
     ImGui::SameLine();
-    if (ImGui::SmallButton(copy)) ImGui::SetClipboardText(link.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("copy the share link to the clipboard");
+    if (ImGui::SmallButton(copy)) {
+        ImGui::SetClipboardText(address.c_str());
+        e.status = "Copy link: " + address;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("copy this address to the clipboard");
     ImGui::PopStyleVar();
+    return e;
 }
 
 } // namespace fv::app

@@ -1,6 +1,7 @@
 // The control panel's physical-units, measured-data and share-link sections, the File menu and its dialogs.
 #pragma once
 
+#include "session_link.hpp"
 #include "ui_state.hpp"
 
 #include <functional>
@@ -28,9 +29,10 @@ UiEdits draw_vibration_controls(const UiState& ui);
 // The data file shown, its points, and buttons to open, fit and clear.
 UiEdits draw_data_controls(const UiState& ui, FileDialogs& dialog);
 
-// The share link of the state shown (fv/share_link.hpp) in a read-only field, with a button that copies it
-// to the clipboard; one line of text high (for the Parameters header's row).
-void draw_share_link(const UiState& ui);
+// The share link of the state shown (session_link.hpp) in a read-only field, with a button that copies the
+// whole address (the site's address and the link) to the clipboard (in the browser the system's, web
+// platform); one line of text high (for the Parameters header's row).
+UiEdits draw_share_link(const UiState& ui, const ShareAddress& where);
 
 // The panel's menu bar: File (open data, clear data, open and save a session, export, screenshot, quit).
 // Call right after Begin() of a window with ImGuiWindowFlags_MenuBar.

@@ -25,7 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Ms = std::chrono::duration<double, std::milli>;
-constexpr float kPanelWidth = 340;
 // Presentation mode: type, lines and markers this much larger (the panel's font 22 px instead of 15).
 constexpr float kPresentationScale = 1.4f;
 
@@ -129,6 +128,7 @@ class GuiLoop {
           animation_(o.animation_exporter), total_frames_(o.bench_frames > 0 ? o.bench_frames : o.frames) {
         dialog_.choose = [this](const std::string& accept) { return platform_->choose_file(accept); };
         if (o.lesson > 0) queued_.lesson = o.lesson; // applied by the first frame's sync, as a menu click
+        if (!o.start_notice.empty()) queued_.status = o.start_notice;
     }
 
     int run() {
@@ -169,13 +169,14 @@ class GuiLoop {
     void build_ui() {
         const gfx::Vec2 logical = session_.logical_page();
         const UiState& ui = app_.ui();
-        const float panel_w = panel_w_ = ui.session.presentation ? 450 : kPanelWidth;
+        layout_ = screen_layout(logical, ui.session.presentation);
+        controls_.rect = layout_.controls;
         ImGui::GetIO().FontDefault = session_.fonts().font_for(ui.session.presentation ? 22 : 15);
         platform_->imgui_new_frame(logical);
         if (!real_time_) ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX); // window == headless pixels
         ImGui::NewFrame();
-        queued_.merge(draw_controls(ui, app_.sim(), app_.worker().latest(), app_.worker().busy(), panel_w,
-                                    logical.y, dialog_));
+        queued_.merge(draw_controls(ui, app_.sim(), app_.worker().latest(), app_.worker().busy(), controls_,
+                                    dialog_, o_.share));
         queued_.export_animation = draw_export_dialog(export_dialog_, ui.session.speed, animation_.running());
         queued_.merge(keyboard_edits(ui));
         // Without threads (the browser) the curves are computed here, a few milliseconds a frame; not in a
@@ -186,8 +187,7 @@ class GuiLoop {
         queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
         if (const gfx::Rect& a = transforms_.top_view.area; a.width() > 0 && a.height() > 0)
             queued_.view_aspect = static_cast<double>(a.width()) / a.height();
-        if (ui.show_help && !draw_help_overlay(true, {panel_w, 0, logical.x, logical.y}))
-            queued_.show_help = false;
+        if (ui.show_help && !draw_help_overlay(true, layout_.beside)) queued_.show_help = false;
         ImGui::Render();
     }
 
@@ -236,7 +236,6 @@ class GuiLoop {
         const gfx::Vec2 logical = session_.logical_page();
         const UiState& ui = app_.ui();
         const bool present = ui.session.presentation;
-        const float panel_w = panel_w_; // the panel's as built (presentation may have changed since)
         const auto curves = app_.worker().latest();
         const bool busy = app_.worker().busy();
         gfx::Canvas& canvas = session_.canvas();
@@ -244,8 +243,11 @@ class GuiLoop {
         const DashboardPanels panels =
             dashboard_panels(app_.sim(), app_.view(), curves, busy, ui.session.panel,
                              {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins}, &app_.mechanism());
-        transforms_ = paint_dashboard(canvas, {panel_w + 6, 4, logical.x - 4, logical.y - 4}, panels,
-                                      present ? kPresentationScale : 1.0f);
+        // Beside the panel as built (presentation may have changed since).
+        transforms_ = paint_dashboard(canvas, layout_.pictures, panels, present ? kPresentationScale : 1.0f);
+        if (o_.on_layout)
+            o_.on_layout({logical, session_.pixel_ratio(), session_.context().framebuffer_size(), layout_,
+                          layout_dashboard(layout_.pictures), controls_.scroll_max});
         times_.layout = Clock::now();
         canvas.end();
         session_.imgui().render(*ImGui::GetDrawData());
@@ -278,8 +280,9 @@ class GuiLoop {
     ExportDialog export_dialog_;
     AnimationExportJob animation_;
     const int total_frames_;
-    PlatformEvents events_; // this frame's, polled before the panel is built
-    float panel_w_ = kPanelWidth;
+    PlatformEvents events_;   // this frame's, polled before the panel is built
+    ScreenLayout layout_;     // this frame's, from the page's size when the panel was built
+    ControlsPlace controls_;  // where the panel went and how far it scrolls
     UiEdits queued_;          // the panel's, keys' and mouse's edits, applied by this frame's sync
     AppState::Actions act_{}; // what this frame's sync asks for (files, dialogs)
     DashboardTransforms transforms_{};

@@ -3,7 +3,13 @@
 #pragma once
 
 #include "animation_export.hpp"
+#include "screen_layout.hpp"
 #include "session.hpp"
+#include "session_link.hpp"
+
+#include "figures/dashboard_painter.hpp"
+
+#include "fv/gfx/context.hpp" // Size
 
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
@@ -13,6 +19,16 @@
 #include <string>
 
 namespace fv::app {
+
+// Where a frame put the panel and the pictures, in logical pixels (CSS pixels in the browser).
+struct ShownLayout {
+    gfx::Vec2 page;
+    float pixel_ratio = 1;
+    gfx::Size framebuffer;
+    ScreenLayout screen;
+    DashboardLayout panels;
+    float controls_scroll_max = 0; // how far the panel's rows scroll (0: all in view)
+};
 
 struct GuiOptions {
     std::string platform = "auto"; // make_platform(): window, headless or auto
@@ -35,6 +51,13 @@ struct GuiOptions {
     // Called once a frame after that frame's edits took effect (the browser page writes the state into its
     // address as a share link); may be empty.
     std::function<void(const UiState&)> on_state;
+    // Where Copy link points (the page's address in the browser; --web-base on the desktop).
+    ShareAddress share;
+    // A first line for the status line (a link's view values that were ignored), or "".
+    std::string start_notice;
+    // Called once a frame after drawing with where everything went (the browser page hands it to its tests);
+    // may be empty.
+    std::function<void(const ShownLayout&)> on_layout;
 };
 
 // Returns the process exit code. Throws std::invalid_argument for an unknown platform and

@@ -103,7 +103,8 @@ bool draw_help_overlay(bool open, const gfx::Rect& area, HelpLayout* layout) {
     const float h_max = area.height() - 2 * margin;
     ImGui::SetNextWindowPos(ImVec2(area.x0 + (area.width() - w) / 2, area.y0 + margin), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(w, 0), ImGuiCond_Always);
-    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, h_max));
+    // No taller than the area (a phone, a small window): the overlay scrolls beyond it.
+    ImGui::SetNextWindowSizeConstraints(ImVec2(w, 0), ImVec2(w, std::max(100.0f, h_max)));
     ImGui::SetNextWindowBgAlpha(0.96f);
     bool keep = true;
     ImGui::Begin("What you see (F1 or ? closes)", &keep,

@@ -8,6 +8,7 @@
 #include <emscripten/html5.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fv::app {
@@ -46,26 +47,87 @@ EM_JS(void, fv_web_download, (const char* path), {
     console.log("frictionviz: download " + name + " (" + data.length + " bytes)");
 });
 
+// The canvas's size on the page in CSS pixels (the page's style sets it: index.html makes it the window).
+EM_JS(double, fv_web_canvas_css_width, (), { return Module["canvas"].getBoundingClientRect().width; });
+EM_JS(double, fv_web_canvas_css_height, (), { return Module["canvas"].getBoundingClientRect().height; });
+
+// The canvas's own size (its backing store, device pixels): through emscripten's Browser.setCanvasSize,
+// whose resize listener updates GLFW's window (glfwSetWindowSize would ask for full screen when the size
+// equals the screen's).
+EM_JS(void, fv_web_set_canvas_size, (int width, int height), { Browser.setCanvasSize(width, height); });
+
+// Text to the system clipboard (ImGui's clipboard in the page: Copy link, Ctrl+C in a field). Browsers may
+// refuse (no permission, no recent click, an insecure http:// address that is not localhost): then a box
+// over the page holds the text, selected, for Ctrl+C, with a button to close it. The box is #fv-copy, its
+// field #fv-copy-text (the tests read them).
+EM_JS(void, fv_web_copy_text, (const char* text), {
+    var t = UTF8ToString(text);
+    function fallback() {
+        var box = document.getElementById("fv-copy");
+        if (!box) {
+            box = document.createElement("div");
+            box.id = "fv-copy";
+            box.style.cssText = "position:fixed;left:8px;right:8px;bottom:8px;background:#fff;border:1px solid #888;" +
+                                "padding:8px;font:14px sans-serif;z-index:10;box-shadow:0 2px 8px rgba(0,0,0,.3)";
+            box.innerHTML = "<div>The browser did not let the page copy: press Ctrl+C (Cmd+C on a Mac) to copy " +
+                            "the selected address.</div><input id='fv-copy-text' readonly " +
+                            "style='width:100%;box-sizing:border-box;margin:6px 0;font:13px monospace'>" +
+                            "<button id='fv-copy-close'>Close</button>";
+            document.body.appendChild(box);
+            document.getElementById("fv-copy-close").onclick = function() { box.style.display = "none"; };
+        }
+        var field = document.getElementById("fv-copy-text");
+        field.value = t;
+        box.style.display = "block";
+        field.focus();
+        field.select();
+        try {
+            if (document.execCommand("copy")) console.log("frictionviz: copied (execCommand) " + t);
+        } catch (e) {
+        }
+    }
+    if (navigator.clipboard && navigator.clipboard.writeText)
+        navigator.clipboard.writeText(t).then(function() { console.log("frictionviz: copied " + t); }, fallback);
+    else
+        fallback();
+});
+
+void web_set_clipboard(void* /*user*/, const char* text) {
+    fv_web_copy_text(text);
+}
+
 // Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page).
 EM_JS(void, fv_web_frame_shown, (), {
     if (Module["fvFrame"]) Module["fvFrame"]();
 });
 // clang-format on
 
+// Beyond 3 device pixels per CSS pixel nobody sees a difference, while the pixels to fill grow with its
+// square (a phone at 3: 1170 x 2532 for 390 x 844 CSS pixels).
+constexpr double kMaxRatio = 3;
+
 // Framebuffer pixels per CSS pixel: as asked, else the screen's (window.devicePixelRatio: 2 on a HiDPI
-// screen, also with the browser's zoom).
+// screen, also with the browser's zoom), at most kMaxRatio. Fixed at start (the fonts are rasterised at it):
+// a page dragged to another screen keeps its first ratio, at the new size.
 float canvas_ratio(const PlatformOptions& o) {
-    return o.scale > 0 ? o.scale : static_cast<float>(emscripten_get_device_pixel_ratio());
+    return o.scale > 0 ? o.scale
+                       : static_cast<float>(std::min(kMaxRatio, emscripten_get_device_pixel_ratio()));
 }
 
-// The canvas in framebuffer pixels (its width and height attributes: emscripten's GLFW counts the window in
-// them, and the mouse too); index.html's style shows it at 1280 x 800 CSS pixels.
+// The canvas's CSS size times the ratio, in framebuffer pixels (emscripten's GLFW counts the window in them,
+// and the mouse too); at least 1 x 1.
+gfx::Size backing_size(float ratio) {
+    return {std::max(1, static_cast<int>(std::lround(fv_web_canvas_css_width() * ratio))),
+            std::max(1, static_cast<int>(std::lround(fv_web_canvas_css_height() * ratio)))};
+}
+
 gfx::WindowOptions canvas_options(const PlatformOptions& o) {
     const float r = canvas_ratio(o);
+    const gfx::Size follow = backing_size(r);
     gfx::WindowOptions w;
     w.title = o.title;
-    w.width = o.width > 0 ? o.width : static_cast<int>(std::lround(1280 * r));
-    w.height = o.height > 0 ? o.height : static_cast<int>(std::lround(800 * r));
+    w.width = o.width > 0 ? o.width : follow.width;
+    w.height = o.height > 0 ? o.height : follow.height;
     w.scale_to_monitor = false;
     return w;
 }
@@ -73,9 +135,24 @@ gfx::WindowOptions canvas_options(const PlatformOptions& o) {
 class WebPlatform final : public GlfwPlatform {
   public:
     explicit WebPlatform(const PlatformOptions& o)
-        : GlfwPlatform(canvas_options(o)), ratio_(canvas_ratio(o)) {}
+        : GlfwPlatform(canvas_options(o)), ratio_(canvas_ratio(o)), follow_(o.width <= 0 && o.height <= 0) {}
 
     std::string_view name() const override { return "web"; }
+    // The canvas follows its size on the page (the window's, with index.html's style): checked every frame,
+    // which also catches what a resize event would (a rotated phone, a window dragged larger, the browser's
+    // zoom), at the cost of reading one rectangle.
+    PlatformEvents poll() override {
+        if (follow_) {
+            const gfx::Size want = backing_size(ratio_), have = ctx_.framebuffer_size();
+            if (want.width != have.width || want.height != have.height)
+                fv_web_set_canvas_size(want.width, want.height);
+        }
+        return GlfwPlatform::poll();
+    }
+    void connect_imgui() override {
+        GlfwPlatform::connect_imgui();
+        ImGui::GetIO().SetClipboardTextFn = web_set_clipboard; // GLFW's clipboard in the page is its own
+    }
     float pixel_ratio() const override { return ratio_; }
     void imgui_new_frame(gfx::Vec2 logical) override {
         GlfwPlatform::imgui_new_frame(logical);
@@ -106,6 +183,7 @@ class WebPlatform final : public GlfwPlatform {
 
   private:
     float ratio_;
+    bool follow_;             // the canvas follows its CSS size (no fixed size asked for)
     double last_present_ = 0; // emscripten_get_now() after the last frame, ms
 };
 

@@ -354,7 +354,9 @@ std::string session_json(const Session& s) {
         Json rx = Json::array();
         for (double v : p.rx)
             rx.push_back(std::isfinite(v) ? Json(v) : Json(nullptr)); // a failed point: a gap
-        j["pins"].push_back(Json{{"label", p.label}, {"zeta", p.zeta}, {"r_x", rx}});
+        Json pin{{"label", p.label}, {"zeta", p.zeta}, {"r_x", rx}};
+        if (p.source) pin["link"] = pin_link_text(*p.source); // what a share link carries for it
+        j["pins"].push_back(std::move(pin));
     }
     j["data"] = s.data_file.empty() ? Json(nullptr) : Json(s.data_file);
     std::string out;
@@ -364,8 +366,9 @@ std::string session_json(const Session& s) {
 
 namespace {
 
-// "pins": [{"label": "..", "zeta": [..], "r_x": [.., null, ..]}, ...]: at most kMaxPins curves, zeta in its
-// range, r_x a number or null (a point the solver did not vouch for: a gap), both of one length.
+// "pins": [{"label": "..", "zeta": [..], "r_x": [.., null, ..], "link": ".."}, ...]: at most kMaxPins curves,
+// zeta in its range, r_x a number or null (a point the solver did not vouch for: a gap), both of one length;
+// "link" (optional) what the curve was computed at, as in a share link ("dahl:60:2:1").
 std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
     if (!pins.is_array()) r.fail_at("/pins", "pins: expected an array of curves, got " + type_name(pins));
     if (pins.size() > kMaxPins)
@@ -378,13 +381,21 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
         if (!c.is_object())
             r.fail_at(ptr,
                       "pins: expected {\"label\": .., \"zeta\": [..], \"r_x\": [..]}, got " + type_name(c));
-        r.only(c, ptr, {"label", "zeta", "r_x"});
+        r.only(c, ptr, {"label", "zeta", "r_x", "link"});
         for (const char* key : {"label", "zeta", "r_x"})
             if (!c.contains(key)) r.fail_at(ptr, std::string("pin without \"") + key + "\"");
         PinnedCurve pin;
         r.get(c, ptr, "label", pin.label, [](const std::string& label) {
             const std::string why = text_error(label, kMaxLabelBytes);
             return why.empty() ? why : "label: " + why;
+        });
+        // Optional: what the curve was computed at, as a share link's pins= writes one (share_link.hpp).
+        std::string link;
+        r.get(c, ptr, "link", link, [&pin](const std::string& text) {
+            PinSource source;
+            const std::string why = read_pin_link_text(text, source);
+            if (why.empty()) pin.source = source;
+            return why.empty() ? why : "link: " + why;
         });
         const Json &zeta = c["zeta"], &rx = c["r_x"];
         for (const auto& [key, a] : {std::pair<const char*, const Json*>{"zeta", &zeta}, {"r_x", &rx}})

@@ -12,8 +12,10 @@
 //     "speed": 0.25, "playing": true,          animation: vibration periods per second, running or paused
 //     "panel": "curves",                       lower right: curves | map | loop | why (mechanism)
 //     "view": {"zoom": 1, "pan": [0, 0], "follow": true, "trail_periods": 1.5, "presentation": false},
-//     "pins": [{"label": "..", "zeta": [..], "r_x": [..]}],   pinned r_x(zeta) curves (at most 6; null: a
-//     gap) "data": null                             a measurements CSV (absolute when saved; a relative path
+//     "pins": [{"label": "..", "zeta": [..], "r_x": [..], "link": "dahl:60:2:1"}],   pinned r_x(zeta)
+//                                              curves (at most 6; null: a gap; link: optional, what the
+//                                              curve was computed at, as a share link's pins= has it)
+//     "data": null                             a measurements CSV (absolute when saved; a relative path
 //   }                                          is taken from the session file's directory), or null
 //
 // Reading is strict: "version" is required and must be 1; every other key is optional (a missing one takes

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <iterator>
+#include <set>
 #include <string>
 
 namespace fv {
@@ -64,6 +65,39 @@ constexpr NumberKey kNumberKeys[] = {{"zeta", &ShareLink::zeta, kZetaRange},
                                      {"rdisp", &ShareLink::rdisp, kRdispRange},
                                      {"i", &ShareLink::i, kIRange}};
 
+// A view value that does not read: noted and ignored (share_link.hpp).
+void notice(ShareLink& link, std::size_t offset, const std::string& what) {
+    link.notices.push_back("column " + std::to_string(offset + 1) + ": " + what + "; ignored");
+}
+
+std::vector<std::string_view> split(std::string_view s, char sep) {
+    std::vector<std::string_view> out;
+    for (std::size_t at = 0;;) {
+        const std::size_t end = s.find(sep, at);
+        out.push_back(s.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at));
+        if (end == std::string_view::npos) return out;
+        at = end + 1;
+    }
+}
+
+// The pins value: "" or why it does not read (the whole value is then ignored).
+std::string read_pins(std::string_view value, std::vector<PinSource>& pins) {
+    if (value.empty()) return "pins is empty; expected MODEL:THETA[:RDISP:I[:START]] joined by ','";
+    if (value.size() > kMaxPinsText)
+        return "pins is " + std::to_string(value.size()) + " characters long; allowed: at most " +
+               std::to_string(kMaxPinsText);
+    const std::vector<std::string_view> items = split(value, ',');
+    if (items.size() > kMaxPins)
+        return std::to_string(items.size()) + " pins; allowed: at most " + std::to_string(kMaxPins);
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        PinSource pin;
+        if (const std::string why = read_pin_link_text(items[k], pin); !why.empty())
+            return "pin " + std::to_string(k + 1) + " (" + quoted_text(std::string(items[k])) + "): " + why;
+        pins.push_back(pin);
+    }
+    return "";
+}
+
 } // namespace
 
 ShareLink parse_share_link(std::string_view text) {
@@ -80,6 +114,7 @@ ShareLink parse_share_link(std::string_view text) {
                        "?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl (keys: " +
                        std::string(kLinkKeys) + ")");
     ShareLink link;
+    std::set<std::string> seen_view; // the view's keys given so far (a value ignored leaves no trace in link)
     for (std::size_t at = from; at <= to;) {
         std::size_t end = text.find('&', at);
         if (end == std::string_view::npos || end > to) end = to;
@@ -112,6 +147,32 @@ ShareLink parse_share_link(std::string_view text) {
             once(link.frame.has_value());
             link.frame = parse_frame(value);
             if (!link.frame) fail(vat, "frame = " + quoted_text(value) + "; allowed: body, ground");
+        } else if (key == "panel") {
+            once(!seen_view.insert(key).second);
+            if (const auto panel = panel_from_name(value))
+                link.panel = *panel;
+            else
+                notice(link, vat, "panel = " + quoted_text(value) + "; allowed: curves, map, loop, why");
+        } else if (key == "present") {
+            once(!seen_view.insert(key).second);
+            if (value == "1" || value == "0")
+                link.presentation = value == "1";
+            else
+                notice(link, vat, "present = " + quoted_text(value) + "; allowed: 1, 0");
+        } else if (key == "speed") {
+            once(!seen_view.insert(key).second);
+            double x = 0;
+            if (std::string why = read_number(key, value, kSpeedRange, x); why.empty())
+                link.speed = x;
+            else
+                notice(link, vat, why);
+        } else if (key == "pins") {
+            once(!seen_view.insert(key).second);
+            std::vector<PinSource> pins;
+            if (const std::string why = read_pins(value, pins); why.empty())
+                link.pins = std::move(pins);
+            else
+                notice(link, vat, why);
         } else {
             fail(at, "unknown key " + quoted_text(key) + "; allowed: " + kLinkKeys);
         }
@@ -136,6 +197,45 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params, Start
 void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start, FrameChoice& frame) {
     apply_share_link(link, model, params, start);
     if (link.frame) frame = *link.frame;
+}
+
+std::string read_pin_link_text(std::string_view text, PinSource& pin) {
+    const std::vector<std::string_view> f = split(text, ':');
+    const std::optional<Model> model = parse_model(std::string(f[0]));
+    if (!model) return "model " + quoted_text(std::string(f[0])) + "; allowed: dahl, rigid";
+    pin.model = *model;
+    const bool rigid = pin.model == Model::rigid;
+    if (rigid ? f.size() != 2 : f.size() < 4 || f.size() > 5)
+        return rigid ? "a rigid pin is rigid:THETA" : "a Dahl pin is dahl:THETA:RDISP:I[:START]";
+    double theta_deg = 0;
+    if (std::string why = read_number("theta", f[1], kThetaRange, theta_deg); !why.empty()) return why;
+    pin.theta = theta_deg * kPi / 180;
+    if (rigid) return "";
+    if (std::string why = read_number("rdisp", f[2], kRdispRange, pin.rdisp); !why.empty()) return why;
+    if (std::string why = read_number("i", f[3], kIRange, pin.i); !why.empty()) return why;
+    if (f.size() == 5 && !parse_start(std::string(f[4]), pin.start))
+        return "start " + quoted_text(std::string(f[4])) + "; allowed: " + kStartNames;
+    return "";
+}
+
+std::string pin_link_text(const PinSource& pin) {
+    std::string s = std::string(to_string(pin.model)) + ":" + shortest_decimal(theta_degrees(pin.theta));
+    if (pin.model == Model::rigid) return s;
+    s += ":" + shortest_decimal(pin.rdisp) + ":" + shortest_decimal(pin.i);
+    return pin.start == Start::rest ? s : s + ":" + to_string(pin.start);
+}
+
+std::string view_link_keys(const ShareLink& link) {
+    std::string s;
+    if (link.panel) s += std::string("&panel=") + panel_name(*link.panel);
+    if (link.presentation) s += *link.presentation ? "&present=1" : "&present=0";
+    if (link.speed) s += "&speed=" + shortest_decimal(*link.speed);
+    if (link.pins && !link.pins->empty()) {
+        s += "&pins=";
+        for (std::size_t k = 0; k < link.pins->size(); ++k)
+            s += (k ? "," : "") + pin_link_text((*link.pins)[k]);
+    }
+    return s;
 }
 
 double theta_degrees(double theta_rad) {

@@ -15,6 +15,19 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
+# The site's index.html with its canvas fixed at WIDTH x HEIGHT CSS pixels (the page as it was before it
+# followed the window), unless FV_FOLLOW_WINDOW=1: headless Chromium gives a page a viewport shorter than
+# --window-size (it keeps 87 px of the window for a toolbar it does not draw; --test-type drops the warning bar
+# that took 56 px more) and resizes it to the window for the shot with no frame in between, so a canvas that
+# follows the window would be shot stretched. The tests that compare pixels want the WIDTH x HEIGHT page; the
+# page-fit test (page_fits.sh) follows the window and reads the app's layout instead of shooting.
+if [ "${FV_FOLLOW_WINDOW:-0}" != 1 ] && [ -f "$site/index.html" ]; then
+  mkdir "$tmp/site"
+  cp -r "$site"/. "$tmp/site"/
+  sed -i "s|</head>|<style>canvas { position: absolute !important; width: ${width}px !important; height: ${height}px !important; }</style></head>|" \
+    "$tmp/site/index.html"
+  site=$tmp/site
+fi
 source "$(dirname "$0")/serve.sh"
 fv_serve "$site" "$tmp/server.log"
 rm -f "$out"
@@ -23,7 +36,7 @@ case $out in *.html) action=(--dump-dom) ;; esac
 # (Debian's chromium wrapper prints a harmless shell error about memory size on large machines: filtered.)
 timeout 120 chromium --headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader \
   --user-data-dir="$tmp/profile" --no-first-run --hide-scrollbars --window-size="$width,$height" \
-  --force-device-scale-factor="$dpr" \
+  --force-device-scale-factor="$dpr" --test-type \
   --virtual-time-budget="$budget" --enable-logging=stderr "${action[@]}" "http://127.0.0.1:$port/$query" \
   >"$tmp/stdout" 2>"$tmp/chromium.log" || { cat "$tmp/chromium.log" >&2; exit 1; }
 case $out in *.html) cp "$tmp/stdout" "$out" ;; esac

@@ -38,6 +38,9 @@ inline constexpr ParamRange kZssRange{0, 1e6, true};
 inline constexpr ParamRange kRxDataRange{-0.5, 1.5};
 inline constexpr ParamRange kSigmaRange{1e-6, 10};
 
+// The app's animation speed in vibration periods per second (sessions, share links, the panel's slider).
+inline constexpr ParamRange kSpeedRange{0.05, 10};
+
 // The part of each range the app's sliders span (values beyond them are typed, scripted or given on the
 // command line); each lies inside the range above.
 inline constexpr ParamRange kZetaSlider{0, 3};

@@ -8,16 +8,33 @@
 // it, and the browser build reads the same keys from its page address; so this parser has no GUI in it and
 // lives in core, which both builds compile.
 //
+// The app's view may follow (each written only when it is not the app's default, so the link of a default
+// view is the five keys above, as before these were added):
+//
+//   &panel=map              the lower-right panel: curves | map | loop | why
+//   &present=1              presentation mode (1 | 0)
+//   &speed=1.5              animation speed, vibration periods per second (kSpeedRange)
+//   &pins=dahl:60:2:1,rigid:30,dahl:90:0.1:5:sliding
+//                           pinned r_x(zeta) curves by what they were computed at (at most kMaxPins, ','
+//                           between them): MODEL:THETA_DEG[:RDISP:I[:START]] (the Dahl model needs r_disp
+//                           and i; the rigid curve depends on theta alone); the page computes them again
+//
+// A view value that does not read is ignored with a notice (ShareLink::notices: "column N: what; allowed:
+// ...; ignored"), never an error: it changes how the setup is shown, not the setup, so the link still opens.
+//
 // Accepted: the query alone ("zeta=0.3&theta=60"), with its '?' or a whole URL. As in a browser, everything
 // from the first '#' on is a fragment and ignored; the query is what follows the first '?' before it
-// ("#?zeta=0.5" has no query). Keys are zeta, theta, rdisp, i, model, start, frame, each at most once, any
-// subset (the rest keeps its value); values are numbers read by the shared reader (read_number.hpp, as on the
-// command line) inside the shared range table (param_ranges.hpp), dahl|rigid, rest|sliding or body|ground;
-// %XX escapes are decoded ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming
-// the column, what was wrong and what is allowed.
+// ("#?zeta=0.5" has no query). Keys are those of kLinkKeys, each at most once, any subset (the rest keeps its
+// value); values are numbers read by the shared reader (read_number.hpp, as on the command line) inside the
+// shared range table (param_ranges.hpp), dahl|rigid, rest|sliding or body|ground; %XX escapes are decoded
+// ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming the column, what was
+// wrong and what is allowed, except the app's view values (panel, present, speed, pins), which are ignored
+// with a notice.
 #pragma once
 
+#include "fv/lower_panel.hpp"
 #include "fv/params.hpp"
+#include "fv/pinned_curve.hpp"   // PinSource
 #include "fv/read_number.hpp"    // shortest_decimal
 #include "fv/steady_state.hpp"   // Start
 #include "fv/top_view_frame.hpp" // FrameChoice
@@ -26,16 +43,27 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fv {
 
-inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame";
+inline constexpr const char* kLinkKeys =
+    "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, pins";
+// A pins value longer than this is ignored (kMaxPins pins of shortest decimals fit with room to spare).
+inline constexpr std::size_t kMaxPinsText = 600;
 
 struct ShareLink {
     std::optional<double> zeta, theta_deg, rdisp, i;
     std::optional<Model> model;
     std::optional<Start> start;       // the history (docs/model.md, "Which steady state")
     std::optional<FrameChoice> frame; // what stands still in the app's top view
+    // The app's view.
+    std::optional<LowerPanel> panel;
+    std::optional<bool> presentation;
+    std::optional<double> speed;
+    std::optional<std::vector<PinSource>> pins;
+    // View values that did not read and were ignored, each "column N: what; allowed: ...; ignored".
+    std::vector<std::string> notices;
 };
 
 // what(): "column N: message" (N counts bytes of the text given, from 1).
@@ -57,6 +85,17 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params, Start
 // same as before the start could be chosen; and "&frame=ground" for that frame only, likewise.
 std::string share_link(Model model, const Params& params, Start start = Start::rest,
                        FrameChoice frame = FrameChoice::body);
+
+// The view's keys for the view fields `link` sets, in the order above ("&panel=map&present=1&speed=1.5&
+// pins=dahl:60:2:1"), or "": appended to share_link() by the app for what differs from its defaults.
+std::string view_link_keys(const ShareLink& link);
+
+// One pin as the link writes it ("dahl:60:2:1", "dahl:90:0.1:5:sliding", "rigid:30"), numbers that read
+// back bit for bit.
+std::string pin_link_text(const PinSource& pin);
+// Reads one pin as pin_link_text writes it (also a session file's "link" of a pin): "" or why it does not
+// read (pin then partly set).
+std::string read_pin_link_text(std::string_view text, PinSource& pin);
 
 // theta in degrees such that degrees * kPi / 180 gives theta_rad back bit for bit where a nearby double does
 // (the nicest of them: 60, not 60.00000000000001), else theta_rad * 180 / kPi.

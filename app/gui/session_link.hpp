@@ -1,0 +1,43 @@
+// The share link of the app's whole state and back (fv/share_link.hpp has the format): the setup's keys and
+// the view's (panel, presentation, speed, pins) where the view differs from the app's defaults, and the
+// address a student clicks (the site's address with the link as its query). The desktop's Copy link, `gui
+// --link` and the browser page all go through here, so the three agree.
+#pragma once
+
+#include "session.hpp"
+#include "ui_state.hpp"
+
+#include "fv/share_link.hpp"
+
+#include <string>
+
+namespace fv::app {
+
+// Where the desktop's Copy link points when nothing else is said (`gui --web-base URL` or the environment's
+// FRICTIONVIZ_WEB_BASE): scripts/serve-web.sh's address on the machine that serves the site.
+inline constexpr const char* kDefaultWebBase = "http://127.0.0.1:8000/";
+
+// The address the share link is appended to: the page's own (origin + path) in the browser, a setting on the
+// desktop, which has no address of its own (the panel says which).
+struct ShareAddress {
+    std::string base = kDefaultWebBase;
+    bool from_page = false;
+};
+
+// "" when `base` can take a link (http:// or https://, printable, no query or fragment), else why not.
+std::string web_base_error(const std::string& base);
+
+// The link of the state: share_link() of the setup, then view_link_keys() of what differs from a default
+// SessionState (the link of a default view is the setup's keys alone, as before the view keys existed).
+// Pins whose source is not known (an older session file) are left out.
+std::string session_link(const SessionState& s);
+// base + link ("http://host/frictionviz/?zeta=...").
+std::string share_address(const ShareAddress& where, const SessionState& s);
+// How many of the pins a link cannot carry (no source).
+std::size_t pins_not_in_link(const SessionState& s);
+
+// The link's setup and view onto `s` (what the link does not give keeps its value); its pins are computed
+// again (compute_pin, on this thread: the app's curves for each, tens of milliseconds).
+void apply_link(const ShareLink& link, Session& s);
+
+} // namespace fv::app
