@@ -215,7 +215,10 @@ FigureSpecFile parse_spec_file(const std::string& content) {
     spec.entry = find_registered(id);
     if (!spec.entry) throw SpecError("id: unknown figure " + quoted_text(id) + "; allowed: " + figure_ids());
     const FigureEntry& e = *spec.entry;
-    for (const auto& [key, value] : j.items()) {
+    for (const auto& item : j.items()) {
+        // Named copies, not a structured binding: C++17 lambdas (below) cannot capture those (clang says so).
+        const std::string key = item.key();
+        const Json& value = item.value();
         if (key == "id") continue;
         if (key == "size") {
             if (value.is_string()) {
