@@ -494,6 +494,21 @@ TEST_CASE("CLI registry: render --list prints every figure once, --figure and it
     CHECK(scene.code == 2);
     CHECK(scene.err.find("--zeta or --vb") != std::string::npos);
     CHECK(files_in(dir).empty());
+    // Named among others with none of its flags, it is drawn with its example values, as --figure all draws
+    // it; given some of them it still needs all.
+    const Run some = run("render --figure fig5,scene --zeta 0.3 --size 320x240 --out " + dir);
+    CHECK(some.code == 2);
+    CHECK(some.err.find("--figure scene needs --theta") != std::string::npos);
+    CHECK(files_in(dir).empty());
+    const std::string listed = dir + "/listed";
+    REQUIRE(std::system(("mkdir -p " + listed).c_str()) == 0);
+    const Run list = run("render --figure fig5,scene --out " + listed);
+    CHECK(list.code == 0);
+    CHECK(list.err.find("scene: none of") != std::string::npos);
+    // screenshots/scene.png is what --figure all draws (the snapshot and readme tests hold it so).
+    CHECK_FALSE(slurp(listed + "/scene.png").empty());
+    CHECK(slurp(listed + "/scene.png") ==
+          slurp(std::string(FV_TEST_DATA_DIR) + "/../../screenshots/scene.png"));
 }
 
 TEST_CASE("CLI registry: --figure all renders every listed id with its CSV and a caption JSON",

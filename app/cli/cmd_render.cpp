@@ -232,6 +232,10 @@ Command add_render_command(CLI::App& root) {
             if (from_spec) chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output));
             const FigureInputs in = from_spec ? FigureInputs{} : inputs_of(a->flags);
             std::stringstream ids(from_spec ? std::string() : a->figure);
+            // Several figures named (fig5,fig14,scene): one that is given none of its required parameters
+            // is drawn with its example inputs, as --figure all draws it (said on stderr); named alone, or
+            // given some of them, it needs them all.
+            const bool several = a->figure.find(',') != std::string::npos;
             std::string id;
             while (std::getline(ids, id, ',')) {
                 if (id == "all") {
@@ -248,8 +252,22 @@ Command add_render_command(CLI::App& root) {
                 } else if (const FigureEntry* e = find_registered(id)) {
                     // A value of the wrong shape (--zeta 0.1:1 for scene) is named before a missing one.
                     if (std::string why = input_error(*e, in, flag_name); !why.empty()) throw UsageError(why);
-                    if (const std::string m = missing_flag(*e, in); !m.empty())
-                        throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) + ")");
+                    if (const std::string m = missing_flag(*e, in); !m.empty()) {
+                        const bool none_given =
+                            std::none_of(e->params.begin(), e->params.end(), [&in](const FigureParamUse& u) {
+                                return u.required && given(in, u.param);
+                            });
+                        const FigureInputs example = over(e->example, in);
+                        if (!several || !none_given || missing_param(*e, example))
+                            throw UsageError("--figure " + id + " needs " + m + " (it " + flags_text(*e) +
+                                             ")");
+                        std::fprintf(stderr,
+                                     "frictionviz: --figure %s: none of %s given: drawn with its "
+                                     "example values, as --figure all draws it\n",
+                                     id.c_str(), m.c_str());
+                        chosen.emplace_back(e, example);
+                        continue;
+                    }
                     chosen.emplace_back(e, in);
                 } else {
                     throw UsageError("--figure: unknown figure '" + id + "'; allowed: " + figure_names());
