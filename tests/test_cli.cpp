@@ -511,6 +511,19 @@ TEST_CASE("CLI registry: render --list prints every figure once, --figure and it
           slurp(std::string(FV_TEST_DATA_DIR) + "/../../screenshots/scene.png"));
 }
 
+TEST_CASE("CLI render: SOURCE_DATE_EPOCH makes a PDF the same bytes run after run", "[cli][render]") {
+    const std::string a = scratch_dir() + "/pdf-a", b = scratch_dir() + "/pdf-b";
+    REQUIRE(std::system(("mkdir -p " + a + " " + b).c_str()) == 0);
+    for (const std::string& d : {a, b})
+        REQUIRE(run("render --figure fig5 --format pdf --size 320x240 --out " + d, "SOURCE_DATE_EPOCH=86400")
+                    .code == 0);
+    const std::string pdf = slurp(a + "/fig5.pdf");
+    // One day after the epoch, UTC (cairo writes the date without the "D:" of its own dates; pdfinfo reads
+    // it).
+    CHECK(pdf.find("/CreationDate (19700102000000Z)") != std::string::npos);
+    CHECK(pdf == slurp(b + "/fig5.pdf"));
+}
+
 TEST_CASE("CLI registry: --figure all renders every listed id with its CSV and a caption JSON",
           "[cli][render][registry][long]") {
     const std::vector<std::string> ids = listed_ids();

@@ -318,7 +318,7 @@ TEST_CASE("9. Scripts read numbers as the command line does, and refuse bad ones
              {"1 theta 200", "theta = 200 is out of range; allowed: theta in [0, 180]"},
              {"99999999999999999999 zeta 1", "frame = 99999999999999999999 is out of range"},
              {"1 speed 0.01", "speed = 0.01 is out of range; allowed: speed in [0.05, 10]"},
-             {"1 preset fig5", "unknown preset 'fig5'; allowed: fig9"},
+             {"1 preset fig5", "unknown preset 'fig5'; allowed: sliding, along, across"},
          }) {
         s.write("bad.txt", line + "\n");
         const Run r = run(s, kHeadless + "--script bad.txt");

@@ -10,11 +10,15 @@
 #include FT_FREETYPE_H
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <ctime>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 
 namespace fv::gfx {
 namespace {
@@ -263,6 +267,23 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
     return CAIRO_STATUS_SUCCESS;
 }
 
+// SOURCE_DATE_EPOCH as cairo's ISO-8601 date ("1970-01-01T00:00:00Z"), or "" when unset or not a whole
+// number of seconds >= 0.
+std::string source_date() {
+    const char* epoch = std::getenv("SOURCE_DATE_EPOCH");
+    if (!epoch || !*epoch) return "";
+    char* end = nullptr;
+    errno = 0;
+    const long long t = std::strtoll(epoch, &end, 10);
+    if (*end != '\0' || errno != 0 || t < 0) return "";
+    const std::time_t when = static_cast<std::time_t>(t);
+    std::tm utc{};
+    if (!gmtime_r(&when, &utc)) return "";
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+    return buf;
+}
+
 } // namespace
 
 std::string render_vector(const DisplayList& list, VectorFormat format) {
@@ -274,6 +295,11 @@ std::string render_vector(const DisplayList& list, VectorFormat format) {
                              : cairo_svg_surface_create_for_stream(append, &out, w, h);
     if (format == VectorFormat::Pdf) {
         cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATOR, "frictionviz");
+        // The creation date cairo writes into every PDF is the one byte range that differs run after run:
+        // SOURCE_DATE_EPOCH (the reproducible-builds convention, seconds since 1970) fixes it, so that a
+        // snapshot test gets the same bytes for the same command. Without it, the time of writing.
+        if (const std::string date = source_date(); !date.empty())
+            cairo_pdf_surface_set_metadata(s, CAIRO_PDF_METADATA_CREATE_DATE, date.c_str());
     } else {
         cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
     }
