@@ -28,6 +28,8 @@ CHECK=(
                                             # drag-and-drop test speaks XDND through Xlib)
   python3-numpy pybind11-dev python3-pybind11 python3-pytest  # the Python module (python/, -DFV_PYTHON) and
                                             # its tests, for Debian's /usr/bin/python3
+  python3-venv python3-setuptools python3-wheel  # python_install: a venv (ensurepip's pip) and
+                                            # pip install --no-build-isolation . (setup.py's build backend)
 )
 FORMAT=(clang-format)                       # scripts/check-format.sh (clang-format 14, .clang-format)
 WEB=(
