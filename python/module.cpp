@@ -139,9 +139,8 @@ py::dict ratio(const std::string& model_name, const Doubles& zeta, const Doubles
                 pry[k] = r.ry;
                 perr[k] = r.error_estimate;
                 pper[k] = r.periods;
-                const std::string word = fv::reported_word(r);
-                pok[k] = word == "ok" || word.rfind("period_", 0) == 0;
-                put_status(pst + static_cast<std::ptrdiff_t>(k) * kStatusChars, word);
+                pok[k] = fv::ok(fv::reported_status(r));
+                put_status(pst + static_cast<std::ptrdiff_t>(k) * kStatusChars, fv::reported_word(r));
             },
             threads);
     }

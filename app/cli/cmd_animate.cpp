@@ -92,12 +92,13 @@ Command add_animate_command(CLI::App& root) {
                 if (a->lesson == 0 && cmd->get_option("--theta")->count() == 0)
                     throw UsageError("--theta is required (or --lesson N: a lesson step's setup)");
                 s.steady = steady_options(a->model);
-                if (a->lesson > 0) {
-                    const app::LessonSetup& u =
-                        app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup;
-                    s.model = u.model;
-                    s.params = u.params;
-                    s.steady.start = u.start;
+                const app::LessonSetup* lesson =
+                    a->lesson > 0 ? &app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup
+                                  : nullptr;
+                if (lesson) {
+                    s.model = lesson->model;
+                    s.params = lesson->params;
+                    s.steady.start = lesson->start;
                 } else {
                     s.model = model_of(a->model);
                     s.params = to_params(a->model);
@@ -112,8 +113,8 @@ Command add_animate_command(CLI::App& root) {
                 s.speed = a->speed;
                 s.view = a->view == "scene" ? anim::View::scene : anim::View::dashboard;
                 s.frame = parse_frame(a->frame).value_or(FrameChoice::body);
-                if (a->lesson > 0 && cmd->get_option("--frame")->count() == 0) // the step's, unless asked
-                    s.frame = app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup.frame;
+                if (lesson && cmd->get_option("--frame")->count() == 0)
+                    s.frame = lesson->frame; // unless asked
                 const PixelSize sz = parse_size(a->size);
                 s.width = sz.w;
                 s.height = sz.h;

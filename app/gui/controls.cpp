@@ -196,16 +196,18 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
 
 // A row of buttons that wraps to the panel's width (large type in presentation mode, narrow windows):
 // each button beside the one before while it fits, else on a new line. Returns the label clicked, or null.
-const std::string* button_row(const std::vector<std::pair<std::string, std::string>>& labels_and_tips) {
+// Labels and tips point into the lessons and the registry, which outlive the frame.
+using LabelAndTip = std::pair<const std::string*, const std::string*>;
+const std::string* button_row(const std::vector<LabelAndTip>& labels_and_tips) {
     const std::string* clicked = nullptr;
     const ImGuiStyle& style = ImGui::GetStyle();
     const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     for (std::size_t k = 0; k < labels_and_tips.size(); ++k) {
-        const auto& [label, tip] = labels_and_tips[k];
-        const float w = ImGui::CalcTextSize(label.c_str()).x + 2 * style.FramePadding.x;
+        const auto [label, tip] = labels_and_tips[k];
+        const float w = ImGui::CalcTextSize(label->c_str()).x + 2 * style.FramePadding.x;
         if (k > 0 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= right) ImGui::SameLine();
-        if (ImGui::Button(label.c_str())) clicked = &label;
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip.c_str());
+        if (ImGui::Button(label->c_str())) clicked = label;
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip->c_str());
     }
     return clicked;
 }
@@ -213,9 +215,9 @@ const std::string* button_row(const std::vector<std::pair<std::string, std::stri
 // The presets: the lesson's steps by concept (lessons.json), then the registered figures the app can open.
 UiEdits draw_presets() {
     UiEdits e;
-    std::vector<std::pair<std::string, std::string>> concepts, figures;
-    for (const LessonStep& s : lesson_steps()) concepts.emplace_back(s.id, s.title);
-    for (const FigureSpec* f : presets()) figures.emplace_back(f->id, f->caption);
+    std::vector<LabelAndTip> concepts, figures;
+    for (const LessonStep& s : lesson_steps()) concepts.emplace_back(&s.id, &s.title);
+    for (const FigureSpec* f : presets()) figures.emplace_back(&f->id, &f->caption);
     ImGui::TextUnformatted("Concepts");
     if (const std::string* id = button_row(concepts)) e.preset = *id;
     ImGui::TextUnformatted("Paper figures");

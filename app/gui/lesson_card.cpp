@@ -13,10 +13,7 @@ int step_count() {
     return static_cast<int>(lesson_steps().size());
 }
 
-// Page Down / Page Up when no text field has the keyboard and no dialog is open.
 bool pressed(ImGuiKey key) {
-    const ImGuiIO& io = ImGui::GetIO();
-    if (io.WantTextInput || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId)) return false;
     return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), false);
 }
 

@@ -13,7 +13,8 @@ UiEdits draw_lessons_menu(const UiState& ui);
 // The card of step ui.lesson (nothing when no lesson is on), at the top of the control panel.
 UiEdits draw_lesson_card(const UiState& ui);
 
-// Page Down: the next step, Page Up: the one before (while a lesson is on).
+// Page Down: the next step, Page Up: the one before (while a lesson is on). Part of keyboard_edits, which
+// leaves the keys alone while a text field has the keyboard or a dialog is open.
 UiEdits lesson_keys(const UiState& ui);
 
 } // namespace fv::app
