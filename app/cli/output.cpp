@@ -122,6 +122,7 @@ nlohmann::json json_of(const SweepPoint& r, bool status_known = true) {
     }
     if (r.result.scheme == Scheme::ode) {
         j["start_reaches"] = r.result.start_reaches;
+        j["creep_periods_skipped"] = jnum(r.result.creep_periods_skipped);
         nlohmann::json states = nlohmann::json::array();
         for (const SteadyState& x : r.result.states) {
             nlohmann::json from = nlohmann::json::array();
@@ -326,6 +327,13 @@ std::string ratio_text(const SweepPoint& r, const Vibration& vib) {
              (res.on_circle ? " on the circle's angle, " : " in the plane, ") +
              count(res.plain_steps, "plain period", "plain periods") + ", " +
              count(res.periods_skipped, "stuck period", "stuck periods") + " skipped in closed form\n";
+        if (res.creep_periods_skipped > 0) {
+            std::snprintf(buf, sizeof buf,
+                          "creep         about %.3g periods of slow creep towards the circle projected, not "
+                          "integrated (i > 1: the motion from the start takes that long)\n",
+                          res.creep_periods_skipped);
+            s += buf;
+        }
         std::snprintf(
             buf, sizeof buf,
             "steady period %d law changes, %d Radau IIA steps (the dtau -> 0 limit of the scheme)\n",
