@@ -246,6 +246,8 @@ gfx::HeatMap heat_map_of(const HeatmapData& h) {
     m.nx = h.nx, m.ny = h.ny;
     m.x0 = h.x0, m.x1 = h.x1, m.y0 = h.y0, m.y1 = h.y1;
     m.label = h.label;
+    m.vmin = h.vmin, m.vmax = h.vmax;
+    m.color_bar = h.color_bar;
     return m;
 }
 
@@ -487,6 +489,53 @@ float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect
     return bounds.y0 + kTop + (1 + kLeading) * ts.size;
 }
 
+// Small multiples (FigureData::columns, a family of maps): the panels on a grid, row by row, each without
+// its own legend and colour bar; right of the grid one colour bar on the panels' shared scale, as tall as
+// their data areas; below it one legend holding each labelled line or mark of any panel once (a mark that
+// only some maps have is still named). Text at `factor` (page_text_factor).
+void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& body, float factor) {
+    const std::size_t cols = static_cast<std::size_t>(fig.columns);
+    const std::size_t rows = (fig.panels.size() + cols - 1) / cols;
+    const float fs = 13 * factor, gap = std::round(10 * factor);
+    std::vector<gfx::Series> legend;
+    for (const PanelData& p : fig.panels)
+        for (std::size_t k = 0; k < p.series.size(); ++k) {
+            const SeriesData& s = p.series[k];
+            if (s.label.empty() || std::any_of(legend.begin(), legend.end(),
+                                               [&](const gfx::Series& e) { return e.label == s.label; }))
+                continue;
+            gfx::Series e;
+            e.label = s.label;
+            e.style = series_style(s, k);
+            legend.push_back(std::move(e));
+        }
+    const float legend_h = gfx::legend_rows(canvas, legend, {0, 0}, body.width(), fs, false).y;
+    const gfx::Rect grid{body.x0, body.y0, body.x1 - gfx::kColorBarSpace,
+                         body.y1 - (legend_h > 0 ? legend_h + gap : 0)};
+    const float w = grid.width() / static_cast<float>(cols), h = grid.height() / static_cast<float>(rows);
+    float top = grid.y1, bottom = grid.y0, right = grid.x0;
+    const HeatmapData* scale = nullptr;
+    for (std::size_t i = 0; i < fig.panels.size(); ++i) {
+        PanelData p = fig.panels[i];
+        p.legend = Legend::none;
+        p.text_scale *= factor;
+        if (p.heatmap) {
+            p.heatmap->color_bar = false;
+            if (!scale) scale = &*fig.panels[i].heatmap;
+        }
+        const float x0 = grid.x0 + w * static_cast<float>(i % cols),
+                    y0 = grid.y0 + h * static_cast<float>(i / cols);
+        const gfx::Rect area = paint_panel(canvas, p, {x0, y0, x0 + w, y0 + h}).area;
+        top = std::min(top, area.y0), bottom = std::max(bottom, area.y1), right = std::max(right, area.x1);
+    }
+    if (scale) gfx::draw_color_bar(canvas, {grid.x0, top, right, bottom}, heat_map_of(*scale), fs);
+    if (legend_h > 0) {
+        const float lw = gfx::legend_rows(canvas, legend, {0, 0}, body.width(), fs, false).x;
+        gfx::legend_rows(canvas, legend, {std::round((body.x0 + body.x1 - lw) / 2), grid.y1 + gap},
+                         body.width(), fs);
+    }
+}
+
 } // namespace
 
 float page_text_factor(const gfx::Rect& page) {
@@ -509,6 +558,10 @@ void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& b
         p.text_scale *= k;
         paint_panel(canvas, p, r, true);
     };
+    if (fig.columns > 0 && !fig.panels.empty()) {
+        paint_grid(canvas, fig, body, k);
+        return;
+    }
     if (fig.panels.size() == 3) {
         const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
         panel(0, {body.x0, body.y0, split - gap, body.y1});
