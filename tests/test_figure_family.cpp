@@ -239,6 +239,15 @@ TEST_CASE("Map families: one map per combination on a grid, titles naming what v
     CHECK(m.family.size() == 6);
     CHECK(spec.title == "friction ratio r_{x}(ζ, θ), Dahl model");
     CHECK(fv::map_family_size_error(f).empty());
+    // More values of i than of r_disp: i along the rows (the grid wider than tall, as the page).
+    fv::MapFamily t;
+    t.rdisp = {1, 3};
+    t.i = {0.5, 1, 2};
+    const std::vector<fv::MapPanelSpec> across = fv::map_family_panels(t);
+    REQUIRE(across.size() == 6);
+    CHECK((across[1].rdisp == 1 && across[1].i == 1));
+    CHECK((across[3].rdisp == 3 && across[3].i == 0.5));
+    CHECK(std::get<fv::MapFigure>(fv::map_family_figure(t).content).columns == 3);
     // The rigid model adds one map (r_disp and i do not apply): 7 is over the cap, named in one line.
     f.models = {fv::Model::dahl, fv::Model::rigid};
     CHECK(fv::map_family_size_error(f) ==

@@ -59,11 +59,16 @@ std::string family_caption(const MapFamily& f) {
     return c;
 }
 
-// Columns of the grid: the r_disp values where r_disp and i both vary (a row per i), else as square as
-// the count allows, up to 3 across.
+// Where r_disp and i both vary (Dahl maps only): a column per value of the longer list, a row per value of
+// the other (the grid wider than tall, as the page).
+bool by_rows_and_columns(const MapFamily& f) {
+    return f.models == std::vector<Model>{Model::dahl} && f.rdisp.size() > 1 && f.i.size() > 1;
+}
+
+// Columns of the grid: the longer list's values (by_rows_and_columns), else as square as the count allows,
+// up to 3 across.
 int grid_columns(const MapFamily& f, std::size_t maps) {
-    if (has(f.models, Model::dahl) && f.rdisp.size() > 1 && f.i.size() > 1)
-        return static_cast<int>(f.rdisp.size());
+    if (by_rows_and_columns(f)) return static_cast<int>(std::max(f.rdisp.size(), f.i.size()));
     return static_cast<int>(maps <= 3 ? maps : maps == 4 ? 2 : 3);
 }
 
@@ -81,15 +86,19 @@ MapFamily map_family_of(const FigureInputs& in) {
 std::vector<MapPanelSpec> map_family_panels(const MapFamily& f) {
     const bool both = has(f.models, Model::dahl) && has(f.models, Model::rigid);
     std::vector<MapPanelSpec> out;
+    const auto add = [&](double r, double i) {
+        std::string t;
+        if (f.rdisp.size() > 1) t = "r_{disp} = " + g(r);
+        if (f.i.size() > 1) t += (t.empty() ? "" : ", ") + std::string("i = ") + g(i);
+        if (both) t = t.empty() ? "Dahl model" : "Dahl, " + t;
+        out.push_back({Model::dahl, r, i, t});
+    };
+    // Row by row: the longer list along a row (i along it only where it has more values than r_disp).
+    const bool i_across = by_rows_and_columns(f) && f.i.size() > f.rdisp.size();
     if (has(f.models, Model::dahl))
-        for (double i : f.i)
-            for (double r : f.rdisp) {
-                std::string t;
-                if (f.rdisp.size() > 1) t = "r_{disp} = " + g(r);
-                if (f.i.size() > 1) t += (t.empty() ? "" : ", ") + std::string("i = ") + g(i);
-                if (both) t = t.empty() ? "Dahl model" : "Dahl, " + t;
-                out.push_back({Model::dahl, r, i, t});
-            }
+        for (std::size_t a = 0; a < (i_across ? f.rdisp.size() : f.i.size()); ++a)
+            for (std::size_t b = 0; b < (i_across ? f.i.size() : f.rdisp.size()); ++b)
+                i_across ? add(f.rdisp[a], f.i[b]) : add(f.rdisp[b], f.i[a]);
     if (has(f.models, Model::rigid)) {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         out.push_back({Model::rigid, nan, nan, both ? "rigid model (Eq. 9)" : ""});

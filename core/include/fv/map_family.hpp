@@ -31,7 +31,8 @@ struct MapFamily {
 // The family the inputs of the map describe (no model given: the Dahl model alone).
 MapFamily map_family_of(const FigureInputs& in);
 
-// The maps of a family: the Dahl maps row by row (i outer, r_disp inner), then the rigid map; each titled
+// The maps of a family: the Dahl maps row by row (a row per i, r_disp along it; where only Dahl maps are
+// drawn and i has more values than r_disp, a row per r_disp, i along it), then the rigid map; each titled
 // with what varies.
 std::vector<MapPanelSpec> map_family_panels(const MapFamily& f);
 
@@ -42,8 +43,8 @@ std::string map_family_size_error(const MapFamily& f);
 std::string map_family_check(const FigureInputs& in);
 
 // The figure: map_figure for one Dahl map (byte for byte the figure of before families), else the family
-// on a grid: the columns are the r_disp values where both r_disp and i vary, else as square as the count
-// allows (up to 3 across).
+// on a grid: where r_disp and i both vary (Dahl maps only) a column per value of the longer list, else as
+// square as the count allows (up to 3 across: 1 x 2, 1 x 3, 2 x 2, 2 x 3).
 FigureSpec map_family_figure(const MapFamily& f);
 
 } // namespace fv
