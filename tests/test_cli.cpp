@@ -866,7 +866,8 @@ TEST_CASE("CLI: a family of maps (lists of --rdisp, --i, --model): one grid per 
     CHECK(p.at("rdisp") == nlohmann::json{1.0, 3.0});
     CHECK(p.at("i") == 0.5);
     CHECK(p.at("model") == nlohmann::json{"dahl", "rigid"});
-    CHECK(std::string(j.at("caption")).find("3 maps: Dahl model, r_disp = 1, 3, i = 0.5") !=
+    CHECK(std::string(j.at("caption"))
+              .find("3 maps in 1 × 3 panels on one colour scale: Dahl model, r_disp = 1, 3, i = 0.5") !=
           std::string::npos);
     CHECK(std::string(j.at("title")).find("Dahl model (i = 0.5) and rigid model") != std::string::npos);
     // render --spec map.json: every file again, byte for byte.

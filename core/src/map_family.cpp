@@ -46,16 +46,23 @@ std::string family_title(const MapFamily& f) {
 
 std::string family_caption(const MapFamily& f) {
     const bool dahl = has(f.models, Model::dahl), rigid = has(f.models, Model::rigid);
-    std::string c = "Beyond the paper: r_x over velocity ratio ζ and vibration angle θ, one map per "
-                    "combination, of ";
+    const bool several = dahl_maps(f) + (rigid ? 1 : 0) > 1;
+    std::string c = "Beyond the paper: r_x over velocity ratio ζ and vibration angle θ";
+    c += several ? ", one map per combination, of " : ", of ";
     if (dahl) c += "the Dahl model at r_disp = " + list_text(f.rdisp) + " and i = " + list_text(f.i);
     if (rigid) c += std::string(dahl ? ", and " : "") + "the rigid model (Eq. 9; r_disp and i do not apply)";
-    c += ", all on one colour scale, each with the angle of strongest friction reduction θ*(ζ) of its model "
-         "(solid: Dahl) and that of the rigid model (dashed): the question the paper's conclusion answers "
-         "only for 0° and 90°. The panels' titles name what varies from map to map, the figure's title what "
-         "does not. Marked cells: where the motion settles into a period of 2, 4, … vibration periods (the "
-         "mean over them is shown), where a second stable steady state coexists (the other start reaches "
-         "it), and where no steady state could be vouched for.";
+    c += several
+             ? ", all on one colour scale, each with the angle of strongest friction reduction θ*(ζ) of its "
+               "model (solid: Dahl) and that of the rigid model (dashed)"
+             : ", with its angle of strongest friction reduction θ*(ζ) (dashed)";
+    c += ": the question the paper's conclusion answers only for 0° and 90°.";
+    if (several)
+        c += " The panels' titles name what varies from map to map, the figure's title what does not.";
+    if (dahl)
+        c += " Marked cells: where the motion settles into a period of 2, 4, … vibration periods (the mean "
+             "over "
+             "them is shown), where a second stable steady state coexists (the other start reaches it), and "
+             "where no steady state could be vouched for.";
     return c;
 }
 
