@@ -73,14 +73,19 @@ void check_snapshot(fv::app::RenderSession& session, const fv::FigureSpec& spec)
     }
 }
 
-} // namespace
-
-TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]") {
+// The snapshots' page: headless, kWidth x kHeight.
+fv::gfx::ContextOptions snapshot_options() {
     fv::gfx::ContextOptions o;
     o.backend = fv::gfx::Backend::Headless;
     o.width = kWidth;
     o.height = kHeight;
-    fv::app::RenderSession session(o);
+    return o;
+}
+
+} // namespace
+
+TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]") {
+    fv::app::RenderSession session(snapshot_options());
     // Each with the inputs of its example (those of README.md and screenshots/), fig19 with the synthetic
     // example data.
     for (const fv::FigureEntry& e : fv::figure_registry())
@@ -88,11 +93,7 @@ TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]"
 }
 
 TEST_CASE("Snapshot: a family of maps as small multiples matches its baseline", "[snapshot]") {
-    fv::gfx::ContextOptions o;
-    o.backend = fv::gfx::Backend::Headless;
-    o.width = kWidth;
-    o.height = kHeight;
-    fv::app::RenderSession session(o);
+    fv::app::RenderSession session(snapshot_options());
     // Two Dahl maps and the rigid one (render --figure map --rdisp 1,3 --model dahl,rigid) on a coarse grid
     // of cells (40 x 19, a second of computing): the grid, the shared titles, colour bar and legend.
     fv::FigureInputs in;
