@@ -41,6 +41,7 @@ RUN = [
     ("docs/cli.md", "mkdir -p out"),
     ("docs/cli.md", "frictionviz render --figure fig10,fig14 --out out/"),
     ("docs/cli.md", "frictionviz render --figure map --rdisp 5 --i 0 --format png,pdf --out out/"),
+    ("docs/cli.md", "frictionviz render --figure map --rdisp 1,10 --model dahl,rigid --out out/"),
     ("docs/cli.md", "frictionviz render --figure fig19 --data tests/data/synthetic_two_angles_rdisp2_i0.csv "
                     "--amplitude 0.7 --out out/"),
     ("docs/cli.md", "frictionviz render --figure rx --theta 30,60 --rdisp 1,10 --i 0.5 --zeta 0.02:2 --size 640x400 "

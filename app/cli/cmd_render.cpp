@@ -8,6 +8,7 @@
 #include "render_output.hpp"
 #include "test_hook.hpp"
 
+#include "figures/figure_renderer.hpp"
 #include "figures/figure_spec_file.hpp"
 #include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
@@ -49,15 +50,6 @@ std::size_t encoders_for(int w, int h) {
     const std::size_t job = std::size_t{2} * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
     const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
     return std::clamp<std::size_t>(kEncodeBudget / job, 1, cores);
-}
-
-std::string csv_of(const TableData& t) {
-    if (!t.text.empty()) return t.text;
-    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
-    SweepPoint row;
-    row.result.period = t.trace;
-    row.result.status = t.status;
-    return trace_table(row, Format::csv);
 }
 
 // The numerical failures behind one figure: ratio rows (the map's grid too) carry the solver's status per
@@ -336,9 +328,9 @@ Command add_render_command(CLI::App& root) {
                 app::FigureExtras extras;
                 std::vector<std::string> names;
                 for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
-                for (const TableData& t : data.tables) {
-                    names.push_back(data.id + t.suffix + ".csv");
-                    extras.files.push_back({names.back(), csv_of(t)});
+                for (app::FigureTableFile& t : app::figure_tables(data)) {
+                    names.push_back(t.name);
+                    extras.files.push_back({t.name, std::move(t.csv)});
                 }
                 names.push_back(data.id + ".json");
                 extras.failed = check_figure(data, fit ? &*fit : nullptr);
