@@ -244,8 +244,8 @@ UiEdits draw_share_link(const UiState& ui, const ShareAddress& where) {
                           address.c_str(),
                           where.from_page
                               ? "This page's address.\n"
-                              : "The site's address is a setting: gui --web-base URL or "
-                                "FRICTIONVIZ_WEB_BASE (docs/web.md), where your class's site is.\n",
+                              : "The site's address is a setting: gui --link-base URL or "
+                                "FRICTIONVIZ_LINK_BASE (docs/web.md), where your class's site is.\n",
                           link.c_str(),
                           pins_not_in_link(ui.session) > 0
                               ? "\nPins opened from an older session file are not in it (their parameters "
