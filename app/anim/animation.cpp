@@ -164,6 +164,21 @@ const LiveSim& Frames::sim_at(int k) {
     return sim_;
 }
 
+int Frames::still_frame() {
+    const double w = box_.width();
+    if (spec_.frame != FrameChoice::ground || !(w > 0)) return 0;
+    // Where the top view puts the vibration centre: its x modulo the frame's width (live_panels.cpp).
+    const auto off_middle = [&](int k) {
+        const double x = sim_at(k).vibration_centre().x();
+        return std::abs(x - w * std::floor((x - box_.x0) / w) - (box_.x0 + 0.5 * w));
+    };
+    int best = 0;
+    double best_off = off_middle(0);
+    for (int k = 1; k < count_; ++k)
+        if (const double off = off_middle(k); off < best_off) best = k, best_off = off;
+    return best;
+}
+
 void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     const LiveSim& sim = sim_at(k);
     gfx::TextStyle ts;
@@ -238,7 +253,7 @@ struct Stage {
 
 Still render_still(const Spec& spec) {
     Stage stage(spec);
-    stage.draw(0);
+    stage.draw(stage.frames.still_frame());
     Still still{stage.session.context().read_pixels(), stage.session.canvas().display_list()};
     stage.session.context().present();
     return still;

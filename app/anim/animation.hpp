@@ -58,6 +58,9 @@ class Frames {
     const FrameBox& frame_box() const { return box_; }
     // The steady r_x the caption shows.
     double rx() const { return rx_; }
+    // The frame a still picture shows: 0, or in the ground frame the one with the body nearest the middle of
+    // the frame (in frame 0 it may stand on the edge, drawn half at each side).
+    int still_frame();
 
   private:
     const LiveSim& sim_at(int k);
