@@ -215,7 +215,7 @@ Command add_render_command(CLI::App& root) {
     CLI::Option* lesson = add_lesson_option(
         *cmd, a->lesson,
         "draw guided lesson step N as lesson-N.png (.svg, .pdf by --format) with lesson-N.json (the step's "
-        "title, text and link): the first frame of animate --lesson N, under the step's title");
+        "title, text and link): a frame of animate --lesson N, under the step's title");
     lesson->excludes("--figure")->excludes("--spec")->excludes("--list")->excludes("--data");
     return {
         cmd, [a, cmd] {
