@@ -58,6 +58,9 @@ class Frames {
     const FrameBox& frame_box() const { return box_; }
     // The steady r_x the caption shows.
     double rx() const { return rx_; }
+    // The frame a still picture shows: 0, or in the ground frame the one with the body nearest the middle of
+    // the frame (in frame 0 it may stand on the edge, drawn half at each side).
+    int still_frame();
 
   private:
     const LiveSim& sim_at(int k);
@@ -65,6 +68,7 @@ class Frames {
     Spec spec_;
     int count_ = 0;
     double rx_ = 0;
+    float top_ = 24; // the panels' top: below the caption, and the title where there is one
     std::optional<RatioCurves> curves_;
     LiveSim start_, sim_;
     int at_ = 0; // the frame sim_ is at
@@ -77,6 +81,15 @@ struct Progress {
     std::function<void(int done, int total)> report; // after each frame (from the exporting thread)
     const std::atomic<bool>* cancel = nullptr;       // set: stop, write nothing, return "cancelled"
 };
+
+// Frame 0 of the loop as one picture: its pixels (for a PNG) and its display list (for SVG and PDF), at the
+// spec's size and scale; `render --lesson` draws a lesson step's picture with it. Throws std::runtime_error
+// when no headless GL context can be made.
+struct Still {
+    gfx::Image image;
+    gfx::DisplayList list;
+};
+Still render_still(const Spec& spec);
 
 // Renders the frames and writes `path` through fv::write_file_atomic. The spec must have passed check_spec()
 // and its format match the path. Returns "" or a one-line error (nothing written then). Throws

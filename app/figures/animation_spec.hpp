@@ -34,6 +34,7 @@ struct AnimationSpec {
     SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point (its start: the
                           // history that picks between coexisting steady states)
     double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
+    std::string title;    // a line above the caption (a lesson step's title); none when empty
 };
 
 } // namespace fv

@@ -33,12 +33,12 @@ struct SessionState {
     bool presentation = false; // larger type, thicker lines, the advanced panels folded away (View menu, P)
     ViewState view;            // its rewind is not saved: an opened session restarts the simulation
     std::vector<PinnedCurve> pins;
+    int lesson = 0; // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
 };
 
 struct UiState {
     SessionState session;
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
-    int lesson = 0;         // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
     std::string status;     // last message (file written, ...)
 
     // The physical view of session.params under A and f, converted once per frame (AppState::sync): v_v = 2
