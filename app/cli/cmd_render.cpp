@@ -182,6 +182,8 @@ Command add_render_command(CLI::App& root) {
         std::string list;  // --list [tsv|markdown]
         std::string spec;  // --spec FILE.json
         OutputArgs output; // --format, --scale
+        std::string page;  // --page a4|letter|column
+        bool caption = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
@@ -207,6 +209,22 @@ Command add_render_command(CLI::App& root) {
         ->check(CLI::IsMember({"tsv", "markdown"}));
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
+    cmd->add_option(
+           "--page", a->page,
+           "a page that prints right for SVG and PDF: a4 or letter (portrait, the figure at the width "
+           "inside 2/3 in margins, 9 pt type at 100 %) or column (3.3 in wide, 8 pt type); the PNG "
+           "stays --size pixels")
+        ->check(CLI::Validator(
+            [](std::string& s) -> std::string {
+                bool ok = false;
+                app::paper_page(s, ok);
+                return ok ? "" : "'" + s + "' is not a page; allowed: a4, letter, column";
+            },
+            "a4|letter|column"));
+    cmd->add_flag(
+        "--caption", a->caption,
+        "put the figure's caption (as in its ID.json) under it, wrapped to its width, in the PNG, SVG "
+        "and PDF");
     add_render_flags(*cmd, a->flags);
     return {
         cmd, [a, cmd] {
@@ -221,7 +239,7 @@ Command add_render_command(CLI::App& root) {
             if (const std::string flag = first_given(a->flags); from_spec && !flag.empty())
                 throw UsageError("--spec and " + flag +
                                  ": the spec file gives the figure's parameters; allowed with --spec: --out, "
-                                 "--size, --scale, --format");
+                                 "--size, --scale, --format, --page, --caption");
             if (a->figure.empty() && !from_spec)
                 throw UsageError("--figure is required (or --spec, --list); allowed: " + figure_names());
             if (a->out.empty() && cmd->get_option("--out")->count() == 0)
@@ -326,6 +344,9 @@ Command add_render_command(CLI::App& root) {
             job.dir = dir;
             job.formats = a->output.pictures();
             job.encoders = encoders_for(sz.w, sz.h);
+            bool page_ok = true;
+            if (!a->page.empty()) job.paper = app::paper_page(a->page, page_ok);
+            job.caption = a->caption;
             // render_figures calls extras once per figure, in order.
             std::size_t next = 0;
             job.extras = [&output = a->output, &parameters, &next](const FigureSpec& spec, FigureData& data) {

@@ -498,8 +498,8 @@ float page_text_factor(const gfx::Rect& page) {
     return std::clamp(std::min(page.width() / 640.0f, page.height() / 400.0f), kSmallestTextFactor, 1.0f);
 }
 
-void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
-    const float k = page_text_factor(bounds);
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds, float text_factor) {
+    const float k = text_factor > 0 ? text_factor : page_text_factor(bounds);
     const float title_end = paint_title(canvas, fig.title, bounds, k);
     const float inset = std::round(8 * k), gap = std::round(6 * k);
     const gfx::Rect body{bounds.x0 + inset, title_end + std::round(14 * k), bounds.x1 - inset,
