@@ -46,6 +46,9 @@ RUN = [
     ("docs/cli.md", "frictionviz render --figure rx --theta 30,60 --rdisp 1,10 --i 0.5 --zeta 0.02:2 --size 640x400 "
                     "--out out/"),
     ("docs/cli.md", "frictionviz render --spec out/rx.json --format pdf --out out/"),
+    ("docs/cli.md", "frictionviz render --figure fig4 --theta 0 --zeta 0.5 --format pdf --page a4 --caption "
+                    "--out out/"),
+    ("docs/cli.md", "frictionviz render --figure fig5 --format pdf,svg --page column --caption --out out/"),
     ("docs/cli.md", "frictionviz animate --zeta 0.3 --theta 60 --rdisp 2 --i 1 --out loop.gif"),
     ("docs/cli.md", "frictionviz animate --zeta 0.15 --theta 90 --rdisp 2 --i 0 --view scene --size 1920x1200 "
                     "--scale 2 --out loop.mp4"),
