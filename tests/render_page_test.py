@@ -100,5 +100,27 @@ r = render(bad, "--page", "a5")
 check(r.returncode == 2 and r.stderr.count("\n") == 1 and "a4, letter, column" in r.stderr and
       not os.listdir(bad), f"--page a5 refused: exit {r.returncode}, {r.stderr.strip()!r}")
 
+# A spec file keeps the page and the caption: --spec ID.json draws the same PDF again (SOURCE_DATE_EPOCH fixes
+# its date), and a bad page in one is refused.
+env = dict(os.environ, SOURCE_DATE_EPOCH="0")
+first, again = os.path.join(scratch, "spec1"), os.path.join(scratch, "spec2")
+for d in (first, again):
+    os.makedirs(d, exist_ok=True)
+subprocess.run([fv, "render", "--figure", "fig5", "--format", "pdf", "--page", "letter", "--caption", "--out", first],
+               env=env, capture_output=True)
+params = json.load(open(os.path.join(first, "fig5.json")))["parameters"]
+check(params.get("page") == "letter" and params.get("caption") is True, f"ID.json keeps page and caption ({params})")
+r = subprocess.run([fv, "render", "--spec", os.path.join(first, "fig5.json"), "--out", again], env=env,
+                   capture_output=True, text=True)
+check(r.returncode == 0 and open(os.path.join(first, "fig5.pdf"), "rb").read() ==
+      open(os.path.join(again, "fig5.pdf"), "rb").read(), "--spec ID.json draws the same page and caption, byte for byte")
+plain_params = json.load(open(os.path.join(plain, "fig5.json")))["parameters"]
+check("page" not in plain_params and "caption" not in plain_params, "without them ID.json has no page or caption key")
+bad_spec = os.path.join(scratch, "bad.json")
+open(bad_spec, "w").write('{"id": "fig5", "page": "a3"}')
+r = subprocess.run([fv, "render", "--spec", bad_spec, "--out", bad], capture_output=True, text=True)
+check(r.returncode == 2 and "a4, letter, column" in r.stderr and not os.listdir(bad),
+      f"a spec's bad page refused: exit {r.returncode}, {r.stderr.strip()!r}")
+
 print(f"{len(failures)} failed")
 sys.exit(1 if failures else 0)

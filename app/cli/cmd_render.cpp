@@ -149,7 +149,8 @@ std::string caption_json(const FigureSpec& spec, const std::vector<std::string>&
 
 // The spec file's figure and inputs; its size, scale and format where the flags do not give them.
 std::pair<const FigureEntry*, FigureInputs> read_spec(const std::string& path, const CLI::App& cmd,
-                                                      std::string& size, OutputArgs& output) {
+                                                      std::string& size, OutputArgs& output,
+                                                      std::string& page, bool& caption) {
     std::string text;
     if (std::string why = read_input_file(path, text, {kMaxSpecBytes}); !why.empty())
         throw UsageError("--spec " + path + ": " + why);
@@ -165,6 +166,8 @@ std::pair<const FigureEntry*, FigureInputs> read_spec(const std::string& path, c
         }
         if (cmd.get_option("--scale")->count() == 0) output.scale = spec.scale;
         if (cmd.get_option("--format")->count() == 0) output.format = spec.format;
+        if (cmd.get_option("--page")->count() == 0) page = app::to_string(spec.page);
+        if (cmd.get_option("--caption")->count() == 0) caption = spec.caption;
         return {spec.entry, std::move(spec.inputs)};
     } catch (const app::SpecError& err) {
         throw UsageError("--spec " + path + ": " + err.what());
@@ -247,7 +250,8 @@ Command add_render_command(CLI::App& root) {
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
             // inputs.
             std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
-            if (from_spec) chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output));
+            if (from_spec)
+                chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output, a->page, a->caption));
             const FigureInputs in = from_spec ? FigureInputs{} : inputs_of(a->flags);
             std::stringstream ids(from_spec ? std::string() : a->figure);
             // Several figures named (fig5,fig14,scene): one that is given none of its required parameters
@@ -303,6 +307,9 @@ Command add_render_command(CLI::App& root) {
                 if (!from_spec) throw;
                 throw UsageError("--spec " + a->spec + ": " + err.what());
             }
+            bool page_ok = true;
+            const app::PaperPage paper =
+                a->page.empty() ? app::PaperPage::none : app::paper_page(a->page, page_ok);
             check_out_dir(a->out);
             std::string dir = a->out;
             while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
@@ -312,8 +319,8 @@ Command add_render_command(CLI::App& root) {
             std::vector<std::string> parameters; // each figure's, for its ID.json
             for (const auto& [e, inputs] : chosen) {
                 const FigureInputs resolved = with_defaults(*e, inputs);
-                parameters.push_back(
-                    app::parameters_json(*e, resolved, sz.w, sz.h, a->output.scale, a->output.pictures()));
+                parameters.push_back(app::parameters_json(*e, resolved, sz.w, sz.h, a->output.scale,
+                                                          a->output.pictures(), paper, a->caption));
                 try {
                     specs.push_back(e->make(resolved));
                 } catch (const DataError& err) {
@@ -344,8 +351,7 @@ Command add_render_command(CLI::App& root) {
             job.dir = dir;
             job.formats = a->output.pictures();
             job.encoders = encoders_for(sz.w, sz.h);
-            bool page_ok = true;
-            if (!a->page.empty()) job.paper = app::paper_page(a->page, page_ok);
+            job.paper = paper;
             job.caption = a->caption;
             // render_figures calls extras once per figure, in order.
             std::size_t next = 0;
