@@ -93,6 +93,25 @@ std::vector<NamedFile> encode_pictures(const std::string& id, const PictureForma
     return files;
 }
 
+void draw_pictures(RenderSession& session, const FigureData& data, const PictureFormats& formats,
+                   const PrintLayout& layout, const std::string& caption, gfx::Image& image,
+                   gfx::DisplayList& list, gfx::VectorPage& page) {
+    page = layout.vector;
+    page.caption = caption;
+    const bool vectors = formats.svg || formats.pdf, printed = layout.logical.x > 0;
+    if (formats.png) {
+        image = session.render_figure(data);
+        if (vectors && !printed) list = session.canvas().display_list();
+        if (!caption.empty())
+            image = gfx::stack_images(image, gfx::render_caption_image(caption, session.logical_page().x,
+                                                                       layout.png_caption, 12,
+                                                                       session.pixel_ratio()));
+    }
+    if (vectors && (!formats.png || printed))
+        list = printed ? session.record_figure(data, layout.logical, layout.text_factor)
+                       : session.record_figure(data);
+}
+
 namespace {
 
 // A drawn figure on its way to the disk: its frame and display list (freed once encoded) and the files
@@ -155,24 +174,11 @@ RenderOutcome render_figures(RenderSession& session, std::vector<FigureSpec>& sp
             ++out.failed_figures;
             out.failed += (out.failed.empty() ? "" : "; ") + extras.failed;
         }
-        Drawn d{data.id, {}, {}, std::move(extras.files), layout.vector};
-        if (job.caption) d.page.caption = spec.caption + " " + figure_parameters(spec); // as in ID.json
+        Drawn d{data.id, {}, {}, std::move(extras.files), {}};
         // GL is single-threaded: the drawing happens here, the encoding on the job's thread.
-        const bool vectors = job.formats.svg || job.formats.pdf;
-        if (job.formats.png) {
-            d.image = session.render_figure(data);
-            if (vectors && job.paper == PaperPage::none) d.list = session.canvas().display_list();
-            if (job.caption) {
-                const gfx::Vec2 page = session.logical_page();
-                d.image = gfx::stack_images(d.image, gfx::render_caption_image(d.page.caption, page.x,
-                                                                               layout.png_caption, 12,
-                                                                               session.pixel_ratio()));
-            }
-        }
-        if (vectors && (!job.formats.png || job.paper != PaperPage::none))
-            d.list = job.paper == PaperPage::none
-                         ? session.record_figure(data)
-                         : session.record_figure(data, layout.logical, layout.text_factor);
+        const std::string caption =
+            job.caption ? spec.caption + " " + figure_parameters(spec) : ""; // ID.json's
+        draw_pictures(session, data, job.formats, layout, caption, d.image, d.list, d.page);
         spec = FigureSpec{}; // its data (fig19's figure) are not needed any more
         while (pending.size() >= std::max<std::size_t>(job.encoders, 1)) finish_oldest();
         const std::string id = d.id;

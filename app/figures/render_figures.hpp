@@ -4,6 +4,7 @@
 // the frame being drawn, the frames being encoded and the data of one figure.
 #pragma once
 
+#include "figures/figure_renderer.hpp"
 #include "figures/render_session.hpp"
 
 #include "fv/figure_data.hpp"
@@ -27,16 +28,6 @@ struct PictureFormats {
 
 using NamedFile = std::pair<std::string, std::string>; // file name, content
 
-// A page that prints right (render --page): the SVG and PDF page in points with the figure at its width
-// inside the margins, laid out on a logical page whose tick labels (13 units) print at a fixed size: a4 and
-// letter portrait, 48 pt margins, 9 pt type; column a journal column 3.3 in wide, 8 pt type. none: the page
-// is the logical page, one unit a point (render's default).
-enum class PaperPage { none, a4, letter, column };
-// "a4", "letter", "column" (none: "").
-const char* to_string(PaperPage p);
-// The page by name, or none with `ok` false.
-PaperPage paper_page(const std::string& name, bool& ok);
-
 struct PrintLayout {
     gfx::Vec2 logical{0, 0}; // the page the figure is laid out on ({0, 0}: the session's)
     float text_factor = 0;   // its text factor (paint_figure), 0: the page's own
@@ -52,6 +43,13 @@ PrintLayout print_layout(PaperPage paper, float width, float height, bool captio
 std::vector<NamedFile> encode_pictures(const std::string& id, const PictureFormats& formats,
                                        const gfx::Image& image, const gfx::DisplayList& list,
                                        const gfx::VectorPage& page = {});
+
+// Draws `data` for `formats` through `session`: the PNG's frame (with the caption's band under it), the
+// display list of the SVG and PDF (on the layout's logical page where it is a printed one) and their page
+// with the caption. An empty caption: none.
+void draw_pictures(RenderSession& session, const FigureData& data, const PictureFormats& formats,
+                   const PrintLayout& layout, const std::string& caption, gfx::Image& image,
+                   gfx::DisplayList& list, gfx::VectorPage& page);
 
 // What the caller writes beside a figure's pictures (its tables as CSV, its caption), and "" or a one-line
 // note of its failed points; made once the figure is computed.
