@@ -500,9 +500,12 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
 
 namespace {
 
-// Whether arrow `a` runs along arrow `b`: a third of it within 3 % of the axes' spans of b's shaft (at the
-// app's panel sizes, several pixels: more than the layout test's reach), so that one hides the other.
-bool runs_along(const ArrowData& a, const ArrowData& b, const PanelData& panel) {
+// Whether arrow `a` runs along arrow `b`: a third of it within `within` of the axes' spans of b's shaft, so
+// that one hides the other. A live arrow (3 units wide) hides a faded one within 3 % (at the app's panel
+// sizes several pixels, more than the layout test's reach); two faded ones (1.2 units) hide each other within
+// 1 % (looser, and at 90 deg the velocities at tau = 0 and pi/4 would go, which the eye tells apart).
+constexpr double kLiveHides = 0.03, kFadedHides = 0.01;
+bool runs_along(const ArrowData& a, const ArrowData& b, const PanelData& panel, double within = kLiveHides) {
     const double sx = panel.x_max.value_or(1) - panel.x_min.value_or(0),
                  sy = panel.y_max.value_or(1) - panel.y_min.value_or(0);
     const Vec2 scale(1 / sx, 1 / sy);
@@ -513,7 +516,7 @@ bool runs_along(const ArrowData& a, const ArrowData& b, const PanelData& panel) 
     for (int k = 0; k <= kN; ++k) {
         const Vec2 q = (a.from + (a.to - a.from) * (static_cast<double>(k) / kN)).cwiseProduct(scale);
         const double t = l2 > 0 ? std::clamp((q - b0).dot(d) / l2, 0.0, 1.0) : 0.0;
-        near += (q - b0 - t * d).norm() <= 0.03;
+        near += (q - b0 - t * d).norm() <= within;
     }
     return near * 3 > kN + 1;
 }
@@ -544,7 +547,7 @@ const PanelData& MechanismBase::for_params(const Params& p) {
         std::vector<ArrowData> kept;
         for (auto a = base.arrows.rbegin(); a != base.arrows.rend(); ++a)
             if (std::none_of(kept.begin(), kept.end(), [&](const ArrowData& k) {
-                    return runs_along(*a, k, base) || runs_along(k, *a, base);
+                    return runs_along(*a, k, base, kFadedHides) || runs_along(k, *a, base, kFadedHides);
                 }))
                 kept.push_back(*a);
         base.arrows.assign(kept.rbegin(), kept.rend());
