@@ -53,8 +53,8 @@ py::tuple render(const std::string& spec_text, bool example, int width, int heig
     if (example) spec.inputs = spec.entry->example;
     fv::app::PictureFormats formats;
     formats.png = format == "png", formats.svg = format == "svg", formats.pdf = format == "pdf";
-    const std::string parameters =
-        fv::app::parameters_json(*spec.entry, spec.inputs, width, height, scale, formats);
+    const std::string parameters = fv::app::parameters_json(*spec.entry, spec.inputs, width, height, scale,
+                                                            formats, spec.page, spec.caption);
     std::string bytes, title, caption;
     std::vector<fv::app::FigureTableFile> tables;
     {
@@ -80,9 +80,13 @@ py::tuple render(const std::string& spec_text, bool example, int width, int heig
         static std::mutex gl;
         std::lock_guard<std::mutex> lock(gl);
         fv::app::FigureRenderer renderer(size);
-        bytes = renderer.render(data, format == "png"   ? fv::app::PictureFormat::png
-                                      : format == "svg" ? fv::app::PictureFormat::svg
-                                                        : fv::app::PictureFormat::pdf);
+        // The spec's page and caption (render(page=..., caption=True)), as render --page --caption.
+        const fv::app::PrintOptions print{spec.page, spec.caption ? caption : std::string()};
+        bytes = renderer.render(data,
+                                format == "png"   ? fv::app::PictureFormat::png
+                                : format == "svg" ? fv::app::PictureFormat::svg
+                                                  : fv::app::PictureFormat::pdf,
+                                print);
     }
     py::list csv;
     for (const fv::app::FigureTableFile& t : tables) csv.append(py::make_tuple(t.name, t.csv));

@@ -52,6 +52,9 @@ RUN = [
     ("docs/teaching.md", "frictionviz animate --lesson 3 --out across.gif"),
     ("docs/teaching.md", "mkdir -p handout"),
     ("docs/teaching.md", "frictionviz render --lesson 5 --format png,pdf --out handout/"),
+    ("docs/cli.md", "frictionviz render --figure fig4 --theta 0 --zeta 0.5 --format pdf --page a4 --caption "
+                    "--out out/"),
+    ("docs/cli.md", "frictionviz render --figure fig5 --format pdf,svg --page column --caption --out out/"),
     ("docs/cli.md", "frictionviz animate --zeta 0.3 --theta 60 --rdisp 2 --i 1 --out loop.gif"),
     ("docs/cli.md", "frictionviz animate --zeta 0.15 --theta 90 --rdisp 2 --i 0 --view scene --size 1920x1200 "
                     "--scale 2 --out loop.mp4"),

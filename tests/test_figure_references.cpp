@@ -103,8 +103,26 @@ TEST_CASE("fig4: the friction against v_b is Eq. (3), its mean Eq. (11) or Eq. (
         for (std::size_t k = 0; k + 1 < fx.x.size(); ++k)
             if (std::isfinite(fx.x[k])) sum += fx.y[k], ++n;
         CHECK(sum / n == Approx(mean.y[0]).margin(theta_deg == 0 ? 4e-3 : 1e-10));
-        // Left: each friction arrow has length 1 and points against the velocity arrow before it (Eq. 2).
         const auto& arrows = d.panels[0].arrows;
+        if (fv::mechanism_parallel(th)) {
+            // Along the sliding line the left panel is nine rows up a time axis, tau = k pi/4: v's component
+            // along v_b (Eq. 1 over v_v) above each row, the friction's, -sgn v_x (Eq. 2), below it; the mean
+            // friction is the dashed line at -r_x.
+            REQUIRE(arrows.size() == 18);
+            for (std::size_t k = 0; k < 9; ++k) {
+                const fv::ArrowData &v = arrows[2 * k], &f = arrows[2 * k + 1];
+                const double tau = kPi * static_cast<double>(k) / 4, vx = zeta + std::cos(th) * std::cos(tau);
+                CHECK(v.to.x() - v.from.x() == Approx(vx).margin(1e-12));
+                CHECK(v.from.y() > tau);
+                CHECK(v.to.y() == v.from.y());
+                CHECK(f.from.y() < tau);
+                if (std::abs(vx) > 1e-12)
+                    CHECK(f.to.x() - f.from.x() == Approx(vx > 0 ? -1 : 1).margin(1e-12));
+            }
+            CHECK(-series_named(d.panels[0], "mean friction").x[0] == Approx(mean.y[0]).margin(1e-12));
+            continue;
+        }
+        // Left: each friction arrow has length 1 and points against the velocity arrow before it (Eq. 2).
         REQUIRE(arrows.size() == 11);
         for (std::size_t k = 0; k + 1 < arrows.size(); k += 2) {
             const fv::Vec2 v = arrows[k].to, f = arrows[k + 1].to;

@@ -487,9 +487,10 @@ std::string arrow_on_arrow(const DisplayList& list) {
                 near += distance(p, b->from, b->to) <= reach;
             }
             if (near * 3 > kN + 1)
-                return "arrow from (" + std::to_string(a->from.x) + ", " + std::to_string(a->from.y) +
-                       ") along the arrow from (" + std::to_string(b->from.x) + ", " +
-                       std::to_string(b->from.y) + ")";
+                return "arrow (" + std::to_string(a->from.x) + ", " + std::to_string(a->from.y) + ") -> (" +
+                       std::to_string(a->to.x) + ", " + std::to_string(a->to.y) + ") along the arrow (" +
+                       std::to_string(b->from.x) + ", " + std::to_string(b->from.y) + ") -> (" +
+                       std::to_string(b->to.x) + ", " + std::to_string(b->to.y) + ")";
         }
     return "";
 }
@@ -534,4 +535,94 @@ TEST_CASE("The live top view reads at every angle: no text on text, label on a s
         }
     CHECK(labels > 1000);
     CHECK(arrows > 3 * 4 * 2 * 16 * 2);
+}
+
+TEST_CASE("The why panel reads at every angle: no text on text, label on a shape or arrow on arrow",
+          "[layout][labels][live][why]") {
+    // The app's lower panel at 1280x800 showing the mechanism (the paper's Fig. 4 live), through a steady
+    // period. At theta = 0 every velocity and friction arrow lay on one line; the panel now draws them up a
+    // time axis there, and drops a faded arrow the live one would hide.
+    const Rect lower = fv::app::layout_dashboard({346, 4, 1276, 796}).ratio;
+    fv::app::RenderSession& s = session();
+    int labels = 0, arrows = 0;
+    for (const double theta_deg : {0.0, 30.0, 90.0, 150.0})
+        for (const double zeta : {0.15, 0.5})
+            for (const fv::Model model : {fv::Model::rigid, fv::Model::dahl}) {
+                const fv::Params p{zeta, theta_deg * fv::kPi / 180, 2, 0};
+                fv::LiveSim sim(model, p);
+                if (model == fv::Model::dahl) sim.start_steady(fv::ode_solve(p).lag);
+                sim.step(2 * sim.steps_per_period());
+                fv::MechanismBase base;
+                const int n = sim.steps_per_period();
+                for (int k = 0; k < 16; ++k) {
+                    sim.step(n / 16);
+                    const fv::PanelData why = fv::mechanism_panel_live(sim, base);
+                    // The title says what happens: v reverses at theta = 0 (zeta < 1), it turns otherwise.
+                    CHECK(why.title.find(theta_deg == 0 ? "v reverses" : "v turns") != std::string::npos);
+                    fv::gfx::Canvas& canvas = s.canvas();
+                    canvas.begin({1280, 800}, 1, fv::gfx::colors::white);
+                    fv::app::paint_panel(canvas, why, lower);
+                    canvas.end_recording();
+                    const DisplayList& list = canvas.display_list();
+                    for (const auto& c : list.commands) {
+                        labels += std::holds_alternative<fv::gfx::dl::Text>(c);
+                        arrows += std::holds_alternative<fv::gfx::dl::Arrow>(c);
+                    }
+                    INFO("theta " << theta_deg << ", zeta " << zeta << ", " << fv::to_string(model)
+                                  << ", step " << k);
+                    CHECK(overlapping_texts(list, s.fonts(), 1.0f) == "");
+                    CHECK(label_on_shape(list, s.fonts()) == "");
+                    CHECK(arrow_on_arrow(list) == "");
+                }
+            }
+    CHECK(labels > 1000);
+    CHECK(arrows > 4 * 2 * 2 * 16 * 8); // the live two and the faded instants
+}
+
+namespace {
+
+// The registered fig4 at zeta and theta (degrees), computed.
+fv::FigureData fig4(double zeta, double theta_deg) {
+    fv::FigureInputs in;
+    in.zeta = zeta;
+    in.theta_deg = {theta_deg};
+    return fv::compute_figure(fv::find_registered("fig4")->make(in));
+}
+
+} // namespace
+
+TEST_CASE("Fig. 4 along the sliding line: the instants up a time axis, no arrow on another",
+          "[layout][labels][why]") {
+    // theta = 0 and 180: each instant tau = k pi/4 (k = 0..8) a row with v's arrow above it and the
+    // friction's below: 18 arrows, none along another, no label on one; the title says
+    // that v reverses (zeta < 1) or never does (zeta > 1). At 90 deg the plane picture, unchanged.
+    for (const double theta_deg : {0.0, 5.0, 175.0, 180.0})
+        for (const double zeta : {0.15, 0.5, 1.5}) {
+            const fv::FigureData fig = fig4(zeta, theta_deg);
+            INFO("theta " << theta_deg << ", zeta " << zeta);
+            const fv::PanelData& rows = fig.panels.at(0);
+            CHECK(rows.arrows.size() == 18);
+            CHECK(rows.title.find(zeta < 1 ? "v reverses" : "v never reverses") != std::string::npos);
+            // Each row's two arrows: v_x = zeta + cos theta cos tau (Eq. 1), F_x = -sgn v_x (Eq. 2).
+            for (int k = 0; k <= 8; ++k) {
+                const double tau = fv::kPi * k / 4,
+                             vx = zeta + std::cos(theta_deg * fv::kPi / 180) * std::cos(tau);
+                CHECK(rows.arrows[2 * k].to.x() == Approx(vx).margin(1e-12));
+                CHECK(rows.arrows[2 * k].to.y() > tau);
+                CHECK(rows.arrows[2 * k + 1].to.y() < tau);
+                if (std::abs(vx) > 1e-9) CHECK(rows.arrows[2 * k + 1].to.x() * vx < 0);
+            }
+            // On the smallest page, 320x240, the nine rows are 15 units apart and a label may touch the
+            // next row's arrow.
+            for (const Vec2 page : kPages) {
+                if (page.x < 480) continue;
+                fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
+                const DisplayList list = s.record_figure(fig);
+                INFO("on " << page.x << "x" << page.y);
+                CHECK(arrow_on_arrow(list) == "");
+                CHECK(label_on_shape(list, s.fonts()) == "");
+                CHECK(overlapping_texts(list, s.fonts(), 1.0f) == "");
+            }
+        }
+    CHECK(fig4(0.5, 90).panels.at(0).title == "velocity v/v_{v} and friction F/F_{c} at τ = kπ/4");
 }

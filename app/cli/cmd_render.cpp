@@ -143,7 +143,8 @@ std::string caption_json(const FigureSpec& spec, const std::vector<std::string>&
 
 // The spec file's figure and inputs; its size, scale and format where the flags do not give them.
 std::pair<const FigureEntry*, FigureInputs> read_spec(const std::string& path, const CLI::App& cmd,
-                                                      std::string& size, OutputArgs& output) {
+                                                      std::string& size, OutputArgs& output,
+                                                      std::string& page, bool& caption) {
     std::string text;
     if (std::string why = read_input_file(path, text, {kMaxSpecBytes}); !why.empty())
         throw UsageError("--spec " + path + ": " + why);
@@ -159,6 +160,8 @@ std::pair<const FigureEntry*, FigureInputs> read_spec(const std::string& path, c
         }
         if (cmd.get_option("--scale")->count() == 0) output.scale = spec.scale;
         if (cmd.get_option("--format")->count() == 0) output.format = spec.format;
+        if (cmd.get_option("--page")->count() == 0) page = app::to_string(spec.page);
+        if (cmd.get_option("--caption")->count() == 0) caption = spec.caption;
         return {spec.entry, std::move(spec.inputs)};
     } catch (const app::SpecError& err) {
         throw UsageError("--spec " + path + ": " + err.what());
@@ -177,6 +180,8 @@ Command add_render_command(CLI::App& root) {
         std::string spec;  // --spec FILE.json
         OutputArgs output; // --format, --scale
         int lesson = 0;    // --lesson N
+        std::string page;  // --page a4|letter|column
+        bool caption = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
@@ -202,6 +207,22 @@ Command add_render_command(CLI::App& root) {
         ->check(CLI::IsMember({"tsv", "markdown"}));
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
+    cmd->add_option(
+           "--page", a->page,
+           "a page that prints right for SVG and PDF: a4 or letter (portrait, the figure at the width "
+           "inside 2/3 in margins, 9 pt type at 100 %) or column (3.3 in wide, 8 pt type); the PNG "
+           "stays --size pixels")
+        ->check(CLI::Validator(
+            [](std::string& s) -> std::string {
+                bool ok = false;
+                app::paper_page(s, ok);
+                return ok ? "" : "'" + s + "' is not a page; allowed: a4, letter, column";
+            },
+            "a4|letter|column"));
+    cmd->add_flag(
+        "--caption", a->caption,
+        "put the figure's caption (as in its ID.json) under it, wrapped to its width, in the PNG, SVG "
+        "and PDF");
     add_render_flags(*cmd, a->flags);
     // After the figure flags: --lesson excludes them (its setup stands for them).
     CLI::Option* lesson = add_lesson_option(
@@ -228,7 +249,7 @@ Command add_render_command(CLI::App& root) {
             if (const std::string flag = first_given(a->flags); from_spec && !flag.empty())
                 throw UsageError("--spec and " + flag +
                                  ": the spec file gives the figure's parameters; allowed with --spec: --out, "
-                                 "--size, --scale, --format");
+                                 "--size, --scale, --format, --page, --caption");
             if (a->figure.empty() && !from_spec)
                 throw UsageError("--figure is required (or --spec, --lesson, --list); allowed: " +
                                  figure_names());
@@ -237,7 +258,8 @@ Command add_render_command(CLI::App& root) {
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
             // inputs.
             std::vector<std::pair<const FigureEntry*, FigureInputs>> chosen;
-            if (from_spec) chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output));
+            if (from_spec)
+                chosen.push_back(read_spec(a->spec, *cmd, a->size, a->output, a->page, a->caption));
             const FigureInputs in = from_spec ? FigureInputs{} : inputs_of(a->flags);
             std::stringstream ids(from_spec ? std::string() : a->figure);
             // Several figures named (fig5,fig14,scene): one that is given none of its required parameters
@@ -293,6 +315,9 @@ Command add_render_command(CLI::App& root) {
                 if (!from_spec) throw;
                 throw UsageError("--spec " + a->spec + ": " + err.what());
             }
+            bool page_ok = true;
+            const app::PaperPage paper =
+                a->page.empty() ? app::PaperPage::none : app::paper_page(a->page, page_ok);
             check_out_dir(a->out);
             std::string dir = a->out;
             while (dir.size() > 1 && dir.back() == '/') dir.pop_back();
@@ -302,8 +327,8 @@ Command add_render_command(CLI::App& root) {
             std::vector<std::string> parameters; // each figure's, for its ID.json
             for (const auto& [e, inputs] : chosen) {
                 const FigureInputs resolved = with_defaults(*e, inputs);
-                parameters.push_back(
-                    app::parameters_json(*e, resolved, sz.w, sz.h, a->output.scale, a->output.pictures()));
+                parameters.push_back(app::parameters_json(*e, resolved, sz.w, sz.h, a->output.scale,
+                                                          a->output.pictures(), paper, a->caption));
                 try {
                     specs.push_back(e->make(resolved));
                 } catch (const DataError& err) {
@@ -334,6 +359,8 @@ Command add_render_command(CLI::App& root) {
             job.dir = dir;
             job.formats = a->output.pictures();
             job.encoders = encoders_for(sz.w, sz.h);
+            job.paper = paper;
+            job.caption = a->caption;
             // render_figures calls extras once per figure, in order.
             std::size_t next = 0;
             job.extras = [&output = a->output, &parameters, &next](const FigureSpec& spec, FigureData& data) {

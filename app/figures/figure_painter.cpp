@@ -283,8 +283,10 @@ void draw_shapes(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& 
         const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
         const float len = std::hypot(to.x - from.x, to.y - from.y);
         if (len < 2) continue;
+        gfx::Color color = ink_color(a.ink, 0);
+        color.a *= a.opacity;
         c.arrow(from, to,
-                {{ink_color(a.ink, 0), a.width, gfx::LineStyle::Solid},
+                {{color, a.width, gfx::LineStyle::Solid},
                  std::min(14.f, 0.5f * len),
                  std::min(10.f, 0.4f * len)});
     }
@@ -338,11 +340,14 @@ std::vector<LabelCandidate> arrow_label_places(const ArrowData& a, gfx::Vec2 fro
         cands.push_back({{to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)},
                          label_style(size, color, 0, static_cast<float>(a.label_dy))});
     cands.push_back({{to.x + ux * 6, to.y + uy * 6}, label_style(size, color, ux, uy)});
+    // Beside the shaft; further off it where the label is asked above or below (the why panel's live arrows
+    // slope every way: 9 units off a sloping shaft a label's corner may touch it).
+    const float off = a.label_dy != 0 ? 13.f : 9.f;
     for (float along : {0.85f, 0.5f})
         for (float side : {1.f, -1.f}) {
             const float nx = -uy * side, ny = ux * side;
             const gfx::Vec2 m = from + (to - from) * along;
-            cands.push_back({{m.x + nx * 9, m.y + ny * 9}, label_style(size, color, nx, ny)});
+            cands.push_back({{m.x + nx * off, m.y + ny * off}, label_style(size, color, nx, ny)});
         }
     // Crowded (a short arrow among other labels): the same places further out.
     cands.push_back({{to.x + ux * 20, to.y + uy * 20}, label_style(size, color, ux, uy)});
@@ -615,8 +620,8 @@ float page_text_factor(const gfx::Rect& page) {
     return std::clamp(std::min(page.width() / 640.0f, page.height() / 400.0f), kSmallestTextFactor, 1.0f);
 }
 
-void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds) {
-    const float k = page_text_factor(bounds);
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds, float text_factor) {
+    const float k = text_factor > 0 ? text_factor : page_text_factor(bounds);
     const float title_end = paint_title(canvas, fig.title, bounds, k);
     const float inset = std::round(8 * k), gap = std::round(6 * k);
     const gfx::Rect body{bounds.x0 + inset, title_end + std::round(14 * k), bounds.x1 - inset,

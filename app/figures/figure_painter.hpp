@@ -13,7 +13,9 @@ namespace fv::app {
 // journal's one-column figure, ~250 pt wide), by page_text_factor: the smaller of width / 640 and height /
 // 400, at least kSmallestTextFactor (tick labels and legends 13 x 0.6 = 7.8 units at 320x240, the smallest
 // page).
-void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds);
+// `text_factor` > 0 replaces page_text_factor (a printed page: render --page lays a figure out on a small
+// logical page whose text must print at full size).
+void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bounds, float text_factor = 0);
 constexpr float kSmallestTextFactor = 0.6f;
 float page_text_factor(const gfx::Rect& page);
 

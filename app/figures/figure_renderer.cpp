@@ -105,20 +105,21 @@ FigureRenderer::FigureRenderer(const PictureSize& size)
 
 FigureRenderer::~FigureRenderer() = default;
 
-std::string FigureRenderer::render(const FigureData& figure, PictureFormat format) {
+std::string FigureRenderer::render(const FigureData& figure, PictureFormat format,
+                                   const PrintOptions& print) {
     // The command line's path (render_figures.cpp): PNG from the drawn frame, SVG and PDF from the display
     // list, through the same encoders.
     PictureFormats formats;
     formats.png = format == PictureFormat::png;
     formats.svg = format == PictureFormat::svg;
     formats.pdf = format == PictureFormat::pdf;
+    const gfx::Vec2 logical = session_->logical_page();
+    const PrintLayout layout = print_layout(print.page, logical.x, logical.y, !print.caption.empty());
     gfx::Image image;
     gfx::DisplayList list;
-    if (formats.png)
-        image = session_->render_figure(figure);
-    else
-        list = session_->record_figure(figure);
-    return encode_pictures(figure.id, formats, image, list).front().second;
+    gfx::VectorPage page;
+    draw_pictures(*session_, figure, formats, layout, print.caption, image, list, page);
+    return encode_pictures(figure.id, formats, image, list, page).front().second;
 }
 
 } // namespace fv::app

@@ -25,6 +25,22 @@ inline constexpr double kMinScale = 0.25, kMaxScale = 8;
 inline constexpr int kMinPageW = 320, kMinPageH = 240, kMaxPageW = 7680, kMaxPageH = 4320;
 
 enum class PictureFormat { png, svg, pdf };
+
+// A page that prints right (render --page): the SVG and PDF page in points with the figure at its width
+// inside the margins, laid out on a logical page whose tick labels (13 units) print at a fixed size: a4 and
+// letter portrait, 48 pt margins, 9 pt type; column a journal column 3.3 in wide, 8 pt type. none: the page
+// is the logical page, one unit a point (render's default). The PNG keeps its size.
+enum class PaperPage { none, a4, letter, column };
+// "a4", "letter", "column" (none: "").
+const char* to_string(PaperPage p);
+// The page by name, or none with `ok` false.
+PaperPage paper_page(const std::string& name, bool& ok);
+
+// The page, and a caption drawn under the figure (render --caption; empty: none).
+struct PrintOptions {
+    PaperPage page = PaperPage::none;
+    std::string caption;
+};
 // "png", "svg", "pdf": the file extension.
 const char* to_string(PictureFormat f);
 
@@ -73,7 +89,7 @@ class FigureRenderer {
 
     // The picture of a computed figure as the content of an ID.png, ID.svg or ID.pdf file. Throws
     // std::runtime_error if an encoder fails. Write it with fv::write_file_atomic (fv/atomic_file.hpp).
-    std::string render(const FigureData& figure, PictureFormat format);
+    std::string render(const FigureData& figure, PictureFormat format, const PrintOptions& print = {});
 
   private:
     std::unique_ptr<RenderSession> session_;

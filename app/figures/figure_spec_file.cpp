@@ -14,7 +14,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 // The keys every spec takes besides the figure's parameters.
-constexpr const char* kPictureKeys[] = {"size", "scale", "format"};
+constexpr const char* kPictureKeys[] = {"size", "scale", "format", "page", "caption"};
 
 Json numbers(const std::vector<double>& v) {
     Json a = Json::array();
@@ -144,7 +144,7 @@ std::string allowed_keys(const FigureEntry& e) {
 } // namespace
 
 std::string parameters_json(const FigureEntry& e, const FigureInputs& in, int width, int height, double scale,
-                            const PictureFormats& formats) {
+                            const PictureFormats& formats, PaperPage page, bool caption) {
     Json j;
     j["id"] = e.id;
     for (const FigureParamUse& u : e.params) {
@@ -193,6 +193,9 @@ std::string parameters_json(const FigureEntry& e, const FigureInputs& in, int wi
     j["size"] = {width, height};
     j["scale"] = scale;
     j["format"] = formats.extensions();
+    // Only when asked: the ID.json of a figure without them stays what it was.
+    if (page != PaperPage::none) j["page"] = to_string(page);
+    if (caption) j["caption"] = true;
     return j.dump();
 }
 
@@ -238,6 +241,19 @@ FigureSpecFile parse_spec_file(const std::string& content) {
         }
         if (key == "format") {
             spec.format = joined(text_list(key, value));
+            continue;
+        }
+        if (key == "page") {
+            bool ok = false;
+            spec.page = paper_page(text(key, value), ok);
+            if (!ok)
+                throw SpecError("page: " + quoted_text(text(key, value)) +
+                                " is not a page; allowed: a4, letter, column");
+            continue;
+        }
+        if (key == "caption") {
+            if (!value.is_boolean()) wrong_type(key, value, "true or false");
+            spec.caption = value.get<bool>();
             continue;
         }
         const auto use = std::find_if(e.params.begin(), e.params.end(),

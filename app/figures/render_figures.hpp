@@ -4,10 +4,12 @@
 // the frame being drawn, the frames being encoded and the data of one figure.
 #pragma once
 
+#include "figures/figure_renderer.hpp"
 #include "figures/render_session.hpp"
 
 #include "fv/figure_data.hpp"
 #include "fv/figures.hpp"
+#include "fv/gfx/vector_output.hpp"
 
 #include <cstddef>
 #include <functional>
@@ -26,10 +28,28 @@ struct PictureFormats {
 
 using NamedFile = std::pair<std::string, std::string>; // file name, content
 
+struct PrintLayout {
+    gfx::Vec2 logical{0, 0}; // the page the figure is laid out on ({0, 0}: the session's)
+    float text_factor = 0;   // its text factor (paint_figure), 0: the page's own
+    gfx::VectorPage vector;  // where it goes on the printed page, the caption's size
+    float png_caption = 14;  // a PNG's caption text size, logical units
+};
+// The layout of `paper` for a figure drawn at `width` x `height` logical units (its aspect is kept for a4
+// and letter; a column is 3:4), with a caption or not.
+PrintLayout print_layout(PaperPage paper, float width, float height, bool caption);
+
 // ID.png (from `image`), ID.svg and ID.pdf (from `list`) as asked. Thread-safe; throws what the encoders
 // throw.
 std::vector<NamedFile> encode_pictures(const std::string& id, const PictureFormats& formats,
-                                       const gfx::Image& image, const gfx::DisplayList& list);
+                                       const gfx::Image& image, const gfx::DisplayList& list,
+                                       const gfx::VectorPage& page = {});
+
+// Draws `data` for `formats` through `session`: the PNG's frame (with the caption's band under it), the
+// display list of the SVG and PDF (on the layout's logical page where it is a printed one) and their page
+// with the caption. An empty caption: none.
+void draw_pictures(RenderSession& session, const FigureData& data, const PictureFormats& formats,
+                   const PrintLayout& layout, const std::string& caption, gfx::Image& image,
+                   gfx::DisplayList& list, gfx::VectorPage& page);
 
 // What the caller writes beside a figure's pictures (its tables as CSV, its caption), and "" or a one-line
 // note of its failed points; made once the figure is computed.
@@ -44,6 +64,8 @@ struct RenderJob {
     std::size_t encoders = 1; // pictures encoded at once (each holds about two frames)
     std::function<FigureExtras(const FigureSpec&, FigureData&)> extras;
     std::function<void(const std::string& id)> wrote; // each figure whose files are all written, in order
+    PaperPage paper = PaperPage::none; // the SVG and PDF pages (render --page); PNGs stay the session's size
+    bool caption = false; // each figure's caption (as in its ID.json) under it in every format (--caption)
 };
 
 struct RenderOutcome {

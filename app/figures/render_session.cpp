@@ -41,9 +41,12 @@ gfx::Vec2 RenderSession::logical_page() const {
 }
 
 gfx::DisplayList RenderSession::record_figure(const FigureData& fig) {
-    const gfx::Vec2 logical = logical_page();
+    return record_figure(fig, logical_page(), 0);
+}
+
+gfx::DisplayList RenderSession::record_figure(const FigureData& fig, gfx::Vec2 logical, float text_factor) {
     canvas_.begin(logical, ratio_, gfx::colors::white);
-    paint_figure(canvas_, fig, {0, 0, logical.x, logical.y});
+    paint_figure(canvas_, fig, {0, 0, logical.x, logical.y}, text_factor);
     canvas_.end_recording();
     return canvas_.display_list();
 }

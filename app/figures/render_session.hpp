@@ -34,6 +34,8 @@ class RenderSession {
     // The figure's display list over the logical page, recorded without drawing (for SVG and PDF). After
     // render_figure(), canvas().display_list() holds the same list.
     gfx::DisplayList record_figure(const FigureData& fig);
+    // The same on a logical page of its own (a printed page's, render --page), text at `text_factor`.
+    gfx::DisplayList record_figure(const FigureData& fig, gfx::Vec2 logical, float text_factor);
     // The logical page: framebuffer / pixel ratio.
     gfx::Vec2 logical_page() const;
     // The screenshot: the frame drawn so far (before present) as a PNG at path, written atomically

@@ -27,18 +27,10 @@ void append(SeriesData& s, double x, double y, double jump) {
 
 const char* const kPhase[] = {"τ = 0", "π/4", "π/2", "3π/4", "π"};
 
-} // namespace
-
-Vec2 coulomb(const Vec2& v) {
-    const double n = v.norm();
-    return n > 0 ? Vec2(-v / n) : Vec2(Vec2::Zero());
-}
-
-void mechanism_panels(const MechanismFigure& spec, FigureData& fig) {
-    const Params p{spec.zeta, spec.theta, 1, 1};        // r_disp, i: not used by the rigid model
-    const Ratio r = rigid_ratio(p.zeta, p.theta);       // Eq. (9) and its y-twin
+// The left panel of Fig. 4 in the plane: v/v_v and F/F_c at tau = k pi/4 as arrows from the origin, their
+// loci over the period and the mean friction.
+PanelData plane_panel(const Params& p, const Ratio& r) {
     const Vec2 e(std::cos(p.theta), std::sin(p.theta)); // the vibration's direction
-
     PanelData plane;
     plane.title = "velocity v/v_{v} and friction F/F_{c} at τ = kπ/4";
     plane.x_title = "along v_{b}";
@@ -80,6 +72,76 @@ void mechanism_panels(const MechanismFigure& spec, FigureData& fig) {
     plane.y_min = std::min(-1.0, std::min(v0.y(), v1.y())) - 0.25;
     plane.y_max = std::max(1.0, std::max(v0.y(), v1.y())) + 0.25;
     plane.legend = Legend::bottom_left;
+    return plane;
+}
+
+// The instants of parallel_panel's rows, tau = k pi/4 over the whole period.
+const char* const kInstant[] = {"τ = 0", "π/4", "π/2", "3π/4", "π", "5π/4", "3π/2", "7π/4", "2π"};
+
+// The left panel of Fig. 4 where the vibration runs along v_b or nearly (mechanism_parallel): v and F stay
+// on one line, so each instant tau = k pi/4 gets a row up a time axis with v/v_v's component along v_b just
+// above it (blue) and F/F_c's just below (vermilion). Read upwards, v shrinks, reverses where v_x = 0 and
+// grows back, and the friction reverses with it; the mean friction is the dashed black line across them.
+PanelData parallel_panel(const Params& p, const Ratio& r) {
+    const double c = std::cos(p.theta);
+    const bool reverses = p.zeta < std::abs(c); // v_x = zeta + c cos tau changes sign (Eq. 1)
+    // Room beside the longest arrows for their labels, above and below the rows for their arrows.
+    const double lo = std::min(-1.0, p.zeta - std::abs(c)), hi = std::max(1.0, p.zeta + std::abs(c));
+    const double x0 = lo - 0.15 * (hi - lo) - 0.1, x1 = hi + 0.25 * (hi - lo), y0 = -0.5, y1 = 2 * kPi + 0.6;
+    PanelData s;
+    s.title = reverses ? "along v_{b}, instant by instant: v reverses, friction reverses with it"
+                       : "along v_{b}, instant by instant: v never reverses, friction stays against v_{b}";
+    s.x_title = "along v_{b}:  v/v_{v} above each instant, F/F_{c} below";
+    s.y_title = titles::kTime;
+    // The velocity over the period through the arrows' heads, v_x(tau) = zeta + c cos tau (Eq. 1). (The
+    // friction's locus, -sgn v_x at theta = 0, is the arrows' heads at +-1.)
+    SeriesData vl{"v_{x}(τ)/v_{v}, whole period", {}, {}, Ink::body, Dash::dashed, Mark::none, 1.5f};
+    for (int k = 0; k <= 720; ++k) {
+        const double tau = 2 * kPi * k / 720;
+        vl.x.push_back(body_velocity(p, tau).x()), vl.y.push_back(tau + kMechanismRowGap);
+    }
+    s.series.push_back(std::move(vl));
+    for (int k = 0; k <= 8; ++k) {
+        const double tau = kPi * k / 4;
+        const Vec2 v = body_velocity(p, tau), f = coulomb(v);
+        s.arrows.push_back({Vec2(0, tau + kMechanismRowGap), Vec2(v.x(), tau + kMechanismRowGap), Ink::body,
+                            kInstant[k], 2.f});
+        s.arrows.push_back(
+            {Vec2(0, tau - kMechanismRowGap), Vec2(f.x(), tau - kMechanismRowGap), Ink::tip, "", 2.f});
+    }
+    // Where v_x = 0 (cos tau = -zeta / c) the velocity reverses and the friction with it, at once: the rigid
+    // model has no stick (its velocity is imposed), the friction jumps from -F_c to +F_c. Named in the
+    // legend: a label on the line would lie on the rows' arrows.
+    if (reverses) {
+        const double turn = std::acos(-p.zeta / c);
+        s.series.push_back({"v = 0: friction reverses",
+                            {x0, x1, kNaN, x0, x1},
+                            {turn, turn, kNaN, 2 * kPi - turn, 2 * kPi - turn},
+                            Ink::spring,
+                            Dash::dotted,
+                            Mark::none,
+                            1.2f});
+    }
+    // The mean friction along v_b, -r_x F_c (Eq. 9), across the rows: the friction arrows' average.
+    s.series.push_back(
+        {"mean friction −r_{x}F_{c}", {-r.rx, -r.rx}, {y0, y1}, Ink::black, Dash::dashed, Mark::none, 2.f});
+    s.x_min = x0, s.x_max = x1;
+    s.y_min = y0, s.y_max = y1;
+    s.legend = Legend::above;
+    return s;
+}
+
+} // namespace
+
+Vec2 coulomb(const Vec2& v) {
+    const double n = v.norm();
+    return n > 0 ? Vec2(-v / n) : Vec2(Vec2::Zero());
+}
+
+void mechanism_panels(const MechanismFigure& spec, FigureData& fig) {
+    const Params p{spec.zeta, spec.theta, 1, 1};  // r_disp, i: not used by the rigid model
+    const Ratio r = rigid_ratio(p.zeta, p.theta); // Eq. (9) and its y-twin
+    PanelData plane = mechanism_parallel(p.theta) ? parallel_panel(p, r) : plane_panel(p, r);
 
     PanelData time;
     time.title = "friction against v_{b} over one period";

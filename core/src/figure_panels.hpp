@@ -11,10 +11,15 @@ namespace fv {
 Vec2 coulomb(const Vec2& v);
 
 // Fig. 4: the rigid model over one period at spec.zeta, spec.theta (Eqs. 1-4, 9): (left) the velocity
-// v(tau)/v_v and the friction F(tau)/F_c = -v/|v| at tau = k pi/4, with their loci and the mean friction;
+// v(tau)/v_v and the friction F(tau)/F_c = -v/|v| at tau = k pi/4, with their loci and the mean friction (in
+// the plane; or, where the vibration runs along v_b, their components along it up a time axis);
 // (right) the friction against v_b, -F_x/F_c (Eq. 3), over the period with its mean r_x (Eq. 9).
 // Table: tau, v_x, v_y, F_x, F_y at 1024 instants.
 void mechanism_panels(const MechanismFigure& spec, FigureData& fig);
+
+// Where the vibration runs along v_b (mechanism_parallel) the left panel draws each instant tau = k pi/4 as a
+// row up a time axis: the velocity's arrow this far (in tau) above the row, the friction's as far below.
+inline constexpr double kMechanismRowGap = 0.14;
 
 // Fig. 6: F/F_c against x/z_ss for each exponent of spec.exponents, from the model's update (Eqs. 17-27,
 // dahl_update) stepped along x in steps of kDahlCurveStep z_ss: (a) loading from rest, v > 0 (the paper's

@@ -498,15 +498,59 @@ PanelData loop_panel_live(const LiveSim& sim, double rewind) {
     return panel;
 }
 
+namespace {
+
+// Whether arrow `a` runs along arrow `b`: a third of it within `within` of the axes' spans of b's shaft, so
+// that one hides the other. A live arrow (3 units wide) hides a faded one within 3 % (at the app's panel
+// sizes several pixels, more than the layout test's reach); two faded ones (1.2 units) hide each other within
+// 1 % (looser, and at 90 deg the velocities at tau = 0 and pi/4 would go, which the eye tells apart).
+constexpr double kLiveHides = 0.03, kFadedHides = 0.01;
+bool runs_along(const ArrowData& a, const ArrowData& b, const PanelData& panel, double within = kLiveHides) {
+    const double sx = panel.x_max.value_or(1) - panel.x_min.value_or(0),
+                 sy = panel.y_max.value_or(1) - panel.y_min.value_or(0);
+    const Vec2 scale(1 / sx, 1 / sy);
+    const Vec2 b0 = b.from.cwiseProduct(scale), d = (b.to - b.from).cwiseProduct(scale);
+    const double l2 = d.squaredNorm();
+    int near = 0;
+    constexpr int kN = 24;
+    for (int k = 0; k <= kN; ++k) {
+        const Vec2 q = (a.from + (a.to - a.from) * (static_cast<double>(k) / kN)).cwiseProduct(scale);
+        const double t = l2 > 0 ? std::clamp((q - b0).dot(d) / l2, 0.0, 1.0) : 0.0;
+        near += (q - b0 - t * d).norm() <= within;
+    }
+    return near * 3 > kN + 1;
+}
+
+// Drops the faded arrows of `panel` that run along `over` (either way): the live arrow
+// stands in for what it would hide.
+void drop_hidden(PanelData& panel, const ArrowData& over) {
+    auto& a = panel.arrows;
+    a.erase(std::remove_if(
+                a.begin(), a.end(),
+                [&](const ArrowData& x) { return runs_along(x, over, panel) || runs_along(over, x, panel); }),
+            a.end());
+}
+
+} // namespace
+
 const PanelData& MechanismBase::for_params(const Params& p) {
     const Vec2 key{p.zeta, p.theta};
     if (!cached_ || cached_->first != key) {
         FigureData fig4; // the paper's Fig. 4 at these zeta and theta: its left panel
         mechanism_panels(MechanismFigure{p.zeta, p.theta}, fig4);
         PanelData base = std::move(fig4.panels.at(0));
-        // Faded: the live arrows are the ones to follow.
-        for (ArrowData& a : base.arrows) a.width *= 0.6f, a.label.clear();
+        // Faded: the live arrows are the ones to follow. Of two that run along each other (at theta = 30 deg
+        // the friction at tau = 0 and pi/4; at 90 deg the friction at pi/2 and the mean) the later is kept:
+        // the mean friction is last.
+        for (ArrowData& a : base.arrows) a.width *= 0.6f, a.opacity = 0.5f, a.label.clear();
         for (SeriesData& x : base.series) x.opacity *= 0.6f;
+        std::vector<ArrowData> kept;
+        for (auto a = base.arrows.rbegin(); a != base.arrows.rend(); ++a)
+            if (std::none_of(kept.begin(), kept.end(), [&](const ArrowData& k) {
+                    return runs_along(*a, k, base, kFadedHides) || runs_along(k, *a, base, kFadedHides);
+                }))
+                kept.push_back(*a);
+        base.arrows.assign(kept.rbegin(), kept.rend());
         cached_.emplace(key, std::move(base));
     }
     return cached_->second;
@@ -517,11 +561,47 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
     const SimMoment m = moment_at(sim, rewind);
     const Vec2 v = m.velocity;
     // The friction on the body: against the velocity (rigid), or -F of the asperity (Dahl).
-    const Vec2 f = sim.model() == Model::rigid ? coulomb(v) : Vec2(-m.F);
-    panel.title = "mechanism now (τ/2π = " + format_number("%.2f", std::fmod(m.tau / (2 * kPi), 1.0)) +
-                  "): v turns, friction follows";
-    panel.arrows.push_back({Vec2::Zero(), v, Ink::body, "v", 3.0f});
-    panel.arrows.push_back({Vec2::Zero(), f, Ink::tip, "friction", 3.0f});
+    const bool rigid = sim.model() == Model::rigid;
+    const Vec2 f = rigid ? coulomb(v) : Vec2(-m.F);
+    const double phase = std::fmod(m.tau / (2 * kPi), 1.0);
+    ArrowData va{Vec2::Zero(), v, Ink::body, "v", 3.0f}, fa{Vec2::Zero(), f, Ink::tip, "friction", 3.0f};
+    std::string what = "v turns, friction follows", state;
+    if (mechanism_parallel(sim.params().theta)) {
+        // The rows of the base are instants up a time axis: the live arrows ride up it at the phase now,
+        // their components along v_b, and the friction's label says whether the tip sticks.
+        const double t = 2 * kPi * phase;
+        va.from = Vec2(0, t + kMechanismRowGap), va.to = Vec2(v.x(), t + kMechanismRowGap);
+        fa.from = Vec2(0, t - kMechanismRowGap), fa.to = Vec2(f.x(), t - kMechanismRowGap);
+        const bool reverses = sim.params().zeta < std::abs(std::cos(sim.params().theta));
+        what = !reverses
+                   ? "v never reverses, friction stays against v_{b}"
+                   : (rigid ? "v reverses, friction reverses with it" : "v reverses, friction after it");
+        // Whether the tip sticks (the friction turning over while P moves back) or slips, in the title: a
+        // longer label would find no free place between the rows.
+        if (!rigid) state = m.slip ? ", T slips" : (sim.params().i == 0 ? ", T sticks" : ", T creeps");
+    } else {
+        // The labels centred beyond the heads first (above an arrow pointing up, below one pointing down):
+        // beside a sloping shaft the label's corner may touch it.
+        va.label_dy = v.y() > 0 ? -1 : 1;
+        fa.label_dy = f.y() > 0 ? -1 : 1;
+    }
+    if (!mechanism_parallel(sim.params().theta) && (runs_along(fa, va, panel) || runs_along(va, fa, panel))) {
+        // In the plane both start at the body: where the friction lies along the velocity (the Dahl
+        // friction has not turned yet, or v is so short that it is all tail), the friction is drawn beside
+        // it, shifted across its own line by 4 % of the axes' span, away from v.
+        const Vec2 d = fa.to - fa.from;
+        if (d.norm() > 0) {
+            const double span = panel.x_max.value_or(1) - panel.x_min.value_or(0);
+            Vec2 shift = Vec2(-d.y(), d.x()).normalized() * (0.04 * span);
+            if (shift.dot(va.to - va.from) > 0) shift = -shift; // to the side away from the velocity
+            fa.from += shift, fa.to += shift;
+        }
+    }
+    panel.title = "mechanism now (τ/2π = " + format_number("%.2f", phase) + state + "): " + what;
+    drop_hidden(panel, va);
+    drop_hidden(panel, fa);
+    panel.arrows.push_back(va);
+    panel.arrows.push_back(fa);
     panel.legend = Legend::none; // the loci are explained by the help overlay; a legend would cover arrows
     return panel;
 }

@@ -423,7 +423,8 @@ def _spec_value(name: str, value):
     return a.tolist()
 
 
-def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: float = 1.0, **params):
+def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: float = 1.0, page=None,
+           caption: bool = False, **params):
     """Renders figure ``id`` headless (OSMesa for PNG, cairo for SVG and PDF), as `frictionviz render` does.
 
     params  the figure's parameters (figures() lists them): zeta, theta_deg (DEGREES), rdisp, i, model, data
@@ -432,6 +433,8 @@ def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: floa
             (one map per combination, at most 6, as small multiples); none given: the figure's example
             inputs (as `render --figure all`)
     size    (width, height) in pixels; scale the CLI's --scale
+    page    None, "a4", "letter" or "column": the SVG or PDF page that prints right (the CLI's --page)
+    caption True: the figure's caption under it in the PNG, SVG or PDF (the CLI's --caption)
     out     None: returns a Figure (bytes in .data, inline in Jupyter; its tables in .tables and .csv());
             a path: writes the bytes there (atomically) and returns the path
 
@@ -443,10 +446,15 @@ def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: floa
         if name in _SPEC_KEY.values():
             raise TypeError(f"render: {name}: use {_KEYWORD[name]} (the unit is in the name)")
         spec[_SPEC_KEY.get(name, name)] = _spec_value(name, value)
+    example = not params
+    if page is not None:
+        spec["page"] = page
+    if caption:
+        spec["caption"] = True
     w, h = size
-    data, title, caption, parameters, csv = _core.render(json.dumps(spec), not params, int(w), int(h),
-                                                         float(scale), format)
-    fig = Figure(id, data, format, title, caption, json.loads(parameters), csv)
+    data, title, text, parameters, csv = _core.render(json.dumps(spec), example, int(w), int(h), float(scale),
+                                                      format)
+    fig = Figure(id, data, format, title, text, json.loads(parameters), csv)
     if out is None:
         return fig
     _write_file(out, data)

@@ -135,5 +135,7 @@ def render(
     format: Literal["png", "svg", "pdf"] = ...,
     size: Tuple[int, int] = ...,
     scale: float = ...,
+    page: Optional[Literal["a4", "letter", "column"]] = ...,
+    caption: bool = ...,
     **params: Any,
 ) -> Union[Figure, Path]: ...

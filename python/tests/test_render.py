@@ -81,3 +81,17 @@ def test_render_errors_are_the_spec_files():
         fv.render("rx", rdisp=[1, float("nan")])
     with pytest.raises(ValueError, match="unknown"):
         fv.render("fig99")
+
+
+def test_page_and_caption_equal_cli(tmp_path, monkeypatch):
+    # render(page=, caption=) gives the CLI's --page --caption bytes (a PDF's date fixed by SOURCE_DATE_EPOCH),
+    # and the parameters carry them, so that `render --spec` draws the same again.
+    monkeypatch.setenv("SOURCE_DATE_EPOCH", "0")
+    cli("render", "--figure", "fig5", "--format", "pdf", "--page", "a4", "--caption", "--out", tmp_path)
+    fig = fv.render("fig5", format="pdf", page="a4", caption=True)
+    assert fig.data == (tmp_path / "fig5.pdf").read_bytes()
+    assert fig.parameters["page"] == "a4" and fig.parameters["caption"] is True
+    png = fv.render("fig5", size=(640, 400), caption=True)
+    assert png.data != fv.render("fig5", size=(640, 400)).data
+    with pytest.raises(ValueError, match="allowed: a4, letter, column"):
+        fv.render("fig5", format="pdf", page="a3")

@@ -19,6 +19,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace fv::gfx {
 namespace {
@@ -239,12 +240,18 @@ struct Replay {
     void operator()(const dl::PopClip&) { cairo_restore(cr); }
 };
 
-void replay(cairo_t* cr, const DisplayList& list, bool svg) {
+// Unhinted metrics and outlines: the same advances on every surface (a caption measured on an image surface
+// is drawn on a PDF one).
+void unhinted(cairo_t* cr) {
     cairo_font_options_t* fo = cairo_font_options_create();
     cairo_font_options_set_hint_metrics(fo, CAIRO_HINT_METRICS_OFF);
     cairo_font_options_set_hint_style(fo, CAIRO_HINT_STYLE_NONE);
     cairo_set_font_options(cr, fo);
     cairo_font_options_destroy(fo);
+}
+
+void replay(cairo_t* cr, const DisplayList& list, bool svg) {
+    unhinted(cr);
     set_color(cr, list.background);
     cairo_paint(cr);
     cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
@@ -284,12 +291,107 @@ std::string source_date() {
     return buf;
 }
 
+// `text` in words, as lines no wider than `width` at the font size set on `cr` (a word wider than that
+// alone on its line).
+std::vector<std::string> wrap_text(cairo_t* cr, const std::string& text, double width) {
+    std::vector<std::string> lines;
+    std::string line, word;
+    auto fits = [&](const std::string& s) {
+        cairo_text_extents_t e;
+        cairo_text_extents(cr, s.c_str(), &e);
+        return e.x_advance <= width;
+    };
+    auto flush_word = [&] {
+        if (word.empty()) return;
+        const std::string joined = line.empty() ? word : line + " " + word;
+        if (line.empty() || fits(joined)) {
+            line = joined;
+        } else {
+            lines.push_back(line);
+            line = word;
+        }
+        word.clear();
+    };
+    for (const char ch : text) {
+        if (ch == ' ' || ch == '\n' || ch == '\t')
+            flush_word();
+        else
+            word += ch;
+    }
+    flush_word();
+    if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+// The caption's lines at `size` (a text size: line box height) wrapped to `width`, and the height they take.
+struct CaptionLines {
+    std::vector<std::string> lines;
+    double em = 0, line_height = 0;
+    double height() const { return line_height * static_cast<double>(lines.size()); }
+};
+
+CaptionLines caption_lines(const std::string& caption, double width, double size) {
+    CaptionLines c;
+    if (caption.empty()) return c;
+    cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, 1, 1);
+    cairo_t* cr = cairo_create(s);
+    unhinted(cr);
+    cairo_set_font_face(cr, font().cairo);
+    c.em = size * font().em_per_height;
+    c.line_height = size * 1.15;
+    cairo_set_font_size(cr, c.em);
+    c.lines = wrap_text(cr, caption, width);
+    cairo_destroy(cr);
+    cairo_surface_destroy(s);
+    return c;
+}
+
+// Draws the lines with their first line box's top-left at (x, y), in black.
+void draw_caption(cairo_t* cr, const CaptionLines& c, double x, double y) {
+    cairo_save(cr);
+    unhinted(cr);
+    cairo_set_font_face(cr, font().cairo);
+    cairo_set_font_size(cr, c.em);
+    cairo_set_source_rgb(cr, 0, 0, 0);
+    cairo_font_extents_t fe;
+    cairo_font_extents(cr, &fe);
+    for (std::size_t k = 0; k < c.lines.size(); ++k) {
+        cairo_move_to(cr, x, y + c.line_height * static_cast<double>(k) + fe.ascent);
+        cairo_show_text(cr, c.lines[k].c_str());
+    }
+    cairo_restore(cr);
+}
+
+// Text as SVG character data: &, < and > escaped.
+std::string xml_text(const std::string& s) {
+    std::string out;
+    for (const char ch : s) {
+        if (ch == '&')
+            out += "&amp;";
+        else if (ch == '<')
+            out += "&lt;";
+        else if (ch == '>')
+            out += "&gt;";
+        else
+            out += ch;
+    }
+    return out;
+}
+
 } // namespace
 
-std::string render_vector(const DisplayList& list, VectorFormat format) {
+std::string render_vector(const DisplayList& list, VectorFormat format, const VectorPage& page) {
     font(); // Throws if the font is missing, before a surface exists.
     std::string out;
-    const double w = list.size.x, h = list.size.y;
+    // The figure's box on the page, and the caption's lines under it (a gap of half a line between).
+    const double fw = list.size.x * page.scale, fh = list.size.y * page.scale;
+    const CaptionLines cap = caption_lines(page.caption, fw, page.caption_size);
+    const double cap_top = page.origin.y + fh + (cap.lines.empty() ? 0 : 0.5 * cap.line_height);
+    const bool own_page = page.size.x <= 0 || page.size.y <= 0;
+    const double w = own_page ? fw + 2 * page.origin.x : page.size.x;
+    const double h =
+        own_page ? cap_top + cap.height() + page.origin.y + (cap.lines.empty() ? 0 : 0.5 * cap.line_height)
+                 : page.size.y;
     cairo_surface_t* s = format == VectorFormat::Pdf
                              ? cairo_pdf_surface_create_for_stream(append, &out, w, h)
                              : cairo_svg_surface_create_for_stream(append, &out, w, h);
@@ -304,7 +406,28 @@ std::string render_vector(const DisplayList& list, VectorFormat format) {
         cairo_svg_surface_set_document_unit(s, CAIRO_SVG_UNIT_PT);
     }
     cairo_t* cr = cairo_create(s);
-    replay(cr, list, format == VectorFormat::Svg);
+    if (!own_page || page.scale != 1 || page.origin.x != 0 || page.origin.y != 0) {
+        // The page's background, then the figure placed and scaled on it.
+        cairo_set_source_rgb(cr, 1, 1, 1);
+        cairo_paint(cr);
+        cairo_save(cr);
+        cairo_translate(cr, page.origin.x, page.origin.y);
+        cairo_scale(cr, page.scale, page.scale);
+        cairo_rectangle(cr, 0, 0, list.size.x, list.size.y);
+        cairo_clip(cr);
+        replay(cr, list, format == VectorFormat::Svg);
+        cairo_restore(cr);
+    } else {
+        replay(cr, list, format == VectorFormat::Svg);
+    }
+    if (!cap.lines.empty()) {
+        if (own_page && fh + 2 * page.origin.y < h) { // the band under the figure, white like its page
+            cairo_rectangle(cr, 0, page.origin.y + fh, w, h - page.origin.y - fh);
+            cairo_set_source_rgb(cr, 1, 1, 1);
+            cairo_fill(cr);
+        }
+        draw_caption(cr, cap, page.origin.x, cap_top);
+    }
     cairo_status_t st = cairo_status(cr);
     cairo_destroy(cr);
     cairo_surface_finish(s); // Writes the rest of the document.
@@ -312,6 +435,57 @@ std::string render_vector(const DisplayList& list, VectorFormat format) {
     cairo_surface_destroy(s);
     if (st != CAIRO_STATUS_SUCCESS)
         throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+    if (format == VectorFormat::Svg && !page.caption.empty()) {
+        // The caption as text a reader (or a search) finds: SVG's <desc>, right after the root's start tag.
+        const std::size_t root = out.find("<svg");
+        const std::size_t end = root == std::string::npos ? root : out.find('>', root);
+        if (end != std::string::npos) out.insert(end + 1, "\n<desc>" + xml_text(page.caption) + "</desc>");
+    }
+    return out;
+}
+
+Image render_caption_image(const std::string& caption, float width, float size, float pad, float scale) {
+    const CaptionLines cap = caption_lines(caption, width - 2 * pad, size);
+    const int w = static_cast<int>(std::lround(width * scale));
+    const int h = static_cast<int>(std::lround((cap.height() + 2 * pad) * scale));
+    if (w <= 0 || h <= 0) return {};
+    cairo_surface_t* s = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, w, h);
+    cairo_t* cr = cairo_create(s);
+    cairo_set_source_rgb(cr, 1, 1, 1);
+    cairo_paint(cr);
+    cairo_scale(cr, scale, scale);
+    draw_caption(cr, cap, pad, pad);
+    const cairo_status_t st = cairo_status(cr);
+    cairo_destroy(cr);
+    cairo_surface_flush(s);
+    Image img(w, h);
+    const unsigned char* data = cairo_image_surface_get_data(s);
+    const int stride = cairo_image_surface_get_stride(s);
+    for (int y = 0; y < h; ++y) {
+        const auto* row =
+            reinterpret_cast<const std::uint32_t*>(data + static_cast<std::ptrdiff_t>(y) * stride);
+        for (int x = 0; x < w; ++x) { // opaque: no alpha to undo
+            std::uint8_t* p = img.pixel(x, y);
+            p[0] = static_cast<std::uint8_t>((row[x] >> 16) & 0xFF);
+            p[1] = static_cast<std::uint8_t>((row[x] >> 8) & 0xFF);
+            p[2] = static_cast<std::uint8_t>(row[x] & 0xFF);
+            p[3] = 255;
+        }
+    }
+    cairo_surface_destroy(s);
+    if (st != CAIRO_STATUS_SUCCESS)
+        throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+    return img;
+}
+
+Image stack_images(const Image& top, const Image& bottom) {
+    Image out(std::max(top.width, bottom.width), top.height + bottom.height);
+    std::fill(out.rgba.begin(), out.rgba.end(), std::uint8_t{255});
+    for (int y = 0; y < top.height; ++y)
+        std::copy_n(top.pixel(0, y), static_cast<std::size_t>(top.width) * 4, out.pixel(0, y));
+    for (int y = 0; y < bottom.height; ++y)
+        std::copy_n(bottom.pixel(0, y), static_cast<std::size_t>(bottom.width) * 4,
+                    out.pixel(0, top.height + y));
     return out;
 }
 

@@ -57,7 +57,8 @@ struct ArrowData {
     Ink ink = Ink::black;
     std::string label; // drawn beyond the head,
     float width = 2.5f;
-    int label_dy = 0; // or centred above (-1) or below (+1) it on screen (arrows along one line)
+    int label_dy = 0;  // or centred above (-1) or below (+1) it on screen (arrows along one line)
+    float opacity = 1; // < 1: faded (the why panel's instants behind the live arrows)
 };
 
 struct CircleData {

@@ -6,6 +6,7 @@
 #include "fv/params.hpp"
 #include "fv/steady_state.hpp"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -73,6 +74,15 @@ struct MechanismFigure {
     double zeta = 0;
     double theta = 0; // radians
 };
+
+// Within kMechanismParallelDeg of the sliding line (theta < 10 deg or > 170 deg) the velocity and the
+// friction stay within that angle of it all period: drawn in the plane, every arrow of Fig. 4's left panel
+// (and of the app's why panel) would lie on one line, hiding the others. That panel then draws their
+// components along v_b at the instants tau = k pi/4 one above the other, up a time axis (figure_panels.cpp).
+inline constexpr double kMechanismParallelDeg = 10;
+inline bool mechanism_parallel(double theta) { // radians
+    return std::abs(std::sin(theta)) < std::sin(kMechanismParallelDeg * kPi / 180);
+}
 
 // One curve per exponent i.
 struct DahlCurvesFigure {

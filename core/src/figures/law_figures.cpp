@@ -25,9 +25,18 @@ FigureSpec fig4(double zeta, double theta_deg) {
         "so its component against v_b, −F_x (Eq. 3), averages to r_x F_c = " +
         format_number("%.4f", r.rx) +
         " F_c < F_c (Eq. 9); the mean friction is −(r_x, r_y) F_c with r_y = " + format_number("%.4f", r.ry) +
-        ". Left: v/v_v (blue) and F/F_c (vermillion) at τ = kπ/4, k = 0…4 (τ and 2π − τ have the same "
-        "velocity), the loci over the whole period and the mean friction (black); right: −F_x/F_c over the "
-        "period with its mean r_x, the dots at τ = kπ/4.";
+        ". " +
+        (mechanism_parallel(theta_deg * kDeg)
+             ? std::string(
+                   "Left (θ within 10° of the sliding line, where every arrow would lie on one line): "
+                   "the components along v_b of v/v_v (blue, above each row) and F/F_c (vermillion, "
+                   "below it) at τ = kπ/4, k = 0…8, one row per instant up a time axis, with their "
+                   "loci over the period, the instants where v_x = 0 (dotted) and the mean friction "
+                   "(black)")
+             : std::string("Left: v/v_v (blue) and F/F_c (vermillion) at τ = kπ/4, k = 0…4 (τ and 2π − τ "
+                           "have the same velocity), the loci over the whole period and the mean friction "
+                           "(black)")) +
+        "; right: −F_x/F_c over the period with its mean r_x, the dots at τ = kπ/4.";
     return f;
 }
 
