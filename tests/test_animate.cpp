@@ -237,6 +237,8 @@ TEST_CASE("render --lesson N: the step's picture in every format, its JSON from 
              Case{"--lesson 3 --size 100x100 --out " + dir, "320"},
              Case{"--lesson 3 --out " + dir + "/missing", "does not exist"},
              Case{"--lesson 3", "--out"},
+             Case{"--lesson 3 --page a4 --format pdf --out " + dir, "not with --lesson"},
+             Case{"--lesson 3 --caption --out " + dir, "not with --lesson"},
          }) {
         const Run r = render(c.args);
         INFO(c.args << " -> " << r.err);

@@ -76,7 +76,10 @@ TEST_CASE("FigureRenderer: PNG of size pixels, SVG and PDF pages of size / scale
     const std::string pdf = renderer.render(fig6, PictureFormat::pdf);
     CHECK(pdf.rfind("%PDF-", 0) == 0);
     CHECK_THAT(pdf, Catch::Contains("MediaBox [ 0 0 640 400 ]"));
-    // The renderer is reused: the same figure again gives the same bytes.
+    // The renderer is reused: the same figure again gives the same bytes. For the SVG too, although cairo
+    // names its groups after a count of the surfaces the process created (the PDF above made some more).
     CHECK(renderer.render(fig6, PictureFormat::png) == png);
+    CHECK(renderer.render(fig6, PictureFormat::svg) == svg);
+    CHECK_THAT(svg, Catch::Contains("id=\"surface1\""));
     CHECK(std::string(fv::app::to_string(PictureFormat::pdf)) == "pdf");
 }

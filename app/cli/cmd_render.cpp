@@ -240,6 +240,12 @@ Command add_render_command(CLI::App& root) {
             if (a->lesson > 0) {
                 if (a->out.empty())
                     throw UsageError("--out is required: the directory to write the picture into");
+                // Not silently dropped: the lesson's still is a frame of its animation, laid out at --size.
+                if (!a->page.empty() || a->caption)
+                    throw UsageError(std::string(a->caption ? "--caption" : "--page") +
+                                     ": not with --lesson (its still is an animation frame at --size, with "
+                                     "the step's text in lesson-N.json); allowed with --lesson: --out, "
+                                     "--size, --scale, --format");
                 render_lesson(a->lesson, a->out, parse_size(a->size), a->output);
                 return;
             }

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The app's page fits every window (issue #23): opened in headless Chromium at a Chromebook's 1024 x 640, a
-# desktop's 1920 x 1080 at devicePixelRatio 1 and 2, and a phone's 390 x 844 at 3, the layout the page
+# The app's page fits every window: opened in headless Chromium at a laptop's 1280 x 800, a Chromebook's 1024 x 640, a
+# desktop's 1920 x 1080 at devicePixelRatio 1 and 2, and phones' 390 x 844 at 3 and 360 x 640 at 2, the layout the page
 # publishes must pass tests/web/page_fits.py (canvas = window, backing store = CSS size x ratio, every panel
 # inside the page and large enough, the panel on top on the phone). Headless Chromium's viewport is shorter
 # than its --window-size (tests/web/screenshot.sh): a first page measures by how much, and each size is then
@@ -24,7 +24,7 @@ vp=$(grep -o 'data-viewport="[0-9]*x[0-9]*"' "$out/viewport.html" | grep -o '[0-
 dw=$((1024 - ${vp%x*})) dh=$((640 - ${vp#*x}))
 echo "headless Chromium's viewport at a 1024x640 window: $vp; windows are opened ${dw}x${dh} larger"
 link="?zeta=0.45&theta=30&rdisp=8&i=0&model=dahl"
-for size in 1024x640@1 1920x1080@1 1920x1080@2 390x844@3; do
+for size in 1280x800@1 1024x640@1 1920x1080@1 1920x1080@2 390x844@3 360x640@2; do
   w=${size%%x*} rest=${size#*x}
   h=${rest%@*} dpr=${size#*@}
   page=index.html ww=$((w + dw))

@@ -10,11 +10,13 @@
 #include FT_FREETYPE_H
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -378,6 +380,39 @@ std::string xml_text(const std::string& s) {
     return out;
 }
 
+// cairo 1.16 names an SVG's <g id="surfaceN"> and <image id="imageN"> after process-wide counters of the
+// surfaces created, so the same figure got surface1 or surface10 depending on what other threads (the PNG
+// encoders, another figure) had created first. Renumbered here in order of first appearance, so that the same
+// figure is the same bytes (the ids are only referenced within the document: "#imageN").
+std::string stable_svg_ids(const std::string& svg) {
+    std::string out;
+    out.reserve(svg.size());
+    std::map<std::string, int> renamed[2];
+    const char* const kinds[2] = {"surface", "image"};
+    std::size_t k = 0;
+    while (k < svg.size()) {
+        bool done = false;
+        for (int t = 0; t < 2 && !done; ++t) {
+            const std::string kind = kinds[t];
+            for (const char* lead : {"id=\"", "#"}) {
+                const std::string head = std::string(lead) + kind;
+                if (svg.compare(k, head.size(), head) != 0) continue;
+                std::size_t e = k + head.size();
+                while (e < svg.size() && std::isdigit(static_cast<unsigned char>(svg[e]))) ++e;
+                if (e == k + head.size()) continue;
+                const std::string old = svg.substr(k + head.size(), e - k - head.size());
+                const auto it = renamed[t].emplace(old, static_cast<int>(renamed[t].size()) + 1).first;
+                out += head + std::to_string(it->second);
+                k = e;
+                done = true;
+                break;
+            }
+        }
+        if (!done) out += svg[k++];
+    }
+    return out;
+}
+
 } // namespace
 
 std::string render_vector(const DisplayList& list, VectorFormat format, const VectorPage& page) {
@@ -435,6 +470,7 @@ std::string render_vector(const DisplayList& list, VectorFormat format, const Ve
     cairo_surface_destroy(s);
     if (st != CAIRO_STATUS_SUCCESS)
         throw std::runtime_error(std::string("cairo: ") + cairo_status_to_string(st));
+    if (format == VectorFormat::Svg) out = stable_svg_ids(out);
     if (format == VectorFormat::Svg && !page.caption.empty()) {
         // The caption as text a reader (or a search) finds: SVG's <desc>, right after the root's start tag.
         const std::size_t root = out.find("<svg");

@@ -498,14 +498,16 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     int creep_skips = 0;
     while (static_cast<int>(xs.size()) <= kFollowPeriods) {
         Vec2 before = x;
-        PeriodResult last;
+        int creep_run = 0; // creep periods in a row at the chunk's end
         for (int j = 0; j < chunk; ++j) {
             before = x;
+            PeriodResult last;
             if (!advance(s, x, rq_state, &last)) {
                 st.status = SteadyStatus::integration_failed;
                 st.failure = "the integrator could not continue";
                 return out;
             }
+            creep_run = creep_period(m, before, last) ? creep_run + 1 : 0;
             xs.push_back(x);
         }
         out.periods += chunk;
@@ -542,10 +544,12 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         // A slow creep towards the circle (i > 1), where Newton's method from the chunk's end (above) found
         // no state the motion reaches: skipped to a few periods before the motion leaves it
         // (creep_skip.hpp), and followed from there.
-        if (creep_skips < kMaxCreepSkips && creep_period(m, before, last)) {
+        // Only a creep of several periods in a row: a period-k orbit may have a creep period among its k.
+        // A skip of a few periods is not taken (the motion is followed on as it is).
+        if (creep_skips < kMaxCreepSkips && creep_run >= kMinCreepRun) {
             const CreepSkip cs = skip_creep(s, before, x);
             out.periods += cs.periods;
-            if (cs.skipped > 0) {
+            if (cs.skipped >= kMinCreepSkip) {
                 ++creep_skips;
                 out.skipped += cs.skipped;
                 x = cs.x;

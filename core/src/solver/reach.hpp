@@ -60,6 +60,9 @@ inline constexpr int kWindowPeriods = 1000;
 inline constexpr int kWindowBatches = 20;
 // Slow creeps skipped per start (each followed again from where its skip ends).
 inline constexpr int kMaxCreepSkips = 2;
+// A skip is tried after this many creep periods in a row, and taken when it projects at least kMinCreepSkip.
+inline constexpr int kMinCreepRun = 4;
+inline constexpr double kMinCreepSkip = 16;
 
 // One period of the motion from l (force units). For i = 0 a whole stuck period is a translation: the
 // motion is skipped to its first slip in closed form and that period finished (a later section of the
