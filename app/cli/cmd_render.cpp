@@ -391,7 +391,10 @@ Command add_render_command(CLI::App& root) {
                 std::string line = "wrote " + dir + "/" + written + ".";
                 for (const std::string& ext : a->output.extensions())
                     line += (ext == a->output.extensions().front() ? "" : ", .") + ext;
-                std::printf("%s (%dx%d), its CSV and %s.json\n", line.c_str(), sz.w, sz.h, written.c_str());
+                // The PNG's pixels; with --page the SVG/PDF are on that sheet, not at --size.
+                const std::string sheet = a->page.empty() ? "" : "; SVG/PDF: page " + a->page;
+                std::printf("%s (%dx%d%s), its CSV and %s.json\n", line.c_str(), sz.w, sz.h, sheet.c_str(),
+                            written.c_str());
             };
             const std::size_t nfigures = specs.size();
             const app::RenderOutcome r = app::render_figures(*session, specs, job);

@@ -71,7 +71,9 @@ PrintLayout print_layout(PaperPage paper, float width, float height, bool captio
     const float page_w = column ? kColumnW : (paper == PaperPage::a4 ? kA4W : kLetterW);
     const float margin = column ? 0 : kPaperMargin;
     l.logical.x = (page_w - 2 * margin) / scale;
-    l.logical.y = l.logical.x * (column ? 0.75f : height / width);
+    // A portrait sheet has height to spare: the figure gets at least 3/4 of its width, so that a figure of
+    // two panels (fig4's rows of arrows up a time axis) is not squeezed to a wide screen's aspect.
+    l.logical.y = l.logical.x * (column ? 0.75f : std::max(0.75f, height / width));
     l.text_factor = 1; // full-size text on a page smaller than 640 units: it prints at `type`
     l.vector.scale = scale;
     l.vector.origin = {margin, column ? 0 : margin};
