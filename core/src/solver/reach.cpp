@@ -78,8 +78,13 @@ double angle_between(const Vec2& a, const Vec2& b) {
 // slow direction at y) the push said the same at zeta 0.1548, theta 83 deg, rdisp 0.1, i = 5 for the motion
 // from sliding, which stays on the circle: w there is nearly across the segment, and the motion along the
 // circle showed as a push towards the state from rest (0.3259; the motion reaches 0.9975).
+// Towards a state on the circle (i > 1), a sample whose period is a creep period (inside, no law change,
+// v > 0) moves outwards by the law itself (Eq. (16): rho' = r v (1 - rho)^i > 0), however little: next to the
+// circle the push falls below the rounding of l (rdisp 1e-8, i = 10: 1e-17 at rho = 0.875) and its measured
+// sign says nothing, so such samples count as pushing towards it (the circle's own law then contracts the
+// angle onto the state's, DPhi = exp(-r int v) < 1).
 bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, const Eigen::RowVector2d& w,
-                    int& periods) {
+                    bool circle_state, int& periods) {
     const PeriodRequest rq = state_only(s);
     const Vec2 d = y - x;
     const double wd = w.dot(d); // the push along w must have its sign (none where w is across the segment)
@@ -90,8 +95,10 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
     const bool across = std::abs(wd) <= 1e-9 * w.norm() * d.norm();
     auto towards = [&](const Vec2& z) {
         Vec2 z1 = z;
-        const bool ok = advance_k(s, z1, k, rq);
+        PeriodResult pr;
+        const bool ok = k == 1 ? advance(s, z1, rq, &pr) : advance_k(s, z1, k, rq);
         periods += k;
+        if (ok && circle_state && k == 1 && creep_period(*s.m, z, pr)) return true;
         return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > 0;
     };
     if (!towards(x)) return false;
@@ -362,7 +369,7 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
         const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
         w = Vinv.row(slow).real();
     }
-    return pushes_towards(s, x, y, k, w, periods);
+    return pushes_towards(s, x, y, k, w, circle_state, periods);
 }
 
 Orbit orbit_of(const ReachSetup& s, const Verified& v) {
