@@ -25,7 +25,8 @@ std::string session_link(const SessionState& s) {
     for (const PinnedCurve& p : s.pins)
         if (p.source) pins.push_back(*p.source);
     if (!pins.empty()) view.pins = std::move(pins);
-    return share_link(s.model, s.params, s.start, s.view.frame) + view_link_keys(view);
+    return share_link(s.model, s.params, s.start, s.view.frame) +
+           (s.compare ? compare_link_keys(s.b.model, s.b.params, s.b.start) : "") + view_link_keys(view);
 }
 
 std::string share_address(const ShareAddress& where, const SessionState& s) {
@@ -40,6 +41,12 @@ std::size_t pins_not_in_link(const SessionState& s) {
 
 void apply_link(const ShareLink& link, Session& s) {
     apply_share_link(link, s.model, s.params, s.start, s.view.frame);
+    // Any of B's keys: compare mode, B from A (as the link left it) at the other angle, then B's keys.
+    if (link.b.any()) {
+        s.compare = true;
+        s.b = compare_default(s.a());
+        apply_share_link(link.b, s.b.model, s.b.params, s.b.start);
+    }
     if (link.panel) s.panel = *link.panel;
     if (link.presentation) s.presentation = *link.presentation;
     if (link.speed) s.speed = *link.speed;
