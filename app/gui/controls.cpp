@@ -131,16 +131,17 @@ ImVec4 setup_colour(bool b) {
     return ImVec4(c.r, c.g, c.b, 1);
 }
 
-// Compare mode: its switch, and which setup the controls below edit, in the setups' colours.
+// Compare mode (turned on from the View menu or with C): its switch, and which setup the controls below
+// edit, in the setups' colours. Only while it is on: the panel keeps its rows otherwise.
 UiEdits draw_compare_controls(const UiState& ui) {
     UiEdits e;
+    if (!ui.session.compare) return e;
     bool compare = ui.session.compare;
     if (ImGui::Checkbox("Compare A | B [C]", &compare)) e.compare = compare;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Two setups side by side on one time base: A (blue) and B (orange), two top views, "
                           "both force traces and both r_x points. Turned on, B is A at the other angle "
                           "(θ = 90°, or 0° when A is at 90°).");
-    if (!ui.session.compare) return e;
     ImGui::SameLine();
     ImGui::TextUnformatted("edit:");
     for (const bool b : {false, true}) {
@@ -349,6 +350,11 @@ void draw_readouts(const UiState& ui, const LiveSim& sim, const std::optional<Ra
     ImGui::Separator();
     // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
     const SimMoment now = moment_at(sim, ui.session.view.rewind);
+    // In compare mode these are A's (B's r_x is in the ratio plot's title).
+    if (ui.session.compare) {
+        ImGui::TextColored(setup_colour(false), "A:");
+        ImGui::SameLine();
+    }
     if (sim.model() == Model::rigid)
         ImGui::Text("Now  τ/2π %.2f   rigid: F = F_c against v", now.tau / (2 * kPi));
     else
