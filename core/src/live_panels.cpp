@@ -316,11 +316,15 @@ SeriesData period_mean_series(const LiveSim& sim, double t0, double t1, std::siz
 // The steady r_x of `curves` across [t0, t1] when they are the simulation's (their value is in the panel
 // and the ratio plot's title: the legend's rows above the axes stay short).
 void add_steady_line(PanelData& panel, const LiveSim& sim, const RatioCurves* curves, double t0, double t1,
-                     const std::string& prefix, Ink ink) {
+                     Ink ink) {
     if (!curves || curves->request.params.zeta != sim.params().zeta) return;
-    panel.series.push_back(
-        hline(prefix + "steady r_{x}" + (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"), t0, t1,
-              curves->current.rx, ink, Dash::dotted));
+    // Unlabelled in a setup's colour (compare mode names the kind of line once, in black), unless unverified.
+    const bool verified = ok(shown_status(curves->current));
+    const std::string label = ink == Ink::rigid
+                                  ? std::string("steady r_{x}") + (verified ? "" : " (NOT VERIFIED)")
+                              : verified ? ""
+                                         : "steady r_{x} NOT VERIFIED";
+    panel.series.push_back(hline(label, t0, t1, curves->current.rx, ink, Dash::dotted));
 }
 
 // One setup's F_x over [t0, t1], for compare mode.
@@ -353,12 +357,15 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         // Compare mode: the two setups on one time base, A in blue and B in orange.
         const std::size_t stride_b = stride_for(b.sim->history().size(), 400);
         panel.title = "friction force along v_{b}: A and B, last periods";
+        // Four legend entries, not six: the setups by colour, the kinds of line by dash.
         panel.series.push_back(fx_series(sim, t0, t1, stride, "A: F_{x}", Ink::body));
         panel.series.push_back(fx_series(*b.sim, t0, t1, stride_b, "B: F_{x}", Ink::setup_b));
-        panel.series.push_back(period_mean_series(sim, t0, t1, stride, "A: period mean", Ink::body));
-        panel.series.push_back(period_mean_series(*b.sim, t0, t1, stride_b, "B: period mean", Ink::setup_b));
-        add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, "A: ", Ink::body);
-        add_steady_line(panel, *b.sim, b.curves, t0, t1, "B: ", Ink::setup_b);
+        panel.series.push_back(period_mean_series(sim, t0, t1, stride, "", Ink::body));
+        panel.series.push_back(period_mean_series(*b.sim, t0, t1, stride_b, "", Ink::setup_b));
+        add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, Ink::body);
+        add_steady_line(panel, *b.sim, b.curves, t0, t1, Ink::setup_b);
+        panel.series.push_back(key("period mean", Ink::black, 1.6f, 1, Dash::dashed));
+        panel.series.push_back(key("steady r_{x}", Ink::black, 1.5f, 1, Dash::dotted));
         return panel;
     }
     scene::ForceCurves f;
@@ -384,7 +391,7 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     }
     SeriesData run = period_mean_series(sim, t0, t1, stride, "period mean F_{x}", Ink::black);
     if (!run.x.empty()) panel.series.push_back(std::move(run));
-    add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, "", Ink::rigid);
+    add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, Ink::rigid);
     return panel;
 }
 
@@ -397,22 +404,31 @@ double ratio_zeta_max(const MeasurementSet* data) {
 
 namespace {
 
-// A curve's legend entry: the model and what it was computed at; `prefix` names the setup in compare mode
-// (which then also gives the angle, the two setups' usual difference).
-std::string curve_label(const RatioCurves& c, const std::string& prefix) {
+// A curve's legend entry: the model and what it was computed at. Compare mode (`other`: the other setup's
+// curves, or null while they compute) names the setup (`prefix`) and its angle, the two setups' usual
+// difference, and r_disp and i only where they differ from the other's: the legend stays short enough to
+// leave the r_x points free on a small plot.
+std::string curve_label(const RatioCurves& c, const std::string& prefix = "",
+                        const RatioCurves* other = nullptr) {
     const Params& p = c.request.params;
-    const std::string angle = prefix.empty() ? ""
-                                             : "θ = " + format_number("%.0f°", p.theta * 180 / kPi) +
-                                                   (c.model_rx.empty() ? "" : ", ");
-    if (c.model_rx.empty()) return prefix + "rigid, " + angle;
-    return prefix + "Dahl, " + angle + "i = " + format_number("%g", p.i) +
-           ", r_{disp} = " + format_number("%.3g", p.rdisp) +
-           (c.model_failed > 0 ? " (" + std::to_string(c.model_failed) + " failed points not drawn)" : "");
+    const bool rigid = c.model_rx.empty();
+    const std::string failed =
+        c.model_failed > 0 ? " (" + std::to_string(c.model_failed) + " failed points not drawn)" : "";
+    if (prefix.empty())
+        return "Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp) +
+               failed;
+    std::string s =
+        prefix + (rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.0f°", p.theta * 180 / kPi);
+    if (rigid) return s;
+    const Params* q = other && !other->model_rx.empty() ? &other->request.params : nullptr;
+    if (!q || q->i != p.i) s += ", i = " + format_number("%g", p.i);
+    if (!q || q->rdisp != p.rdisp) s += ", r_{disp} = " + format_number("%.3g", p.rdisp);
+    return s + failed;
 }
 
 // Compare mode's setup B on the ratio plot: its curve (the Dahl model's, or the rigid one for the rigid
 // model) and its steady r_x point in orange, and its r_x in the title beside A's.
-void add_compare_curve(PanelData& panel, const CompareOverlay& b) {
+void add_compare_curve(PanelData& panel, const CompareOverlay& b, const RatioCurves& a) {
     if (!b.curves) {
         panel.title += "   B: computing…";
         return;
@@ -424,7 +440,7 @@ void add_compare_curve(PanelData& panel, const CompareOverlay& b) {
                    (c.request.start == Start::sliding ? "  from sliding" : "") +
                    (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
     const bool rigid = c.model_rx.empty();
-    panel.series.push_back({curve_label(c, "B: "), c.zetas, rigid ? c.rigid_rx : c.model_rx, Ink::setup_b,
+    panel.series.push_back({curve_label(c, "B: ", &a), c.zetas, rigid ? c.rigid_rx : c.model_rx, Ink::setup_b,
                             rigid ? Dash::dashed : Dash::solid, Mark::none, 2.2f});
     panel.points.push_back({Vec2(c.request.params.zeta, c.current.rx), Ink::setup_b,
                             ok(st) ? Mark::diamond : Mark::cross, "B", 12});
@@ -463,8 +479,8 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
                   (curves->request.start == Start::sliding ? "  from sliding" : "") +
                   (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
     if (!curves->model_rx.empty())
-        panel.series.push_back({curve_label(*curves, compare ? "A: " : ""), curves->zetas, curves->model_rx,
-                                Ink::body, Dash::solid, Mark::none, 2.2f});
+        panel.series.push_back({curve_label(*curves, compare ? "A: " : "", overlay.b.curves), curves->zetas,
+                                curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(scene::rigid_curve(curves->zetas, curves->rigid_rx));
     if (compare) {
         // The rigid curve at A's angle: A's own curve (blue) for the rigid model, else its reference.
@@ -496,7 +512,7 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
             point.label_dy = s.rx > mid ? 1 : -1;
         }
     }
-    if (compare) add_compare_curve(panel, overlay.b);
+    if (compare) add_compare_curve(panel, overlay.b, *curves);
     return panel;
 }
 
