@@ -114,7 +114,7 @@ TEST_CASE("compare: turned on at the sync point, B beside A on one time base, B'
     CHECK_FALSE(a.ui().editing_b);
 }
 
-TEST_CASE("compare: B goes through the share link and back, bit for bit; b.* keys turn compare on",
+TEST_CASE("compare: B goes through the share link and back, bit for bit, and b.* keys turn compare on",
           "[compare]") {
     Session s;
     s.params = Params{0.3, 60 * kPi / 180, 5, 1};
@@ -155,7 +155,8 @@ TEST_CASE("compare: B goes through the share link and back, bit for bit; b.* key
     CHECK(refusal("?b.frame=ground").rfind("column 2: unknown key 'b.frame'; allowed: ", 0) == 0);
 }
 
-TEST_CASE("compare: B goes through the session file and back; a bad B is refused where it is", "[compare]") {
+TEST_CASE("compare: B goes through the session file and back, and a bad B is refused where it is",
+          "[compare]") {
     Session s;
     s.compare = true;
     s.b = Setup{Model::dahl, Params{0.45, 20 * kPi / 180, 7, 0.5}, Start::sliding};
@@ -192,7 +193,7 @@ TEST_CASE("compare: B goes through the session file and back; a bad B is refused
           "b.json:1:27: compare: expected an object {\"theta\": 0, ..} (setup B) or null, got a number");
 }
 
-TEST_CASE("compare: the script turns it on and sets B; checked when loaded", "[compare][script]") {
+TEST_CASE("compare: the script turns it on and sets B, checked when loaded", "[compare][script]") {
     char tmpl[] = "/tmp/fv-compare-XXXXXX";
     const std::string dir = ::mkdtemp(tmpl);
     const std::string path = dir + "/c.txt";

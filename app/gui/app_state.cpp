@@ -271,13 +271,13 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
 
 bool AppState::sync_compare(const UiEdits& e, bool& restart) {
     SessionState& s = ui_.session;
-    bool changed = false;
+    bool changed = false, turned_on = false;
     if (e.compare && *e.compare != s.compare) {
         s.compare = *e.compare;
         if (s.compare) {
             // B starts beside A (after this frame's edits of A) at the other angle, both from tau = 0.
             s.b = compare_default(s.a());
-            changed = restart = true;
+            changed = restart = turned_on = true;
             ui_.status = "compare: setup B beside A";
         } else {
             ui_.editing_b = false;
@@ -299,6 +299,8 @@ bool AppState::sync_compare(const UiEdits& e, bool& restart) {
             ui_.status = "setup B: " + err;
     }
     if (e.editing_b) ui_.editing_b = *e.editing_b && s.compare;
+    // B's view appears in its own frame at once (easing is for a frame on screen that changes).
+    if (turned_on) b_.retarget_frame(s.b, s.view.trail_periods, view_aspect_, true);
     return changed && s.compare;
 }
 
