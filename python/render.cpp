@@ -16,6 +16,7 @@
 
 #include <mutex>
 #include <string>
+#include <vector>
 
 namespace py = pybind11;
 
@@ -55,6 +56,7 @@ py::tuple render(const std::string& spec_text, bool example, int width, int heig
     const std::string parameters =
         fv::app::parameters_json(*spec.entry, spec.inputs, width, height, scale, formats);
     std::string bytes, title, caption;
+    std::vector<fv::app::FigureTableFile> tables;
     {
         py::gil_scoped_release unlocked;
         std::string error;
@@ -73,6 +75,7 @@ py::tuple render(const std::string& spec_text, bool example, int width, int heig
         title = fv::plain_text(figure.title);
         caption = figure.caption + " " + fv::figure_parameters(figure);
         const fv::FigureData data = fv::compute_figure(figure);
+        tables = fv::app::figure_tables(data); // the command line's CSV files, byte for byte
         // One GL context at a time: OSMesa's are per thread, and drawing is not the slow part.
         static std::mutex gl;
         std::lock_guard<std::mutex> lock(gl);
@@ -81,7 +84,9 @@ py::tuple render(const std::string& spec_text, bool example, int width, int heig
                                       : format == "svg" ? fv::app::PictureFormat::svg
                                                         : fv::app::PictureFormat::pdf);
     }
-    return py::make_tuple(py::bytes(bytes), title, caption, parameters);
+    py::list csv;
+    for (const fv::app::FigureTableFile& t : tables) csv.append(py::make_tuple(t.name, t.csv));
+    return py::make_tuple(py::bytes(bytes), title, caption, parameters, csv);
 }
 
 } // namespace fvpy

@@ -41,11 +41,17 @@ RUN = [
     ("docs/cli.md", "mkdir -p out"),
     ("docs/cli.md", "frictionviz render --figure fig10,fig14 --out out/"),
     ("docs/cli.md", "frictionviz render --figure map --rdisp 5 --i 0 --format png,pdf --out out/"),
+    ("docs/cli.md", "frictionviz render --figure map --rdisp 1,10 --model dahl,rigid --out out/"),
     ("docs/cli.md", "frictionviz render --figure fig19 --data tests/data/synthetic_two_angles_rdisp2_i0.csv "
                     "--amplitude 0.7 --out out/"),
     ("docs/cli.md", "frictionviz render --figure rx --theta 30,60 --rdisp 1,10 --i 0.5 --zeta 0.02:2 --size 640x400 "
                     "--out out/"),
     ("docs/cli.md", "frictionviz render --spec out/rx.json --format pdf --out out/"),
+    ("docs/cli.md", "frictionviz render --lesson 3 --format png,pdf --out out/"),
+    ("docs/teaching.md", "frictionviz animate --lesson 2 --out along.gif"),
+    ("docs/teaching.md", "frictionviz animate --lesson 3 --out across.gif"),
+    ("docs/teaching.md", "mkdir -p handout"),
+    ("docs/teaching.md", "frictionviz render --lesson 5 --format png,pdf --out handout/"),
     ("docs/cli.md", "frictionviz animate --zeta 0.3 --theta 60 --rdisp 2 --i 1 --out loop.gif"),
     ("docs/cli.md", "frictionviz animate --zeta 0.15 --theta 90 --rdisp 2 --i 0 --view scene --size 1920x1200 "
                     "--scale 2 --out loop.mp4"),
@@ -85,7 +91,14 @@ NOT_RUN = [
      "rewrites the snapshot baselines in tests/snapshots/"),
     ("docs/web.md", "./scripts/build-web.sh [OUTDIR]",
      "run by the web_build test (label web); OUTDIR is a placeholder"),
-    ("docs/web.md", "./scripts/serve-web.sh [--classroom] [SITE_DIR] [PORT]",
+    ("docs/teaching.md", "./scripts/build-web.sh && ./scripts/serve-web.sh --lan",
+     "build-web.sh is run by the web_build test (label web); serve-web.sh serves until Ctrl-C"),
+    ("docs/teaching.md", "frictionviz gui --link-base http://192.168.1.20:8000/ --lesson 1",
+     "opens the app's window (gui_* tests run it headless; a --link-base is checked by fv_gui_tests)"),
+    # compare: Compare (setup B, animate --view compare) is built on another branch; move this to RUN once merged.
+    ("docs/teaching.md", "frictionviz animate --lesson 3 --view compare --out compare.gif",
+     "animate --view compare comes with the Compare branch (issue #23); run it once that is merged"),
+    ("docs/web.md", "./scripts/serve-web.sh [--lan] [SITE_DIR] [PORT]",
      "a web server that runs until Ctrl-C"),
 ]
 

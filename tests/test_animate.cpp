@@ -1,11 +1,14 @@
 // frictionviz animate through the real executable: the GIF and the MP4 decoded back
 // (frame count = periods x frames per period, size, frames differ, GIF loops, MP4 is H.264 in yuv420p), the
 // loop is seamless (the picture repeats every period and the step from the last frame to the first is like
-// any other), and bad input exits 2 with one line, nothing written, an existing file untouched.
+// any other), and bad input exits 2 with one line, nothing written, an existing file untouched. Also `render
+// --lesson N`, which draws the first frame of `animate --lesson N` as a picture.
 #include "tools/anim_decode.hpp"
+#include "tools/image_files.hpp"
 #include "tools/run_command.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdlib>
@@ -182,4 +185,70 @@ TEST_CASE("app: File > Export animation (the script's animate) writes the loop i
     // LeakSanitizer looks; tests/CMakeLists.txt says why); harmless otherwise.
     if (std::system("command -v xvfb-run >/dev/null 2>&1") == 0)
         check("ASAN_OPTIONS=detect_leaks=0:halt_on_error=1 xvfb-run -a", "window");
+}
+
+TEST_CASE("render --lesson N: the step's picture in every format, its JSON from the lessons file, bad input "
+          "exits 2 with nothing written",
+          "[animate][cli][lessons]") {
+    const auto render = [](const std::string& args) {
+        return fv::test::run_command(std::string(FV_EXE) + " render " + args, root());
+    };
+    const std::string dir = root() + "/lesson";
+    REQUIRE(std::system(("mkdir -p " + dir).c_str()) == 0);
+    const Run ok = render("--lesson 5 --format png,svg,pdf --size 640x400 --out " + dir);
+    INFO(ok.err);
+    REQUIRE(ok.code == 0);
+    const fv::gfx::Image png = fv::test::load_png(dir + "/lesson-5.png");
+    CHECK(png.width == 640);
+    CHECK(png.height == 400);
+    // Drawn, not blank: a white page with lines and text in the scheme's colours.
+    std::size_t ink = 0;
+    for (std::size_t k = 0; k + 3 < png.rgba.size(); k += 4)
+        ink += png.rgba[k] < 200 || png.rgba[k + 1] < 200 || png.rgba[k + 2] < 200;
+    CHECK(ink > png.rgba.size() / 4 / 50);
+    CHECK(slurp(dir + "/lesson-5.svg").find("<svg") != std::string::npos);
+    CHECK(slurp(dir + "/lesson-5.pdf").rfind("%PDF-", 0) == 0);
+    // The JSON names the step as the lessons file has it, and the link that opens it.
+    const auto lessons = nlohmann::json::parse(slurp(FV_LESSONS_JSON));
+    const auto& step = lessons["steps"][4];
+    const auto j = nlohmann::json::parse(slurp(dir + "/lesson-5.json"));
+    CHECK(j["title"] == "Lesson 5: " + step["title"].get<std::string>());
+    CHECK(j["caption"] == step["text"]);
+    CHECK(j["link"] == "?lesson=5");
+    const std::string setup = j["setup"];
+    CHECK(setup.find("model=" + step["setup"]["model"].get<std::string>()) != std::string::npos);
+    CHECK(setup.find("&frame=ground") != std::string::npos); // step 5 stands on the ground
+    CHECK(j["files"] ==
+          nlohmann::json::array({"lesson-5.png", "lesson-5.svg", "lesson-5.pdf", "lesson-5.json"}));
+
+    const std::string steps = "[1, " + std::to_string(lessons["steps"].size()) + "]";
+    std::ofstream(dir + "/lesson-3.png") << "keep";
+    struct Case {
+        std::string args;
+        const char* says;
+    };
+    for (const Case& c : {
+             Case{"--lesson 99 --out " + dir, steps.c_str()},
+             Case{"--lesson x --out " + dir, steps.c_str()},
+             Case{"--lesson 0 --out " + dir, steps.c_str()},
+             Case{"--lesson 3 --figure scene --out " + dir, "--figure"},
+             Case{"--lesson 3 --zeta 0.3 --out " + dir, "--zeta"},
+             Case{"--lesson 3 --format bmp --out " + dir, "png"},
+             Case{"--lesson 3 --size 100x100 --out " + dir, "320"},
+             Case{"--lesson 3 --out " + dir + "/missing", "does not exist"},
+             Case{"--lesson 3", "--out"},
+         }) {
+        const Run r = render(c.args);
+        INFO(c.args << " -> " << r.err);
+        CHECK(r.code == 2);
+        CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+        CHECK(r.err.find(c.says) != std::string::npos);
+        CHECK(slurp(dir + "/lesson-3.png") == "keep");
+        CHECK(::access((dir + "/lesson-3.json").c_str(), F_OK) != 0);
+    }
+    // A directory where a file of it goes: refused before anything is drawn or written.
+    REQUIRE(std::system(("mkdir -p " + dir + "/lesson-3.json").c_str()) == 0);
+    const Run blocked = render("--lesson 3 --out " + dir);
+    CHECK(blocked.code == 2);
+    CHECK(slurp(dir + "/lesson-3.png") == "keep");
 }

@@ -658,7 +658,9 @@ TEST_CASE("CLI spec: a bad spec file is a one-line usage error naming the key an
              Case{R"({"id": "rx", "zeta": [1]})", "zeta: expected a range [FROM, TO]"},
              Case{R"({"id": "rx", "model": ["dahl", "soft"]})", "'soft' is not a model"},
              Case{R"({"id": "rx", "theta": [10, 20, 30], "rdisp": [1, 2, 3], "i": [0, 1]})", "at most 12"},
-             Case{R"({"id": "map", "rdisp": [1, 2]})", "rdisp has 2 values; map takes one"},
+             Case{R"({"id": "map", "rdisp": [1, 2, 1]})", "rdisp has 1 twice"},
+             Case{R"({"id": "map", "rdisp": [1, 2, 3], "i": [0.5, 1], "model": ["dahl", "rigid"]})",
+                  "r_disp 3 × i 2 = 6 Dahl maps + 1 rigid = 7 maps; allowed: at most 6 maps"},
              Case{R"({"id": "map", "start": "later"})", "'later' is not a start; allowed: rest, sliding"},
              Case{R"({"id": "fig5", "size": [10, 10]})", "size"},
              Case{R"({"id": "fig5", "size": "big"})", "size"},
@@ -713,7 +715,10 @@ TEST_CASE("CLI families: lists of rx, ry and map through core's reader, one-line
              Case{"--figure rx --theta 10,20,30 --rdisp 1,2,3 --i 0,1", "= 21 curves; allowed: at most 12"},
              Case{"--figure rx --zeta 0.5", "--zeta has"},
              Case{"--figure ry --theta 10,20,30,40,50,60,70", "at most 12"},
-             Case{"--figure map --rdisp 1,2", "--rdisp has 2 values; map takes one (lists: rx, ry)"},
+             Case{"--figure map --rdisp 1,2,3 --i 0.5,1,2",
+                  "r_disp 3 × i 3 = 9 Dahl maps = 9 maps; allowed: at most 6 maps in one figure"},
+             Case{"--figure map --rdisp 1,2,1", "1 twice (items 1 and 3)"},
+             Case{"--figure map --rdisp 1,2 --zss 0.3 --amplitude 1", "--rdisp and --zss"},
              Case{"--figure scene --zeta 0.3 --theta 30,60 --rdisp 2 --i 1", "scene takes one"},
              Case{"--figure scene --zeta 0.1:1 --theta 30 --rdisp 2 --i 1", "scene takes one"},
              Case{"--figure rx --zeta 0.1:1 --vb 1 --amplitude 1 --frequency 1", "--vb"},
@@ -804,6 +809,75 @@ double field(const std::map<std::string, std::string>& row, const std::string& c
 }
 
 } // namespace
+
+// r_x of the rigid model at theta = 0 (Eq. 10): 2/pi asin(zeta) below zeta = 1, 1 above.
+static double rigid_rx_theta0(double zeta) {
+    return zeta < 1 ? 2 / 3.14159265358979323846 * std::asin(zeta) : 1.0;
+}
+
+TEST_CASE("CLI: a family of maps (lists of --rdisp, --i, --model): one grid per map in one CSV, the best "
+          "angles with the inputs that vary, ID.json's lists, render --spec byte for byte",
+          "[cli][render][map][family][long]") {
+    const std::string a = scratch_dir() + "/map-family", b = scratch_dir() + "/map-family-spec",
+                      one = scratch_dir() + "/map-family-one";
+    REQUIRE(std::system(("mkdir -p " + a + " " + b + " " + one).c_str()) == 0);
+    const Run r = run("render --figure map --rdisp 1,3 --i 0.5 --model dahl,rigid --size 640x400 --format "
+                      "png,svg --out " +
+                      a);
+    REQUIRE(r.code == 0);
+    // The grid: 3 maps of 200 x 91 cells, Dahl r_disp = 1, then 3, then the rigid model (no r_disp, i).
+    const auto rows = parse_csv(slurp(a + "/map.csv"));
+    REQUIRE(rows.size() == 3 * 200 * 91);
+    CHECK(rows.front().at("model") == "dahl");
+    CHECK(rows.front().at("rdisp") == "1");
+    CHECK(rows.at(200 * 91).at("rdisp") == "3");
+    CHECK(rows.at(200 * 91).at("i") == "0.5");
+    const auto& rigid0 = rows.at(2 * 200 * 91);
+    CHECK(rigid0.at("model") == "rigid");
+    CHECK(rigid0.at("rdisp").empty());
+    CHECK(rigid0.at("i").empty());
+    // The rigid map at theta = 0 against Eq. (10), every zeta of the grid (the first row of that map).
+    for (std::size_t k = 2 * 200 * 91; k < 2 * 200 * 91 + 200; ++k) {
+        const auto& row = rows.at(k);
+        REQUIRE(field(row, "theta_deg") == 0);
+        CHECK(field(row, "r_x") == Approx(rigid_rx_theta0(field(row, "zeta"))).margin(1e-9));
+    }
+    // The best angles: the inputs that vary in front (the model and r_disp; i is the same for all), the
+    // rigid map's own best angle its rigid one.
+    const auto best = parse_csv(slurp(a + "/map-best-angle.csv"));
+    REQUIRE(best.size() == 3 * 200);
+    CHECK(slurp(a + "/map-best-angle.csv").rfind("model,rdisp,zeta,theta_star_deg,r_x_min,", 0) == 0);
+    for (std::size_t k = 400; k < 600; ++k) {
+        CHECK(best[k].at("model") == "rigid");
+        CHECK(best[k].at("rdisp").empty());
+        CHECK(best[k].at("theta_star_deg") == best[k].at("theta_star_rigid_deg"));
+    }
+    // Each Dahl map of the family is the map of its r_disp and i alone.
+    REQUIRE(run("render --figure map --rdisp 3 --i 0.5 --size 640x400 --out " + one).code == 0);
+    const auto alone = parse_csv(slurp(one + "/map.csv"));
+    REQUIRE(alone.size() == 200 * 91);
+    for (std::size_t k = 0; k < alone.size(); k += 97) {
+        CAPTURE(k);
+        CHECK(alone[k] == rows.at(200 * 91 + k));
+    }
+    // ID.json: the lists as lists, the one i as a number (as the map of one r_disp and i has always written).
+    const nlohmann::json j = nlohmann::json::parse(slurp(a + "/map.json"));
+    const nlohmann::json& p = j.at("parameters");
+    CHECK(p.at("rdisp") == nlohmann::json{1.0, 3.0});
+    CHECK(p.at("i") == 0.5);
+    CHECK(p.at("model") == nlohmann::json{"dahl", "rigid"});
+    CHECK(std::string(j.at("caption"))
+              .find("3 maps in 1 × 3 panels on one colour scale: Dahl model, r_disp = 1, 3, i = 0.5") !=
+          std::string::npos);
+    CHECK(std::string(j.at("title")).find("Dahl model (i = 0.5) and rigid model") != std::string::npos);
+    // render --spec map.json: every file again, byte for byte.
+    const Run s = run("render --spec " + a + "/map.json --out " + b);
+    REQUIRE(s.code == 0);
+    for (const std::string& f : j.at("files").get<std::vector<std::string>>()) {
+        CAPTURE(f);
+        CHECK(slurp(b + "/" + f) == slurp(a + "/" + f));
+    }
+}
 
 TEST_CASE(
     "CLI units: ratio with --vb/--amplitude/--frequency/--zss equals ratio with the converted zeta, rdisp",

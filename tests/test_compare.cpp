@@ -6,6 +6,7 @@
 #include "figures/dashboard_painter.hpp"
 #include "figures/render_session.hpp"
 #include "gui/app_state.hpp"
+#include "gui/lessons.hpp"
 #include "gui/screen_layout.hpp"
 #include "gui/script.hpp"
 #include "gui/session.hpp"
@@ -139,6 +140,31 @@ TEST_CASE("compare: B goes through the share link and back, bit for bit, and b.*
     CHECK(one.b.params.theta == 0);
     CHECK(one.b.params.rdisp == 3);
     CHECK(one.b.params.i == 0);
+    // A lesson step's B comes with ?lesson=N, and b.* keys go over it (or over the step's A at the other
+    // angle where the step has none).
+    const LessonStep& mean = *find_lesson_step("mean");
+    int mean_n = 0;
+    while (&lesson_steps()[static_cast<std::size_t>(mean_n)] != &mean) ++mean_n;
+    Session l4;
+    apply_link(parse_link("?lesson=" + std::to_string(mean_n + 1)), l4);
+    CHECK(l4.compare);
+    CHECK(same(l4.b, *mean.setup.b));
+    Session l4z;
+    apply_link(parse_link("?lesson=" + std::to_string(mean_n + 1) + "&b.zeta=0.9"), l4z);
+    CHECK(l4z.b.params.zeta == 0.9);
+    CHECK(l4z.b.params.theta == mean.setup.b->params.theta);
+    const LessonStep& across = *find_lesson_step("across");
+    REQUIRE_FALSE(across.setup.b);
+    Session l3;
+    apply_link(parse_link("?lesson=3&b.theta=0"), l3);
+    CHECK(l3.compare);
+    CHECK(l3.b.model == across.setup.model);
+    CHECK(l3.b.params.zeta == across.setup.params.zeta);
+    CHECK(l3.b.params.theta == 0);
+    Session l1;
+    l1.compare = true; // a step without B turns compare mode off
+    apply_link(parse_link("?lesson=1"), l1);
+    CHECK_FALSE(l1.compare);
     // B's keys are checked as A's: a setup, so an error (not a notice), with B's key named.
     auto refusal = [](const std::string& text) {
         try {

@@ -4,6 +4,7 @@
 #include "fv/figure_data.hpp"
 #include "fv/figure_family.hpp"
 #include "fv/figure_registry.hpp"
+#include "fv/map_family.hpp"
 #include "fv/measurements.hpp"
 
 #include <catch2/catch.hpp>
@@ -117,7 +118,7 @@ TEST_CASE("Registry: lists only where a figure takes them, checked as a spec fil
     in.zeta = 0.3;
     CHECK(fv::input_error(scene, in, key) == "theta has 2 values; scene takes one (lists: rx, ry)");
     const fv::FigureEntry& map = *fv::find_registered("map");
-    CHECK(has(fv::input_error(map, family_inputs({}, {1, 2}, {1}), key), "map takes one"));
+    CHECK(fv::input_error(map, family_inputs({}, {1, 2}, {1}, {}), key).empty()); // a family of maps
     const fv::FigureEntry& rx = *fv::find_registered("rx");
     CHECK(fv::input_error(rx, family_inputs({30, 60}, {1, 3, 10}, {0.5, 1}, {fv::Model::dahl}), key)
               .empty()); // 12
@@ -217,4 +218,102 @@ TEST_CASE("rx: --data draws the file's points over the curves, one marker per an
         }
     CHECK(series == 2);
     CHECK(points == file.points.size());
+}
+
+TEST_CASE("Map families: one map per combination on a grid, titles naming what varies, at most 6 maps",
+          "[figures][family][map]") {
+    fv::MapFamily f;
+    f.rdisp = {1, 3, 10};
+    f.i = {0.5, 1};
+    // Rows of i, columns of r_disp; each panel titled with both (both vary), the figure with neither.
+    const std::vector<fv::MapPanelSpec> panels = fv::map_family_panels(f);
+    REQUIRE(panels.size() == 6);
+    CHECK(panels[0].rdisp == 1);
+    CHECK(panels[0].i == 0.5);
+    CHECK(panels[2].rdisp == 10);
+    CHECK(panels[3].i == 1);
+    CHECK(panels[4].title == "r_{disp} = 3, i = 1");
+    fv::FigureSpec spec = fv::map_family_figure(f);
+    const auto& m = std::get<fv::MapFigure>(spec.content);
+    CHECK(m.columns == 3);
+    CHECK(m.family.size() == 6);
+    CHECK(spec.title == "friction ratio r_{x}(ζ, θ), Dahl model");
+    CHECK(fv::map_family_size_error(f).empty());
+    // More values of i than of r_disp: i along the rows (the grid wider than tall, as the page).
+    fv::MapFamily t;
+    t.rdisp = {1, 3};
+    t.i = {0.5, 1, 2};
+    const std::vector<fv::MapPanelSpec> across = fv::map_family_panels(t);
+    REQUIRE(across.size() == 6);
+    CHECK((across[1].rdisp == 1 && across[1].i == 1));
+    CHECK((across[3].rdisp == 3 && across[3].i == 0.5));
+    CHECK(std::get<fv::MapFigure>(fv::map_family_figure(t).content).columns == 3);
+    // The rigid model adds one map (r_disp and i do not apply): 7 is over the cap, named in one line.
+    f.models = {fv::Model::dahl, fv::Model::rigid};
+    CHECK(fv::map_family_size_error(f) ==
+          "r_disp 3 × i 2 = 6 Dahl maps + 1 rigid = 7 maps; allowed: at most 6 maps in one figure (each is "
+          "200 × 91 steady states; split the family into several figures)");
+    f.i = {1};
+    const std::vector<fv::MapPanelSpec> with_rigid = fv::map_family_panels(f);
+    REQUIRE(with_rigid.size() == 4);
+    CHECK(with_rigid[0].title == "Dahl, r_{disp} = 1");
+    CHECK(with_rigid[3].model == fv::Model::rigid);
+    CHECK(std::isnan(with_rigid[3].rdisp));
+    CHECK(std::get<fv::MapFigure>(fv::map_family_figure(f).content).columns == 2); // 2 x 2
+    CHECK(fv::map_family_figure(f).title == "friction ratio r_{x}(ζ, θ), Dahl model (i = 1) and rigid model");
+    // One Dahl map is the map as it was before families: no family, the same title and caption.
+    fv::MapFamily single;
+    single.rdisp = {2};
+    single.i = {1};
+    const fv::FigureSpec a = fv::map_family_figure(single), b = fv::map_figure(2, 1);
+    CHECK(std::get<fv::MapFigure>(a.content).family.empty());
+    CHECK(a.title == b.title);
+    CHECK(a.caption == b.caption);
+    // Through the registry, as every door gives the inputs.
+    const fv::FigureEntry& map = *fv::find_registered("map");
+    auto key = [](fv::FigureParam p) { return std::string(fv::param_key(p)); };
+    fv::FigureInputs seven;
+    seven.rdisp = {1, 2, 3, 4, 5, 6, 7};
+    CHECK(has(fv::input_error(map, seven, key), "= 7 maps; allowed: at most 6"));
+}
+
+TEST_CASE("Map families: one colour scale over every map, the rigid map's cells Eq. (10) at theta = 0",
+          "[figures][family][map]") {
+    fv::MapFamily f;
+    f.rdisp = {1, 10};
+    f.models = {fv::Model::dahl, fv::Model::rigid};
+    fv::FigureSpec spec = fv::map_family_figure(f);
+    auto& m = std::get<fv::MapFigure>(spec.content);
+    m.zetas = {0.25, 0.5, 1.5}; // a coarse grid: the structure, not the picture
+    m.theta_count = 4;
+    m.theta_max_deg = 90;
+    const fv::FigureData d = fv::compute_figure(spec, 1);
+    REQUIRE(d.panels.size() == 3);
+    CHECK(d.columns == 3);
+    double lo = 1e9, hi = -1e9;
+    for (const fv::PanelData& p : d.panels)
+        for (double v : p.heatmap->values) lo = std::min(lo, v), hi = std::max(hi, v);
+    for (const fv::PanelData& p : d.panels) {
+        REQUIRE(p.heatmap);
+        CHECK(p.heatmap->vmin == lo);
+        CHECK(p.heatmap->vmax == hi);
+        CHECK_FALSE(p.heatmap->color_bar);
+    }
+    // The rigid map: theta = 0 is its first row, r_x = (2/pi) asin(zeta) below zeta = 1 and 1 above (Eq. 10);
+    // its only theta* line is the rigid one (dashed).
+    const fv::HeatmapData& rigid = *d.panels[2].heatmap;
+    CHECK(rigid.values[0] == Approx(2 / kPi * std::asin(0.25)).margin(1e-10));
+    CHECK(rigid.values[1] == Approx(2 / kPi * std::asin(0.5)).margin(1e-10));
+    CHECK(rigid.values[2] == Approx(1).margin(1e-10));
+    CHECK(d.panels[2].series.at(0).dash == fv::Dash::dashed);
+    CHECK(d.panels[0].series.at(0).dash == fv::Dash::solid);
+    // Tables: every map's grid in one (model, rdisp and i columns say which), the best angles with the
+    // varying inputs in front.
+    REQUIRE(d.tables.size() == 2);
+    CHECK(d.tables[0].ratios.size() == 3 * 3 * 4);
+    CHECK(d.tables[0].ratios.back().model == fv::Model::rigid);
+    CHECK(d.tables[1].suffix == "-best-angle");
+    CHECK(d.tables[1].text.rfind("model,rdisp,zeta,theta_star_deg,", 0) == 0);
+    CHECK(has(d.tables[1].text, "\ndahl,10,0.5,"));
+    CHECK(has(d.tables[1].text, "\nrigid,,1.5,"));
 }

@@ -135,9 +135,9 @@ TEST_CASE("lessons: a step goes through the sync point: setup, panel, speed, pla
     UiEdits go;
     go.lesson = 3;
     const LessonSetup& u = lesson_steps()[2].setup;
-    CHECK(a.ui().lesson == 0); // queued, not applied
+    CHECK(a.ui().session.lesson == 0); // queued, not applied
     a.sync(go);
-    CHECK(a.ui().lesson == 3);
+    CHECK(a.ui().session.lesson == 3);
     CHECK(a.ui().session.model == u.model);
     CHECK(a.ui().session.params.zeta == u.params.zeta);
     CHECK(a.ui().session.params.theta == u.params.theta);
@@ -151,7 +151,7 @@ TEST_CASE("lessons: a step goes through the sync point: setup, panel, speed, pla
     UiEdits bad;
     bad.lesson = 99;
     a.sync(bad);
-    CHECK(a.ui().lesson == 3);
+    CHECK(a.ui().session.lesson == 3);
     CHECK(a.ui().session.params.zeta == u.params.zeta);
     CHECK(a.ui().status == "lesson step 99 does not exist; allowed: " + lesson_range_text());
 
@@ -159,7 +159,7 @@ TEST_CASE("lessons: a step goes through the sync point: setup, panel, speed, pla
     UiEdits close;
     close.lesson = 0;
     a.sync(close);
-    CHECK(a.ui().lesson == 0);
+    CHECK(a.ui().session.lesson == 0);
     CHECK(a.ui().session.params.zeta == u.params.zeta);
 
     // A concept preset is the step's setup without the card.
@@ -167,7 +167,7 @@ TEST_CASE("lessons: a step goes through the sync point: setup, panel, speed, pla
     preset.preset = "stick-slip";
     a.sync(preset);
     const LessonSetup& st = find_lesson_step("stick-slip")->setup;
-    CHECK(a.ui().lesson == 0);
+    CHECK(a.ui().session.lesson == 0);
     CHECK(a.ui().session.params.i == st.params.i);
     CHECK(a.ui().session.panel == st.panel);
 }

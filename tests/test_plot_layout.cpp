@@ -29,6 +29,7 @@
 #include <memory>
 #include <regex>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -48,6 +49,21 @@ const std::vector<fv::FigureData>& figures() {
             v.push_back(fv::compute_figure(e.make(fv::test::example_inputs(e))));
         }
         v.push_back(fv::compute_figure(fv::scene_figure({0.5, fv::kPi / 2, 3.02, 0})));
+        // Families of maps as small multiples (a full 2 x 3 grid, and 2 x 2 Dahl maps and the rigid one: a
+        // last row with a gap), on a coarse grid of cells: the layout, not the numbers.
+        for (const auto& [rdisp, i, models] :
+             {std::tuple{std::vector<double>{1, 3, 10}, std::vector<double>{0.5, 1},
+                         std::vector{fv::Model::dahl}},
+              std::tuple{std::vector<double>{1, 3}, std::vector<double>{0.5, 1},
+                         std::vector{fv::Model::dahl, fv::Model::rigid}}}) {
+            fv::FigureInputs in;
+            in.rdisp = rdisp, in.i = i, in.models = models;
+            fv::FigureSpec spec = fv::find_registered("map")->make(in);
+            auto& m = std::get<fv::MapFigure>(spec.content);
+            m.zetas = fv::linspace(0.02, 3, 20);
+            m.theta_count = 10;
+            v.push_back(fv::compute_figure(spec));
+        }
         return v;
     }();
     return out;
@@ -282,6 +298,59 @@ TEST_CASE("Text stays legible on the smallest page: no text below 7 units", "[la
                 }
         CHECK(smallest < 12.0f); // the page's text did shrink
     }
+}
+
+TEST_CASE("Small multiples: every map's data area the same size, in rows and columns, one colour bar",
+          "[layout][grid]") {
+    for (const Vec2 page : kPages) {
+        fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
+        for (const fv::FigureData& fig : figures()) {
+            if (fig.columns == 0) continue;
+            INFO(fig.panels.size() << " maps on " << page.x << "x" << page.y);
+            const DisplayList list = s.record_figure(fig);
+            std::vector<Rect> areas;
+            for (const fv::gfx::Region& r : list.regions)
+                if (r.role == "data") areas.push_back(r.rect);
+            REQUIRE(areas.size() == fig.panels.size());
+            const auto cols = static_cast<std::size_t>(fig.columns);
+            for (std::size_t k = 0; k < areas.size(); ++k) {
+                CHECK(areas[k].width() == Approx(areas[0].width()).margin(1.0));
+                CHECK(areas[k].height() == Approx(areas[0].height()).margin(1.0));
+                CHECK(areas[k].x0 == Approx(areas[k % cols].x0).margin(0.5));        // its column's
+                CHECK(areas[k].y0 == Approx(areas[k / cols * cols].y0).margin(0.5)); // its row's
+                for (std::size_t j = 0; j < k; ++j)                                  // apart
+                    CHECK((areas[k].x0 >= areas[j].x1 || areas[j].x0 >= areas[k].x1 ||
+                           areas[k].y0 >= areas[j].y1 || areas[j].y0 >= areas[k].y1));
+            }
+            // One legend (below the grid) and one colour bar (one gradient image besides the maps').
+            CHECK(std::count_if(list.regions.begin(), list.regions.end(),
+                                [](const fv::gfx::Region& r) { return r.role == "legend"; }) == 1);
+            CHECK(std::count_if(list.commands.begin(), list.commands.end(), [](const auto& c) {
+                      return std::holds_alternative<fv::gfx::dl::Picture>(c);
+                  }) == static_cast<long>(fig.panels.size()) + 1);
+        }
+    }
+}
+
+TEST_CASE("Small multiples: one legend names every line and mark of any map once", "[layout][grid]") {
+    const auto family = std::find_if(figures().begin(), figures().end(),
+                                     [](const fv::FigureData& f) { return f.columns > 0; });
+    REQUIRE(family != figures().end());
+    fv::FigureData fig = *family;
+    // A mark only the second map has (its cells of two stable states), and one more of a line every map has.
+    fig.panels.at(1).series.push_back(
+        {"2 stable states", {1.0}, {45.0}, fv::Ink::black, fv::Dash::solid, fv::Mark::circle, 0});
+    const DisplayList list = session().record_figure(fig);
+    std::map<std::string, int> legend_texts;
+    for (const fv::gfx::Region& r : list.regions)
+        if (r.role == "legend")
+            for (std::size_t k = r.first; k < r.last; ++k)
+                if (const auto* t = std::get_if<fv::gfx::dl::Text>(&list.commands[k]))
+                    ++legend_texts[t->text];
+    CHECK(legend_texts["2 stable states"] == 1);
+    CHECK(legend_texts["best angle θ*, Dahl"] == 1);
+    CHECK(legend_texts["best angle θ*, rigid"] == 1);
+    CHECK(legend_texts.size() == 3);
 }
 
 // The first pair of texts in `list` whose boxes overlap by more than `slack` units each way, or "".

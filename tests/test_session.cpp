@@ -3,6 +3,7 @@
 // the state replaced and the simulation restarted, or, for a bad file, nothing changed. The pixel round
 // trip through the real executable is in test_gui_session.cpp.
 #include "gui/app_state.hpp"
+#include "gui/lessons.hpp"
 #include "gui/script.hpp"
 #include "gui/session.hpp"
 #include "gui/session_link.hpp"
@@ -62,6 +63,7 @@ Session unusual() {
     s.view.trail_periods = 3.5;
     s.view.frame = FrameChoice::ground;
     s.presentation = true;
+    s.lesson = 4;
     s.pins.push_back({"Dahl, θ = 60°, r_{disp} = 2, i = 0",
                       {0, 0.5, 1.0 / 3},
                       {0.1, std::nan(""), 0.7},
@@ -90,6 +92,7 @@ void check_same(const Session& a, const Session& b) {
     CHECK(a.view.trail_periods == b.view.trail_periods);
     CHECK(a.view.frame == b.view.frame);
     CHECK(a.presentation == b.presentation);
+    CHECK(a.lesson == b.lesson);
     REQUIRE(a.pins.size() == b.pins.size());
     for (std::size_t k = 0; k < a.pins.size(); ++k) {
         CHECK(a.pins[k].label == b.pins[k].label);
@@ -144,6 +147,7 @@ TEST_CASE("session JSON: every field goes through the file and back unchanged", 
     CHECK(s.view.frame != d.view.frame);
     CHECK(s.pins.size() != d.pins.size());
     CHECK(s.presentation != d.presentation);
+    CHECK(s.lesson != d.lesson);
     CHECK(s.data_file != d.data_file);
 
     const std::string text = session_json(s);
@@ -529,7 +533,7 @@ TEST_CASE(
     // A default view: the link is the five keys, as before the view keys existed.
     Session d;
     CHECK(session_link(d) == share_link(d.model, d.params, d.start));
-    CHECK(share_address({}, d) == std::string(kDefaultWebBase) + share_link(d.model, d.params, d.start));
+    CHECK(share_address({}, d) == std::string(kDefaultLinkBase) + share_link(d.model, d.params, d.start));
     // Pins made in the app (the worker's curves), a panel, presentation and a speed: through the link and
     // back, the pins computed again on their own path (compute_pin) come out as the app drew them.
     AppState app(Model::dahl, Params{0.2, kPi / 3, 2, 1}, 0.7, 60);
@@ -574,10 +578,71 @@ TEST_CASE(
     old.pins[0].source.reset();
     CHECK(session_link(old).find("&pins=rigid:60") != std::string::npos);
     CHECK(pins_not_in_link(old) == 1);
-    // Site addresses the desktop's --web-base takes, and what it refuses.
-    CHECK(web_base_error("https://example.org/frictionviz/").empty());
-    CHECK(web_base_error("http://192.168.1.20:8000/").empty());
+    // Site addresses the desktop's --link-base takes, and what it refuses.
+    CHECK(link_base_error("https://example.org/frictionviz/").empty());
+    CHECK(link_base_error("http://192.168.1.20:8000/").empty());
     for (const char* bad :
          {"example.org/fv/", "ftp://x/", "https://x/?a=1", "https://x/#top", "https://x/a b", "https://x/\n"})
-        CHECK_FALSE(web_base_error(bad).empty());
+        CHECK_FALSE(link_base_error(bad).empty());
+}
+
+TEST_CASE("a link opens a lesson step: its setup, the link's own keys over it, the step in sessions",
+          "[gui][session][link][lessons]") {
+    const int steps = static_cast<int>(lesson_steps().size());
+    const LessonSetup& u = lesson_steps()[2].setup; // from lessons.json, the data the menu shows
+    // ?lesson=3 alone: step 3 as the Lessons menu sets it up, card on.
+    Session s;
+    const ShareLink l = parse_link("?lesson=3");
+    CHECK(l.notices.empty());
+    apply_link(l, s);
+    CHECK(s.lesson == 3);
+    CHECK(s.model == u.model);
+    CHECK(s.params.zeta == u.params.zeta);
+    CHECK(s.params.theta == u.params.theta);
+    CHECK(s.params.rdisp == u.params.rdisp);
+    CHECK(s.params.i == u.params.i);
+    CHECK(s.start == u.start);
+    CHECK(s.panel == u.panel);
+    CHECK(s.speed == u.speed);
+    CHECK(s.view.frame == u.frame);
+    // The link of that state says lesson=3 (Copy link during a lesson), and reads back to the same state.
+    const std::string link = session_link(s);
+    CHECK(link.find("&lesson=3") != std::string::npos);
+    Session again;
+    apply_link(parse_link(link), again);
+    CHECK(again.lesson == 3);
+    CHECK(again.params.theta == s.params.theta);
+    CHECK(again.panel == s.panel);
+    // A slider moved during the lesson: the link's own keys win over the step's setup, the card stays.
+    Session moved;
+    apply_link(parse_link("?lesson=3&zeta=0.45&panel=curves"), moved);
+    CHECK(moved.lesson == 3);
+    CHECK(moved.params.zeta == 0.45);
+    CHECK(moved.params.theta == u.params.theta);
+    CHECK(moved.panel == LowerPanel::curves);
+    // No lesson: no key (the link of a default view is unchanged).
+    CHECK(session_link(Session{}).find("lesson") == std::string::npos);
+    // A step that does not exist: a notice naming the steps, the rest applied, no card.
+    for (const std::string bad : {"99", "0", "x"}) {
+        const ShareLink b = parse_link("?zeta=0.45&lesson=" + bad);
+        INFO(bad);
+        REQUIRE(b.notices.size() == 1);
+        CHECK(b.notices[0].find("allowed: lesson in [1, " + std::to_string(steps) + "]") !=
+              std::string::npos);
+        Session t;
+        apply_link(b, t);
+        CHECK(t.lesson == 0);
+        CHECK(t.params.zeta == 0.45);
+    }
+    // The app opened on that state shows the card (what gui --link and the page do).
+    AppState app(s);
+    CHECK(app.ui().session.lesson == 3);
+    // Sessions keep the step; a session without a lesson writes no "lesson" key (files read as before).
+    CHECK(parse_session(session_json(s), "s.json").lesson == 3);
+    CHECK(session_json(Session{}).find("lesson") == std::string::npos);
+    CHECK(refusal("{\"version\": 1, \"lesson\": 99}") ==
+          "s.json:1:26: lesson = 99; allowed: 0 (none) or a step " + lesson_range_text());
+    CHECK(refusal("{\"version\": 1, \"lesson\": \"3\"}") ==
+          "s.json:1:26: lesson = \"3\"; allowed: 0 (none) or a step " + lesson_range_text());
+    CHECK(parse_session("{\"version\": 1, \"lesson\": 0}", "s.json").lesson == 0);
 }

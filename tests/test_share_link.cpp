@@ -383,3 +383,49 @@ TEST_CASE(
     CHECK(refusal("?panel=map&panel=loop") == "column 12: 'panel' is given twice; each key at most once");
     CHECK(refusal("?panel=graph&panel=loop") == "column 14: 'panel' is given twice; each key at most once");
 }
+
+TEST_CASE("share link: lesson=N within the reader's steps, else ignored with a notice naming them",
+          "[link]") {
+    // Read with 8 steps (the app passes its lessons.json's count; see app::parse_link).
+    const ShareLink l = parse_share_link("?lesson=3", 8);
+    CHECK(l.lesson == 3);
+    CHECK(l.notices.empty());
+    CHECK(parse_share_link("?lesson=8", 8).lesson == 8);
+    CHECK(parse_share_link("?lesson=1", 8).lesson == 1);
+    ShareLink v;
+    v.lesson = 3;
+    v.panel = LowerPanel::why;
+    CHECK(view_link_keys(v) == "&panel=why&lesson=3"); // the last view key
+    CHECK(parse_share_link("?model=dahl" + view_link_keys(v), 8).lesson == 3);
+    struct Case {
+        std::string text;
+        int steps;
+        std::string notice;
+    };
+    for (const Case& c : {
+             Case{"?zeta=0.4&lesson=99", 8,
+                  "column 18: lesson = 99 is out of range; allowed: lesson in [1, 8]; "
+                  "ignored"},
+             Case{"?zeta=0.4&lesson=0", 8,
+                  "column 18: lesson = 0 is out of range; allowed: lesson in [1, 8]; "
+                  "ignored"},
+             Case{"?zeta=0.4&lesson=x", 8,
+                  "column 18: lesson = 'x' is not an integer; allowed: lesson in [1, 8]; "
+                  "ignored"},
+             Case{"?zeta=0.4&lesson=2.5", 8,
+                  "column 18: lesson = '2.5' is not an integer; allowed: lesson in [1, 8]; ignored"},
+             Case{"?zeta=0.4&lesson=", 8,
+                  "column 18: lesson = '' is not an integer; allowed: lesson in [1, 8]; "
+                  "ignored"},
+             Case{"?zeta=0.4&lesson=3", 0, "column 18: lesson = '3': this reader has no lessons; ignored"},
+         }) {
+        INFO(c.text);
+        ShareLink r;
+        REQUIRE_NOTHROW(r = parse_share_link(c.text, c.steps));
+        CHECK(r.zeta == 0.4); // the rest of the link applies
+        CHECK_FALSE(r.lesson);
+        REQUIRE(r.notices.size() == 1);
+        CHECK(r.notices[0] == c.notice);
+    }
+    CHECK(refusal("?lesson=2&lesson=3") == "column 11: 'lesson' is given twice; each key at most once");
+}

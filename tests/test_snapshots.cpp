@@ -10,6 +10,7 @@
 #include "fv/figures.hpp"
 #include "fv/gfx/compare.hpp"
 #include "fv/gfx/png.hpp"
+#include "fv/sweep.hpp"
 #include "tools/figure_examples.hpp"
 
 #include <catch2/catch.hpp>
@@ -72,18 +73,38 @@ void check_snapshot(fv::app::RenderSession& session, const fv::FigureSpec& spec)
     }
 }
 
-} // namespace
-
-TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]") {
+// The snapshots' page: headless, kWidth x kHeight.
+fv::gfx::ContextOptions snapshot_options() {
     fv::gfx::ContextOptions o;
     o.backend = fv::gfx::Backend::Headless;
     o.width = kWidth;
     o.height = kHeight;
-    fv::app::RenderSession session(o);
+    return o;
+}
+
+} // namespace
+
+TEST_CASE("Snapshot: every registered figure matches its baseline", "[snapshot]") {
+    fv::app::RenderSession session(snapshot_options());
     // Each with the inputs of its example (those of README.md and screenshots/), fig19 with the synthetic
     // example data.
     for (const fv::FigureEntry& e : fv::figure_registry())
         check_snapshot(session, e.make(fv::test::example_inputs(e)));
+}
+
+TEST_CASE("Snapshot: a family of maps as small multiples matches its baseline", "[snapshot]") {
+    fv::app::RenderSession session(snapshot_options());
+    // Two Dahl maps and the rigid one (render --figure map --rdisp 1,3 --model dahl,rigid) on a coarse grid
+    // of cells (40 x 19, a second of computing): the grid, the shared titles, colour bar and legend.
+    fv::FigureInputs in;
+    in.rdisp = {1, 3};
+    in.models = {fv::Model::dahl, fv::Model::rigid};
+    fv::FigureSpec spec = fv::find_registered("map")->make(in);
+    auto& m = std::get<fv::MapFigure>(spec.content);
+    m.zetas = fv::linspace(0.02, 3, 40);
+    m.theta_count = 19;
+    spec.id = "map-family";
+    check_snapshot(session, spec);
 }
 
 TEST_CASE("Snapshot comparison catches a changed picture", "[snapshot]") {

@@ -33,6 +33,7 @@ struct RefRow {
     fv::Start start = fv::Start::rest;
     std::string status; // period_1, period_2, ..., unsettled, not_periodic, capped
     int k = 0;
+    int periods = 0; // integrated until the section repeated
     double rx = 0, ry = 0, rx_err = 0, ry_err = 0;
 };
 
@@ -76,20 +77,12 @@ std::vector<RefRow> reference_rows() {
         r.start = c[4] == "sliding" ? fv::Start::sliding : fv::Start::rest;
         r.status = c[5];
         r.k = std::stoi(c[6]);
+        r.periods = std::stoi(c[7]);
         r.rx = std::stod(c[8]), r.ry = std::stod(c[9]);
         r.rx_err = std::stod(c[10]), r.ry_err = std::stod(c[13]); // "inf" reads as infinity
         rows.push_back(r);
     }
     return rows;
-}
-
-// The slow creeps (i = 10) that the solver still gives up on (status not_converged, exit 3, never a number
-// called ok; docs/model.md, "Which steady state", not yet done): the reference reaches the first two after
-// 14 000 and 32 000 periods; the third is one of the random points.
-bool known_slow_creep(const RefRow& r) {
-    return (r.zeta == 0.285 && r.theta_deg == 90 && r.rdisp == 2 && r.i == 10) ||
-           (r.zeta == 0.27 && r.theta_deg == 30 && r.rdisp == 10 && r.i == 10) ||
-           (r.zeta == 0.04586 && r.theta_deg == 92 && r.rdisp == 89.45 && r.i == 10);
 }
 
 fv::SteadyResult solve(const RefRow& r) {
@@ -186,7 +179,7 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
           "[reference][states][slow][long]") {
     const std::vector<RefRow> rows = reference_rows();
     REQUIRE(rows.size() == 146); // 13 hard points and 60 random ones, both starts
-    int compared = 0, failed_honestly = 0;
+    int compared = 0, creeps = 0;
     double worst_ratio = 0;
     for (const RefRow& r : rows) {
         const fv::SteadyResult s = solve(r);
@@ -202,21 +195,28 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
             continue;
         }
         if (!ref_periodic) continue; // the reference did not settle: nothing to hold the solver to
-        if (!fv::ok(s.status)) {
-            ++failed_honestly;
-            CHECK(known_slow_creep(r));
-            continue;
-        }
+        // Every state the reference settles into is found, the slow creeps at i = 10 included (the reference
+        // needs 14 000 and 32 000 periods for the first two hard points; the solver skips the creep,
+        // core/src/solver/creep_skip.hpp).
+        REQUIRE(fv::ok(s.status));
         ++compared;
         CHECK(s.period_k == r.k);
+        // Where the solver projected a slow creep, its count of the creep's periods is the reference's count
+        // of periods to the steady state, less the few it takes to settle once the creep ends.
+        if (s.creep_periods_skipped > 0) {
+            ++creeps;
+            CHECK(s.creep_periods_skipped <= r.periods);
+            CHECK(s.creep_periods_skipped >= 0.9 * r.periods);
+        }
         const double dx = std::abs(s.rx - r.rx), dy = std::abs(s.ry - r.ry);
         CHECK(dx <= fv::kErrorSafety * s.error_estimate + r.rx_err);
         CHECK(dy <= fv::kErrorSafety * s.error_estimate + r.ry_err);
         worst_ratio = std::max(worst_ratio, std::max(dx - r.rx_err, dy - r.ry_err) / s.error_estimate);
     }
     // Printed, not asserted: how close the worst point comes to the documented factor.
-    WARN(compared << " rows compared, " << failed_honestly
-                  << " not ok (slow creeps); the largest (error - reference error) / estimate: "
+    WARN(compared << " rows compared, " << creeps
+                  << " through a slow creep; the largest (error - reference error) / estimate: "
                   << worst_ratio);
+    CHECK(creeps >= 3);
     CHECK(compared >= 110);
 }

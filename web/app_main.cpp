@@ -2,11 +2,11 @@
 // canvas, WebGL 2). The page is web/index.html.
 //
 // The page's address is a share link (fv/share_link.hpp, what `frictionviz gui --link` reads): its query sets
-// the model, parameters, start and view (panel, presentation, speed, pins) at start, and as the state changes
-// the address follows (history.replaceState), so a copied address reopens the same setup; Copy link copies
-// it. A link that does not read shows the defaults and says why on the page, never a blank page; a view value
-// that does not read is ignored with a notice. Every frame the page's layout goes to Module.fvLayout (and the
-// body's data-fv-layout attribute) for the tests (tests/web/page_fits.sh).
+// the model, parameters, start and view (panel, presentation, speed, pins, lesson step) at start, and as the
+// state changes the address follows (history.replaceState), so a copied address reopens the same setup; Copy
+// link copies it. A link that does not read shows the defaults and says why on the page, never a blank page;
+// a view value that does not read is ignored with a notice. Every frame the page's layout goes to
+// Module.fvLayout (and the body's data-fv-layout attribute) for the tests (tests/web/page_fits.sh).
 #include "gui/gui_app.hpp"
 #include "gui/session_link.hpp"
 
@@ -56,6 +56,12 @@ EM_JS(void, fv_publish_layout, (const char* json), {
 });
 // clang-format on
 
+// The link of the state on screen as the body's data-fv-link (the tests read it from the DOM: the address
+// keeps the query it was opened with until the state changes).
+EM_JS(void, fv_publish_link, (const char* query), {
+    if (document.body) document.body.setAttribute("data-fv-link", UTF8ToString(query));
+});
+
 // Replaces the address's query (the hash stays), without a new history entry.
 EM_JS(void, fv_replace_page_query, (const char* query),
       { history.replaceState(history.state, "", UTF8ToString(query) + window.location.hash); });
@@ -101,7 +107,7 @@ int main() {
         const std::string query = taken(fv_page_query());
         if (!query.empty()) {
             try {
-                const fv::ShareLink link = fv::parse_share_link(query);
+                const fv::ShareLink link = fv::app::parse_link(query);
                 fv::app::apply_link(link, o.start);
                 // A view value that did not read: ignored, said on the page and in the status line.
                 for (const std::string& n : link.notices)
@@ -129,6 +135,7 @@ int main() {
         // The address changes only when the state does: a page opened without a query (or with a bad one)
         // keeps its address until a slider moves.
         std::string shown = fv::app::session_link(o.start);
+        fv_publish_link(shown.c_str());
         std::string status;
         o.on_state = [&shown, &status](const fv::app::UiState& ui) {
             if (ui.status != status) fv_publish_status((status = ui.status).c_str());
@@ -136,6 +143,7 @@ int main() {
             if (link == shown) return;
             shown = std::move(link);
             fv_replace_page_query(shown.c_str());
+            fv_publish_link(shown.c_str());
         };
         std::string published;
         o.on_layout = [&published](const fv::app::ShownLayout& l) {

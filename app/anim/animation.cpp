@@ -185,10 +185,11 @@ Frames::Frames(const Spec& spec)
         behind.start.step(static_cast<int>(std::labs(ahead)) * behind.start.steps_per_period());
         behind.sim = behind.start;
     }
+    if (!spec.title.empty()) top_ = 46;
 }
 
 gfx::Rect Frames::top_view_area(gfx::Vec2 page) const {
-    const gfx::Rect area{4, 24, page.x - 4, page.y - 4};
+    const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
     return spec_.view == View::scene ? area : app::layout_dashboard(area, b_.has_value()).top_view;
 }
 
@@ -207,6 +208,22 @@ void Frames::fit(gfx::Canvas& canvas, gfx::Vec2 page, float pixel_ratio) {
         a_.box = loop_frame(spec_, a_.setup, aspect_);
         if (b_) b_->box = loop_frame(spec_, b_->setup, aspect_);
     }
+}
+
+int Frames::still_frame() {
+    const FrameBox& box = a_.box;
+    const double w = box.width();
+    if (spec_.frame != FrameChoice::ground || !(w > 0)) return 0;
+    // Where the top view puts the vibration centre: its x modulo the frame's width (live_panels.cpp).
+    const auto off_middle = [&](int k) {
+        const double x = a_.at_frame(k, count_, spec_.periods).vibration_centre().x();
+        return std::abs(x - w * std::floor((x - box.x0) / w) - (box.x0 + 0.5 * w));
+    };
+    int best = 0;
+    double best_off = off_middle(0);
+    for (int k = 1; k < count_; ++k)
+        if (const double off = off_middle(k); off < best_off) best = k, best_off = off;
+    return best;
 }
 
 PanelData Frames::top_view(SetupLoop& loop, int k, const char* name) {
@@ -234,10 +251,15 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     gfx::TextStyle ts;
     ts.size = 14;
     ts.halign = gfx::HAlign::Center;
-    canvas.text({page.x / 2, 5},
+    if (!spec_.title.empty()) {
+        gfx::TextStyle title = ts;
+        title.size = 17;
+        canvas.text({page.x / 2, 4}, spec_.title, title);
+    }
+    canvas.text({page.x / 2, top_ - 19},
                 b_ ? compare_caption_of(a_.setup, a_.rx, b_->setup, b_->rx) : caption_of(a_.setup, a_.rx),
                 ts);
-    const gfx::Rect area{4, 24, page.x - 4, page.y - 4};
+    const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
     PanelData top = top_view(a_, k, b_ ? "A" : nullptr);
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
@@ -262,21 +284,50 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     app::paint_dashboard(canvas, area, panels);
 }
 
-std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress) {
+namespace {
+
+gfx::ContextOptions context_for(const Spec& spec) {
     gfx::ContextOptions o;
     o.width = spec.width;
     o.height = spec.height;
     o.scale = spec.scale;
-    app::RenderSession session(o);
-    Frames frames(spec);
-    const int total = frames.count();
-    const gfx::Vec2 page = session.logical_page();
-    frames.fit(session.canvas(), page, session.pixel_ratio());
+    return o;
+}
+
+// A headless session at the spec's size and scale, with the loop's frames fitted to its page.
+struct Stage {
+    app::RenderSession session;
+    Frames frames;
+    gfx::Vec2 page;
+
+    explicit Stage(const Spec& spec)
+        : session(context_for(spec)), frames(spec), page(session.logical_page()) {
+        frames.fit(session.canvas(), page, session.pixel_ratio());
+    }
+    // Frame k drawn (the caller reads the pixels back, then presents).
+    void draw(int k) {
+        session.canvas().begin(page, session.pixel_ratio(), gfx::colors::white);
+        frames.paint(session.canvas(), page, k);
+        session.canvas().end();
+    }
+};
+
+} // namespace
+
+Still render_still(const Spec& spec) {
+    Stage stage(spec);
+    stage.draw(stage.frames.still_frame());
+    Still still{stage.session.context().read_pixels(), stage.session.canvas().display_list()};
+    stage.session.context().present();
+    return still;
+}
+
+std::string export_animation(const Spec& spec, const std::string& path, const Progress& progress) {
+    Stage stage(spec);
+    app::RenderSession& session = stage.session;
+    const int total = stage.frames.count();
     auto render = [&](int k) {
-        gfx::Canvas& canvas = session.canvas();
-        canvas.begin(page, session.pixel_ratio(), gfx::colors::white);
-        frames.paint(canvas, page, k);
-        canvas.end();
+        stage.draw(k);
         gfx::Image img = session.context().read_pixels();
         session.context().present();
         return img;

@@ -78,6 +78,9 @@ class Frames {
     const FrameBox* frame_box_b() const { return b_ ? &b_->box : nullptr; }
     // The steady r_x the caption shows (A's).
     double rx() const { return a_.rx; }
+    // The frame a still picture shows: 0, or in the ground frame the one with the body nearest the middle of
+    // the frame (in frame 0 it may stand on the edge, drawn half at each side).
+    int still_frame();
 
   private:
     PanelData top_view(SetupLoop& loop, int k, const char* name);
@@ -86,6 +89,7 @@ class Frames {
     int count_ = 0;
     SetupLoop a_;
     std::optional<SetupLoop> b_; // the compare view's setup B
+    float top_ = 24;             // the panels' top: below the caption, and the title where there is one
     double aspect_ = 0;
     gfx::Rect top_view_area(gfx::Vec2 page) const;
 };
@@ -94,6 +98,15 @@ struct Progress {
     std::function<void(int done, int total)> report; // after each frame (from the exporting thread)
     const std::atomic<bool>* cancel = nullptr;       // set: stop, write nothing, return "cancelled"
 };
+
+// Frame 0 of the loop as one picture: its pixels (for a PNG) and its display list (for SVG and PDF), at the
+// spec's size and scale; `render --lesson` draws a lesson step's picture with it. Throws std::runtime_error
+// when no headless GL context can be made.
+struct Still {
+    gfx::Image image;
+    gfx::DisplayList list;
+};
+Still render_still(const Spec& spec);
 
 // Renders the frames and writes `path` through fv::write_file_atomic. The spec must have passed check_spec()
 // and its format match the path. Returns "" or a one-line error (nothing written then). Throws

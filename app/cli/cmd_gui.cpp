@@ -61,7 +61,7 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (const auto start = given_start(cmd, a.model.solver.start)) s.start = *start;
     if (cmd.get_option("--link")->count() > 0) {
         try {
-            const ShareLink link = parse_share_link(a.link);
+            const ShareLink link = app::parse_link(a.link);
             app::apply_link(link, s);
             // A view value that did not read is ignored (share_link.hpp): said on stderr and in the app.
             for (const std::string& n : link.notices) {
@@ -113,7 +113,7 @@ Command add_gui_command(CLI::App& root) {
         std::string platform = "auto", size;
         double scale = 0;
         int frames = 0, bench = 0;
-        std::string script, screenshot, data, session, link, web_base;
+        std::string script, screenshot, data, session, link, link_base;
         int lesson = 0;
     };
     auto a = std::make_shared<Args>();
@@ -145,11 +145,11 @@ Command add_gui_command(CLI::App& root) {
         cmd->add_option("--link", a->link,
                         "start from a share link, ?zeta=Z&theta=DEG&rdisp=R&i=I&model=dahl|rigid "
                         "(any of the keys; or a URL with that query), instead of the model flags");
-    cmd->add_option("--web-base", a->web_base,
+    cmd->add_option("--link-base", a->link_base,
                     std::string("the address of the browser version's site, which Copy link puts before the "
                                 "share link so that a student can click it (default: the environment's "
-                                "FRICTIONVIZ_WEB_BASE, else ") +
-                        app::kDefaultWebBase + ", scripts/serve-web.sh on this machine; docs/web.md)");
+                                "FRICTIONVIZ_LINK_BASE, else ") +
+                        app::kDefaultLinkBase + ", scripts/serve-web.sh on this machine; docs/web.md)");
     // A session holds the whole state, a link the model and its parameters: flags for the same things
     // would contradict them.
     for (const char* flag : {"--zeta", "--theta", "--rdisp", "--i", "--model", "--start", "--vb", "--zss"}) {
@@ -212,12 +212,12 @@ Command add_gui_command(CLI::App& root) {
                                      "units at the scale; allowed: --size at least 320x320 times --scale");
             }
             // Where Copy link points: the flag, the environment, the default (session_link.hpp).
-            const char* env_base = std::getenv("FRICTIONVIZ_WEB_BASE");
-            o.share.base = !a->web_base.empty()         ? a->web_base
+            const char* env_base = std::getenv("FRICTIONVIZ_LINK_BASE");
+            o.share.base = !a->link_base.empty()        ? a->link_base
                            : env_base && *env_base != 0 ? std::string(env_base)
-                                                        : std::string(app::kDefaultWebBase);
-            if (const std::string why = app::web_base_error(o.share.base); !why.empty())
-                throw UsageError((a->web_base.empty() ? "FRICTIONVIZ_WEB_BASE: " : "--web-base: ") + why);
+                                                        : std::string(app::kDefaultLinkBase);
+            if (const std::string why = app::link_base_error(o.share.base); !why.empty())
+                throw UsageError((a->link_base.empty() ? "FRICTIONVIZ_LINK_BASE: " : "--link-base: ") + why);
             o.frames = a->frames;
             o.lesson = a->lesson;
             o.bench_frames = a->bench;

@@ -3,11 +3,14 @@
 #include "errors.hpp"
 #include "figure_flags.hpp"
 #include "figure_listing.hpp"
+#include "lesson_render.hpp"
+#include "model_options.hpp"
 #include "output.hpp"
 #include "render_flags.hpp"
 #include "render_output.hpp"
 #include "test_hook.hpp"
 
+#include "figures/figure_renderer.hpp"
 #include "figures/figure_spec_file.hpp"
 #include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
@@ -49,15 +52,6 @@ std::size_t encoders_for(int w, int h) {
     const std::size_t job = std::size_t{2} * static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
     const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
     return std::clamp<std::size_t>(kEncodeBudget / job, 1, cores);
-}
-
-std::string csv_of(const TableData& t) {
-    if (!t.text.empty()) return t.text;
-    if (!t.ratios.empty()) return ratio_table(t.ratios, Format::csv);
-    SweepPoint row;
-    row.result.period = t.trace;
-    row.result.status = t.status;
-    return trace_table(row, Format::csv);
 }
 
 // The numerical failures behind one figure: ratio rows (the map's grid too) carry the solver's status per
@@ -182,6 +176,7 @@ Command add_render_command(CLI::App& root) {
         std::string list;  // --list [tsv|markdown]
         std::string spec;  // --spec FILE.json
         OutputArgs output; // --format, --scale
+        int lesson = 0;    // --lesson N
     };
     auto a = std::make_shared<Args>();
     CLI::App* cmd =
@@ -208,11 +203,23 @@ Command add_render_command(CLI::App& root) {
     cmd->add_option("--size", a->size, "image size WxH in pixels")->check(size_spec())->capture_default_str();
     add_output_options(*cmd, a->output);
     add_render_flags(*cmd, a->flags);
+    // After the figure flags: --lesson excludes them (its setup stands for them).
+    CLI::Option* lesson = add_lesson_option(
+        *cmd, a->lesson,
+        "draw guided lesson step N as lesson-N.png (.svg, .pdf by --format) with lesson-N.json (the step's "
+        "title, text and link): a frame of animate --lesson N, under the step's title");
+    lesson->excludes("--figure")->excludes("--spec")->excludes("--list")->excludes("--data");
     return {
         cmd, [a, cmd] {
             if (cmd->get_option("--list")->count() > 0) {
                 std::fputs((a->list == "markdown" ? figure_table_markdown() : figure_list_tsv()).c_str(),
                            stdout);
+                return;
+            }
+            if (a->lesson > 0) {
+                if (a->out.empty())
+                    throw UsageError("--out is required: the directory to write the picture into");
+                render_lesson(a->lesson, a->out, parse_size(a->size), a->output);
                 return;
             }
             const bool from_spec = cmd->get_option("--spec")->count() > 0;
@@ -223,7 +230,8 @@ Command add_render_command(CLI::App& root) {
                                  ": the spec file gives the figure's parameters; allowed with --spec: --out, "
                                  "--size, --scale, --format");
             if (a->figure.empty() && !from_spec)
-                throw UsageError("--figure is required (or --spec, --list); allowed: " + figure_names());
+                throw UsageError("--figure is required (or --spec, --lesson, --list); allowed: " +
+                                 figure_names());
             if (a->out.empty() && cmd->get_option("--out")->count() == 0)
                 throw UsageError("--out is required: the directory to write the figures into");
             // Resolve the list of figures first (an unknown id lists the valid ones), each with its
@@ -336,9 +344,9 @@ Command add_render_command(CLI::App& root) {
                 app::FigureExtras extras;
                 std::vector<std::string> names;
                 for (const std::string& ext : output.extensions()) names.push_back(data.id + "." + ext);
-                for (const TableData& t : data.tables) {
-                    names.push_back(data.id + t.suffix + ".csv");
-                    extras.files.push_back({names.back(), csv_of(t)});
+                for (app::FigureTableFile& t : app::figure_tables(data)) {
+                    names.push_back(t.name);
+                    extras.files.push_back({t.name, std::move(t.csv)});
                 }
                 names.push_back(data.id + ".json");
                 extras.failed = check_figure(data, fit ? &*fit : nullptr);

@@ -50,7 +50,9 @@ std::string figure_table_markdown() {
         std::string lists;
         for (const FigureParamUse& u : e.params)
             if (u.list) lists += (lists.empty() ? "" : ", ") + code(flag_name(u.param) + " A,B,..");
-        if (!lists.empty()) text += " Lists, one curve per combination: " + lists + ".";
+        if (!lists.empty())
+            text += std::string(" Lists, one ") + (e.kind == FigureKind::map ? "map" : "curve") +
+                    " per combination: " + lists + ".";
         text += readme_picture_note(e.id);
         s += "| [" + e.id + "](screenshots/" + e.id + ".png) | " + cell(text) + " |\n";
     }

@@ -5,6 +5,7 @@
 #include "model_options.hpp"
 
 #include "fv/figure_family.hpp"
+#include "fv/figure_registry.hpp"
 #include "fv/read_number.hpp"
 
 namespace fv::cli {
@@ -40,8 +41,19 @@ CLI::Validator zeta_text() {
         "NUMBER or FROM:TO in " + describe(kZetaRange));
 }
 
+// "; a comma-separated list for rx, ry (one curve per combination), map (one map per combination)".
 std::string lists_note(FigureParam p) {
-    return "; a comma-separated list for " + figures_taking_lists(p) + " (one curve per combination)";
+    std::string curves, maps;
+    for (const FigureEntry& e : figure_registry())
+        for (const FigureParamUse& u : e.params)
+            if (u.param == p && u.list) {
+                std::string& to = e.kind == FigureKind::map ? maps : curves;
+                to += (to.empty() ? "" : ", ") + e.id;
+            }
+    std::string s;
+    if (!curves.empty()) s += curves + " (one curve per combination)";
+    if (!maps.empty()) s += (s.empty() ? "" : ", ") + maps + " (one map per combination)";
+    return "; a comma-separated list for " + s;
 }
 
 } // namespace
@@ -82,7 +94,7 @@ void add_render_flags(CLI::App& cmd, RenderFlags& f) {
     f.model_opt = cmd.add_option("--model", f.model,
                                  figures_taking(FigureParam::model) +
                                      ": the models, comma separated: dahl, rigid (the rigid model ignores "
-                                     "--rdisp and --i: one rigid curve per angle)")
+                                     "--rdisp and --i: one rigid curve per angle, one rigid map)")
                       ->check(CLI::Validator(
                           [](std::string& s) {
                               std::vector<Model> unused;
@@ -118,9 +130,8 @@ FigureInputs inputs_of(const RenderFlags& f) {
     const std::vector<double> rdisps =
         f.rdisp_opt->count() > 0 ? list_of(f.rdisp, kRdispRange) : std::vector<double>{};
     if (rdisps.size() > 1 && u.zss_opt && u.zss_opt->count() > 0)
-        throw UsageError(
-            "--rdisp and --zss: give one of them; allowed: --rdisp (a list for rx, ry) or --zss (one "
-            "value)");
+        throw UsageError("--rdisp and --zss: give one of them; allowed: --rdisp (a list for " +
+                         figures_taking_lists(FigureParam::rdisp) + ") or --zss (one value)");
     if (rdisps.size() > 1)
         in.rdisp = rdisps;
     else if (const std::optional<double> r = rdisp_of(f.rdisp_opt, rdisps.empty() ? 0 : rdisps[0], u, false))

@@ -38,6 +38,7 @@ struct AnimationSpec {
     double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
     Setup b =
         compare_default(Setup{}); // the compare view's setup B (its solver options: steady's, B's start)
+    std::string title;            // a line above the caption (a lesson step's title); none when empty
 };
 
 } // namespace fv

@@ -248,6 +248,8 @@ gfx::HeatMap heat_map_of(const HeatmapData& h) {
     m.nx = h.nx, m.ny = h.ny;
     m.x0 = h.x0, m.x1 = h.x1, m.y0 = h.y0, m.y1 = h.y1;
     m.label = h.label;
+    m.vmin = h.vmin, m.vmax = h.vmax;
+    m.color_bar = h.color_bar;
     return m;
 }
 
@@ -489,6 +491,126 @@ float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect
     return bounds.y0 + kTop + (1 + kLeading) * ts.size;
 }
 
+// A panel of small multiples as it is drawn: its legend left to the figure, no colour bar of its own, its
+// text at `factor`.
+PanelData grid_panel(const PanelData& panel, float factor) {
+    PanelData p = panel;
+    p.legend = Legend::none;
+    p.text_scale *= factor;
+    if (p.heatmap) p.heatmap->color_bar = false;
+    return p;
+}
+
+// Where the data area of `panel` would be inside `bounds` (its layout, nothing drawn).
+gfx::Rect data_area(const gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds) {
+    gfx::Plot plot(bounds);
+    set_axes(plot, panel);
+    if (panel.heatmap) plot.set_heatmap(heat_map_of(*panel.heatmap));
+    return plot.layout(canvas).area;
+}
+
+// The legend of small multiples: each labelled line or mark of any panel once, in order of appearance (a
+// mark that only some maps have is named too).
+std::vector<gfx::Series> merged_legend(const FigureData& fig) {
+    std::vector<gfx::Series> legend;
+    for (const PanelData& p : fig.panels)
+        for (std::size_t k = 0; k < p.series.size(); ++k) {
+            const SeriesData& s = p.series[k];
+            if (s.label.empty() || std::any_of(legend.begin(), legend.end(),
+                                               [&](const gfx::Series& e) { return e.label == s.label; }))
+                continue;
+            gfx::Series e;
+            e.label = s.label;
+            e.style = series_style(s, k);
+            legend.push_back(std::move(e));
+        }
+    return legend;
+}
+
+// Small multiples (FigureData::columns, a family of maps): the panels on a grid, row by row, sharing their
+// axes as matplotlib's supxlabel/supylabel label them: one x title under the grid, one y title left of it,
+// none on the panels. The cells are placed so that every data area has the same size and they line up in
+// rows and columns whatever each panel's title takes (a long one wraps on a small page): each panel's
+// margins are measured (its layout, nothing drawn) and every row (column) gets the largest of its panels'.
+// Right of the grid one colour bar on the panels' shared scale, as tall as their data areas; below it one
+// legend (merged_legend). Text at `factor` (page_text_factor).
+void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& body, float factor) {
+    const std::size_t n = fig.panels.size(), cols = static_cast<std::size_t>(fig.columns);
+    const std::size_t rows = (n + cols - 1) / cols;
+    const float fs = 13 * factor, title_fs = fs + factor, gap = std::round(10 * factor);
+    const PanelData& first = fig.panels.front();
+    const std::vector<gfx::Series> legend = merged_legend(fig);
+    const gfx::Vec2 legend_size = gfx::legend_rows(canvas, legend, {0, 0}, body.width(), fs, false);
+    const float below = first.x_title.empty() ? 0 : std::round(title_fs * 1.7f),
+                left = first.y_title.empty() ? 0 : std::round(title_fs * 1.7f);
+    const gfx::Rect grid{body.x0 + left, body.y0, body.x1 - gfx::kColorBarSpace,
+                         body.y1 - below - (legend_size.y > 0 ? legend_size.y + gap : 0)};
+    std::vector<PanelData> panels;
+    for (const PanelData& p : fig.panels) {
+        panels.push_back(grid_panel(p, factor));
+        panels.back().x_title.clear(), panels.back().y_title.clear();
+    }
+    // Each panel's margins around its data area (left, top, right, bottom), measured in its cell; twice, the
+    // second time in the cells the first gave (a title may wrap differently in a cell of another width).
+    std::vector<gfx::Rect> cells(n), margins(n);
+    for (std::size_t k = 0; k < n; ++k) {
+        const float w = grid.width() / static_cast<float>(cols), h = grid.height() / static_cast<float>(rows);
+        const float x0 = grid.x0 + w * static_cast<float>(k % cols),
+                    y0 = grid.y0 + h * static_cast<float>(k / cols);
+        cells[k] = {x0, y0, x0 + w, y0 + h};
+    }
+    std::vector<gfx::Rect> areas(n);
+    for (int pass = 0; pass < 2; ++pass) {
+        for (std::size_t k = 0; k < n; ++k) {
+            const gfx::Rect a = data_area(canvas, panels[k], cells[k]);
+            margins[k] = {a.x0 - cells[k].x0, a.y0 - cells[k].y0, cells[k].x1 - a.x1, cells[k].y1 - a.y1};
+        }
+        std::vector<float> col_l(cols, 0), col_r(cols, 0), row_t(rows, 0), row_b(rows, 0);
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t c = k % cols, r = k / cols;
+            col_l[c] = std::max(col_l[c], margins[k].x0), col_r[c] = std::max(col_r[c], margins[k].x1);
+            row_t[r] = std::max(row_t[r], margins[k].y0), row_b[r] = std::max(row_b[r], margins[k].y1);
+        }
+        float sum_x = 0, sum_y = 0;
+        for (std::size_t c = 0; c < cols; ++c) sum_x += col_l[c] + col_r[c];
+        for (std::size_t r = 0; r < rows; ++r) sum_y += row_t[r] + row_b[r];
+        const float w = std::max(1.0f, (grid.width() - sum_x) / static_cast<float>(cols)),
+                    h = std::max(1.0f, (grid.height() - sum_y) / static_cast<float>(rows));
+        for (std::size_t k = 0; k < n; ++k) {
+            const std::size_t c = k % cols, r = k / cols;
+            float x = grid.x0, y = grid.y0;
+            for (std::size_t j = 0; j < c; ++j) x += col_l[j] + w + col_r[j];
+            for (std::size_t j = 0; j < r; ++j) y += row_t[j] + h + row_b[j];
+            areas[k] = {std::round(x + col_l[c]), std::round(y + row_t[r]), 0, 0};
+            areas[k].x1 = areas[k].x0 + std::round(w), areas[k].y1 = areas[k].y0 + std::round(h);
+            cells[k] = {areas[k].x0 - margins[k].x0, areas[k].y0 - margins[k].y0, areas[k].x1 + margins[k].x1,
+                        areas[k].y1 + margins[k].y1};
+        }
+    }
+    float top = grid.y1, bottom = grid.y0, right = grid.x0, x_left = grid.x1;
+    for (std::size_t k = 0; k < n; ++k) {
+        const gfx::Rect a = paint_panel(canvas, panels[k], cells[k]).area;
+        top = std::min(top, a.y0), bottom = std::max(bottom, a.y1);
+        right = std::max(right, a.x1), x_left = std::min(x_left, a.x0);
+    }
+    gfx::TextStyle ts;
+    ts.size = title_fs, ts.halign = gfx::HAlign::Center;
+    if (below > 0) {
+        ts.valign = gfx::VAlign::Bottom;
+        canvas.text({std::round((x_left + right) / 2), grid.y1 + below}, first.x_title, ts);
+    }
+    if (left > 0) {
+        ts.valign = gfx::VAlign::Top, ts.angle_deg = 90;
+        canvas.text({body.x0, std::round((top + bottom) / 2)}, first.y_title, ts);
+    }
+    if (first.heatmap)
+        gfx::draw_color_bar(canvas, {grid.x0, top, right, bottom}, heat_map_of(*first.heatmap), fs);
+    if (legend_size.y > 0)
+        gfx::legend_rows(canvas, legend,
+                         {std::round((body.x0 + body.x1 - legend_size.x) / 2), body.y1 - legend_size.y},
+                         body.width(), fs);
+}
+
 } // namespace
 
 float page_text_factor(const gfx::Rect& page) {
@@ -511,6 +633,10 @@ void paint_figure(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& b
         p.text_scale *= k;
         paint_panel(canvas, p, r, true);
     };
+    if (fig.columns > 0 && !fig.panels.empty()) {
+        paint_grid(canvas, fig, body, k);
+        return;
+    }
     if (fig.panels.size() == 3) {
         const float split = body.x0 + body.width() * 0.5f, mid = (body.y0 + body.y1) / 2;
         panel(0, {body.x0, body.y0, split - gap, body.y1});

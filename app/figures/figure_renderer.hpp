@@ -1,5 +1,6 @@
 // The figures layer's public entry point (the installed package, docs/library.md): a registered figure's
-// definition by id, and its picture as the bytes of a PNG, SVG or PDF file, drawn headless. The pictures are
+// definition by id, its picture as the bytes of a PNG, SVG or PDF file, drawn headless, and its tables as
+// the CSV files `frictionviz render` writes. The pictures are
 // those of `frictionviz render` at the same size and scale, byte for byte: both draw through RenderSession
 // and encode with the render layer's encoders. The rest of app/figures (the session, the painters) is the
 // app's and is not installed.
@@ -10,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace fv::app {
 
@@ -42,6 +44,21 @@ std::string picture_size_error(const PictureSize& size);
 // figure's definition throws for a data file (fv::DataError, fv::FitError: fig19). compute_figure
 // (fv/figure_data.hpp) turns it into numbers.
 FigureSpec registered_figure(const std::string& id, const FigureInputs& inputs = {});
+
+// One table of a computed figure as `frictionviz render` writes it beside the picture: the file's name (the
+// figure's id, the table's suffix, ".csv": "map.csv", "map-best-angle.csv") and its CSV text, byte for byte
+// the command line's (one writer for both).
+struct FigureTableFile {
+    std::string name;
+    std::string csv;
+};
+
+// Every table of `figure`, in its order (ID.csv first).
+std::vector<FigureTableFile> figure_tables(const FigureData& figure);
+
+// One table's CSV text: ratio rows (model,i,theta_deg,rdisp,zeta,r_x,r_y,periods,error_estimate,status,...),
+// a steady period's samples (tau,Px,Py,Tx,Ty,z,Fx,Fy,status) or a ready-made table (the map's best angles).
+std::string table_csv(const TableData& table);
 
 // A headless GL context (OSMesa, loaded at run time) with the fonts and canvas, made once and reused for any
 // number of figures. Not thread-safe: one renderer per thread.

@@ -163,8 +163,8 @@ std::string parameters_json(const FigureEntry& e, const FigureInputs& in, int wi
             const std::vector<double>& v = u.param == FigureParam::theta   ? in.theta_deg
                                            : u.param == FigureParam::rdisp ? in.rdisp
                                                                            : in.i;
-            // A list where the figure takes lists (even of one), else the number.
-            if (u.list)
+            // A list where the figure takes lists (even of one, unless one_as_number), else the number.
+            if (u.list && !(u.one_as_number && v.size() == 1))
                 j[key] = numbers(v);
             else
                 j[key] = v.front();

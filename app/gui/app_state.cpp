@@ -123,9 +123,9 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
     if (e.lesson) {
         const int n = static_cast<int>(lesson_steps().size());
         if (*e.lesson == 0) {
-            ui_.lesson = 0;
+            ui_.session.lesson = 0;
         } else if (*e.lesson >= 1 && *e.lesson <= n) {
-            ui_.lesson = *e.lesson;
+            ui_.session.lesson = *e.lesson;
             set_up(e, lesson_steps()[static_cast<std::size_t>(*e.lesson - 1)].setup);
         } else {
             e.status = "lesson step " + std::to_string(*e.lesson) +

@@ -238,20 +238,20 @@ UiEdits draw_share_link(const UiState& ui, const ShareAddress& where) {
                             2 * st.FramePadding.x - st.ItemSpacing.x);
     ImGui::InputText("##link", &link, ImGuiInputTextFlags_ReadOnly);
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Share link: the model, its parameters (θ in degrees), the start when it is not "
-                          "from rest, and the panel, presentation mode, speed and pinned curves when they "
-                          "are not the defaults\n%s\n%s"
-                          "frictionviz gui --link '%s' starts from it, and the browser version opens it.%s",
-                          address.c_str(),
-                          where.from_page
-                              ? "This page's address.\n"
-                              : "The site's address is a setting: gui --web-base URL or "
-                                "FRICTIONVIZ_WEB_BASE (docs/web.md), where your class's site is.\n",
-                          link.c_str(),
-                          pins_not_in_link(ui.session) > 0
-                              ? "\nPins opened from an older session file are not in it (their parameters "
-                                "are not known)."
-                              : "");
+        ImGui::SetTooltip(
+            "Share link: the model, its parameters (θ in degrees), the start when it is not "
+            "from rest, and the panel, presentation mode, speed, pinned curves and lesson step when they "
+            "are not the defaults\n%s\n%s"
+            "frictionviz gui --link '%s' starts from it, and the browser version opens it.%s",
+            address.c_str(),
+            where.from_page ? "This page's address.\n"
+                            : "The site's address is a setting: gui --link-base URL or "
+                              "FRICTIONVIZ_LINK_BASE (docs/web.md), where your class's site is.\n",
+            link.c_str(),
+            pins_not_in_link(ui.session) > 0
+                ? "\nPins opened from an older session file are not in it (their parameters "
+                  "are not known)."
+                : "");
     ImGui::SameLine();
     if (ImGui::SmallButton(copy)) {
         ImGui::SetClipboardText(address.c_str());

@@ -51,7 +51,7 @@ struct GuiOptions {
     // Called once a frame after that frame's edits took effect (the browser page writes the state into its
     // address as a share link); may be empty.
     std::function<void(const UiState&)> on_state;
-    // Where Copy link points (the page's address in the browser; --web-base on the desktop).
+    // Where Copy link points (the page's address in the browser; --link-base on the desktop).
     ShareAddress share;
     // A first line for the status line (a link's view values that were ignored), or "".
     std::string start_notice;

@@ -25,20 +25,20 @@ UiEdits draw_lessons_menu(const UiState& ui) {
     const auto& steps = lesson_steps();
     for (int k = 1; k <= step_count(); ++k) {
         const std::string label = std::to_string(k) + ". " + steps[static_cast<std::size_t>(k - 1)].title;
-        if (ImGui::MenuItem(label.c_str(), nullptr, ui.lesson == k)) e.lesson = k;
+        if (ImGui::MenuItem(label.c_str(), nullptr, ui.session.lesson == k)) e.lesson = k;
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Close the lesson", nullptr, false, ui.lesson > 0)) e.lesson = 0;
+    if (ImGui::MenuItem("Close the lesson", nullptr, false, ui.session.lesson > 0)) e.lesson = 0;
     ImGui::EndMenu();
     return e;
 }
 
 UiEdits draw_lesson_card(const UiState& ui) {
     UiEdits e;
-    if (ui.lesson < 1 || ui.lesson > step_count()) return e;
-    const LessonStep& step = lesson_steps()[static_cast<std::size_t>(ui.lesson - 1)];
+    if (ui.session.lesson < 1 || ui.session.lesson > step_count()) return e;
+    const LessonStep& step = lesson_steps()[static_cast<std::size_t>(ui.session.lesson - 1)];
     ImGui::PushID("lesson");
-    ImGui::TextDisabled("Lesson %d of %d", ui.lesson, step_count());
+    ImGui::TextDisabled("Lesson %d of %d", ui.session.lesson, step_count());
     ImGui::PushTextWrapPos(0);
     ImGui::TextUnformatted(step.title.c_str());
     ImGui::Spacing();
@@ -53,15 +53,15 @@ UiEdits draw_lesson_card(const UiState& ui) {
         ImGui::TreePop();
     }
     ImGui::PopTextWrapPos();
-    if (ui.lesson <= 1) ImGui::BeginDisabled();
-    if (ImGui::Button("< Back")) e.lesson = ui.lesson - 1;
-    if (ui.lesson <= 1) ImGui::EndDisabled();
+    if (ui.session.lesson <= 1) ImGui::BeginDisabled();
+    if (ImGui::Button("< Back")) e.lesson = ui.session.lesson - 1;
+    if (ui.session.lesson <= 1) ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ui.lesson >= step_count()) ImGui::BeginDisabled();
-    if (ImGui::Button("Next >")) e.lesson = ui.lesson + 1;
-    if (ui.lesson >= step_count()) ImGui::EndDisabled();
+    if (ui.session.lesson >= step_count()) ImGui::BeginDisabled();
+    if (ImGui::Button("Next >")) e.lesson = ui.session.lesson + 1;
+    if (ui.session.lesson >= step_count()) ImGui::EndDisabled();
     ImGui::SameLine();
-    if (ImGui::Button("Again")) e.lesson = ui.lesson; // the step's setup once more, from its start
+    if (ImGui::Button("Again")) e.lesson = ui.session.lesson; // the step's setup once more, from its start
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("this step's setup again, played from the start");
     ImGui::SameLine();
     if (ImGui::Button("Close")) e.lesson = 0;
@@ -72,9 +72,9 @@ UiEdits draw_lesson_card(const UiState& ui) {
 
 UiEdits lesson_keys(const UiState& ui) {
     UiEdits e;
-    if (ui.lesson == 0) return e;
-    if (pressed(ImGuiKey_PageDown) && ui.lesson < step_count()) e.lesson = ui.lesson + 1;
-    if (pressed(ImGuiKey_PageUp) && ui.lesson > 1) e.lesson = ui.lesson - 1;
+    if (ui.session.lesson == 0) return e;
+    if (pressed(ImGuiKey_PageDown) && ui.session.lesson < step_count()) e.lesson = ui.session.lesson + 1;
+    if (pressed(ImGuiKey_PageUp) && ui.session.lesson > 1) e.lesson = ui.session.lesson - 1;
     return e;
 }
 

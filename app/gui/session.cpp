@@ -1,6 +1,7 @@
 #include "session.hpp"
 
 #include "app_state.hpp"
+#include "lessons.hpp"
 
 #include "fv/atomic_file.hpp"
 #include "fv/input_file.hpp"
@@ -344,6 +345,7 @@ std::string session_json(const Session& s) {
     j["speed"] = s.speed;
     j["playing"] = s.playing;
     j["panel"] = panel_name(s.panel);
+    if (s.lesson != 0) j["lesson"] = s.lesson; // only during a lesson: other sessions read as before
     j["view"] = Json{{"zoom", s.view.zoom},
                      {"pan", {s.view.pan.x(), s.view.pan.y()}},
                      {"follow", s.view.follow},
@@ -493,7 +495,7 @@ Session parse_session(const std::string& text, const std::string& file) {
                   "key \"" + pos.duplicate().substr(1) + "\" is given twice; each key at most once", true);
     r.only(j, "",
            {"version", "model", "zeta", "theta", "rdisp", "i", "start", "amplitude_um", "frequency_khz",
-            "speed", "playing", "panel", "view", "compare", "pins", "data"});
+            "speed", "playing", "panel", "lesson", "view", "compare", "pins", "data"});
     if (!j.contains("version"))
         r.fail_at("", "no \"version\"; a frictionviz session starts {\"version\": " +
                           std::to_string(kSessionVersion) + ", ...}");
@@ -533,6 +535,15 @@ Session parse_session(const std::string& text, const std::string& file) {
     for (LowerPanel p : kLowerPanels) panels.push_back(panel_name(p));
     r.get(j, "", "panel", panel, one_of("panel", panels));
     s.panel = *panel_from_name(panel);
+    // The lesson step on screen (0: none), a whole number up to the app's steps.
+    if (j.contains("lesson")) {
+        const Json& v = j["lesson"];
+        const long long n = static_cast<long long>(lesson_steps().size());
+        if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() > n)
+            r.fail_at("/lesson",
+                      "lesson = " + shown(v) + "; allowed: 0 (none) or a step " + lesson_range_text());
+        s.lesson = v.get<int>();
+    }
 
     if (j.contains("view")) {
         const Json& v = j["view"];

@@ -11,6 +11,8 @@
 //     "amplitude_um": 0.7, "frequency_khz": 60, the vibration behind the physical units
 //     "speed": 0.25, "playing": true,          animation: vibration periods per second, running or paused
 //     "panel": "curves",                       lower right: curves | map | loop | why (mechanism)
+//     "lesson": 3,                             the guided lesson's step on screen (written only during a
+//                                              lesson; 0 or missing: none; lessons.hpp)
 //     "view": {"zoom": 1, "pan": [0, 0], "follow": true, "trail_periods": 1.5, "presentation": false},
 //     "compare": {"model": "dahl", "zeta": 0.15, "theta": 0, "rdisp": 2, "i": 1, "start": "rest"},
 //                                              compare mode's setup B (written only when on; null or left

@@ -36,12 +36,12 @@ struct SessionState : Setup {
     bool compare = false;
     Setup b = compare_default(Setup{});
     const Setup& a() const { return *this; }
+    int lesson = 0; // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
 };
 
 struct UiState {
     SessionState session;
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
-    int lesson = 0;         // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
     bool editing_b = false; // compare mode: the panel's parameter controls edit setup B (else A)
     std::string status;     // last message (file written, ...)
 

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace fv {
 namespace {
@@ -404,7 +405,7 @@ PanelData map_panel(const MapFigure& spec, std::string& table, int threads,
 } // namespace
 
 std::vector<SweepPoint> map_points(const MapFigure& spec) {
-    return sweep_grid(Model::dahl, spec.zetas, map_thetas(spec), {spec.rdisp}, {spec.i});
+    return sweep_grid(spec.model, spec.zetas, map_thetas(spec), {spec.rdisp}, {spec.i});
 }
 
 SteadyOptions map_options(const MapFigure& spec) {
@@ -417,6 +418,7 @@ SteadyOptions map_options(const MapFigure& spec) {
 }
 
 SteadyResult map_cell(const MapFigure& spec, const std::vector<SweepPoint>& points, std::size_t k) {
+    if (spec.model == Model::rigid) return steady_ratio(Model::rigid, points[k].params); // Eq. 9
     const std::size_t pos = k % spec.zetas.size(); // place in its theta row
     const SteadyResult* prev1 = pos >= 1 ? &points[k - 1].result : nullptr;
     const SteadyResult* prev2 = pos >= 2 ? &points[k - 2].result : nullptr;
@@ -571,7 +573,60 @@ void compute_content(const PeriodForceFigure& spec, FigureData& fig, int) {
     fig.tables.push_back({"", {}, r.period, "", r.status});
 }
 
+// A family of maps (map_family.hpp): each map's panel, titled with what varies, the rigid map without the
+// Dahl theta* line (its own is the dashed one); all heat maps on one colour scale; the grids' rows in one
+// table (their model, i and rdisp columns say which map a row is of), the best angles in one table with
+// the inputs that vary in front (model, rdisp, i; empty where they do not apply).
+void map_family_content(const MapFigure& spec, FigureData& fig, int threads) {
+    TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
+    bool by_model = false, by_rdisp = false, by_i = false;
+    for (const MapPanelSpec& p : spec.family)
+        for (const MapPanelSpec& q : spec.family) {
+            by_model = by_model || p.model != q.model;
+            if (p.model == Model::dahl && q.model == Model::dahl)
+                by_rdisp = by_rdisp || p.rdisp != q.rdisp, by_i = by_i || p.i != q.i;
+        }
+    const auto cell = [](double v) { return std::isnan(v) ? std::string() : format_number("%.12g", v); };
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const MapPanelSpec& p : spec.family) {
+        MapFigure one = spec;
+        one.family.clear();
+        one.model = p.model, one.rdisp = p.rdisp, one.i = p.i;
+        std::string table;
+        std::vector<SweepPoint> rows;
+        PanelData panel = map_panel(one, table, threads, rows);
+        panel.title = p.title;
+        if (p.model == Model::rigid) panel.series.erase(panel.series.begin());
+        for (double v : panel.heatmap->values)
+            if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        std::string prefix = std::string(by_model ? to_string(p.model) + std::string(",") : "") +
+                             (by_rdisp ? cell(p.rdisp) + "," : "") + (by_i ? cell(p.i) + "," : "");
+        const std::size_t header_end = table.find('\n') + 1;
+        if (best.text.empty())
+            best.text = std::string(by_model ? "model," : "") + (by_rdisp ? "rdisp," : "") +
+                        (by_i ? "i," : "") + table.substr(0, header_end);
+        for (std::size_t at = header_end; at < table.size();) {
+            const std::size_t end = table.find('\n', at) + 1;
+            best.text += prefix + table.substr(at, end - at);
+            at = end;
+        }
+        grid.ratios.insert(grid.ratios.end(), rows.begin(), rows.end());
+        fig.panels.push_back(std::move(panel));
+    }
+    for (PanelData& p : fig.panels) {
+        p.heatmap->vmin = lo, p.heatmap->vmax = hi;
+        p.heatmap->color_bar = false;
+    }
+    fig.columns = spec.columns;
+    fig.tables.push_back(std::move(grid));
+    fig.tables.push_back(std::move(best));
+}
+
 void compute_content(const MapFigure& spec, FigureData& fig, int threads) {
+    if (!spec.family.empty()) {
+        map_family_content(spec, fig, threads);
+        return;
+    }
     TableData grid{"", {}, {}, ""}, best{"-best-angle", {}, {}, ""};
     std::vector<SweepPoint> rows;
     fig.panels.push_back(map_panel(spec, best.text, threads, rows));
@@ -634,7 +689,7 @@ template <class Content> std::vector<std::string> suffixes(const Content&) {
 
 FigureData compute_figure(const FigureSpec& spec, int threads) {
     if (const auto* m = std::get_if<MeasurementsFigure>(&spec.content))
-        return m->precomputed ? *m->precomputed : FigureData{spec.id, spec.title, {}, {}};
+        return m->precomputed ? *m->precomputed : FigureData{spec.id, spec.title, {}, 0, {}};
     FigureData fig;
     fig.id = spec.id;
     fig.title = spec.title;

@@ -202,14 +202,41 @@ std::string parameters_of(const SceneFigure& c) {
            zeta_sampling(c.ratio.zetas, c.ratio.zeta_budget) + ", rigid r_x by " + kQuadrature;
 }
 
+// The map's grid of cells: "ζ at 200 evenly spaced points from 0.02 to 3 × θ at 91 evenly spaced angles
+// from 0° to 90°".
+std::string map_grid(const MapFigure& c) {
+    return zeta_sampling(c.zetas) + " × θ at " + std::to_string(c.theta_count) +
+           " evenly spaced angles from 0° to " + number(c.theta_max_deg) + "°";
+}
+
+// One Dahl map (c.family empty), or a family's (map_family.hpp) Dahl maps and rigid map.
 std::string parameters_of(const MapFigure& c) {
-    return "Dahl model, r_disp = " + number(c.rdisp) + ", i = " + number(c.i) + ", steady states reached " +
-           start_text(c.start) + ", each cell also started from the other history; r_x from " +
-           ode_solver(c.ode_tolerance) + " on a grid of " + zeta_sampling(c.zetas) + " × θ at " +
-           std::to_string(c.theta_count) + " evenly spaced angles from 0° to " + number(c.theta_max_deg) +
-           "°; θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours, for the rigid "
-           "model by " +
-           kQuadrature;
+    std::string maps, dahl = "Dahl model, r_disp = " + number(c.rdisp) + ", i = " + number(c.i), rigid;
+    if (!c.family.empty()) {
+        std::vector<double> rdisp, i;
+        for (const MapPanelSpec& p : c.family) {
+            if (p.model == Model::rigid) {
+                rigid = "rigid model (no asperity: r_disp and i do not apply), r_x by " +
+                        std::string(kQuadrature);
+                continue;
+            }
+            if (std::find(rdisp.begin(), rdisp.end(), p.rdisp) == rdisp.end()) rdisp.push_back(p.rdisp);
+            if (std::find(i.begin(), i.end(), p.i) == i.end()) i.push_back(p.i);
+        }
+        dahl = rdisp.empty() ? ""
+                             : "Dahl model, r_disp = " + list_text(rdisp) + ", i = " + list_text(i) +
+                                   (rdisp.size() * i.size() > 1 ? " (one map per combination)" : "");
+        const std::size_t cols = static_cast<std::size_t>(c.columns), n = c.family.size();
+        if (n > 1)
+            maps = std::to_string(n) + " maps in " + std::to_string((n + cols - 1) / cols) + " × " +
+                   std::to_string(cols) + " panels on one colour scale: ";
+    }
+    const std::string best = "θ*(ζ) is the grid's smallest r_x refined by a parabola through its neighbours";
+    if (dahl.empty()) return maps + rigid + ", on a grid of " + map_grid(c) + "; " + best;
+    return maps + dahl + ", steady states reached " + start_text(c.start) +
+           ", each cell also started from the other history; r_x from " + ode_solver(c.ode_tolerance) +
+           " on a grid of " + map_grid(c) + "; " + best + ", for the rigid model by " + kQuadrature +
+           (rigid.empty() ? "" : "; the " + rigid);
 }
 
 std::string parameters_of(const MeasurementsFigure& c) {

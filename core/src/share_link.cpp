@@ -128,7 +128,7 @@ std::string read_pins(std::string_view value, std::vector<PinSource>& pins) {
 
 } // namespace
 
-ShareLink parse_share_link(std::string_view text) {
+ShareLink parse_share_link(std::string_view text, int lesson_steps) {
     // A browser ignores everything from the first '#' (the fragment) and reads the query before it; so
     // does the link: "#?zeta=0.5" sets nothing in a browser, and is no link here either.
     std::size_t from = 0, to = text.size();
@@ -187,6 +187,15 @@ ShareLink parse_share_link(std::string_view text) {
             std::vector<PinSource> pins;
             if (const std::string why = read_pins(value, pins); why.empty())
                 link.pins = std::move(pins);
+            else
+                notice(link, vat, why);
+        } else if (key == "lesson") {
+            once(!seen_view.insert(key).second);
+            long long step = 0;
+            if (lesson_steps < 1)
+                notice(link, vat, "lesson = " + quoted_text(value) + ": this reader has no lessons");
+            else if (std::string why = read_integer(key, value, 1, lesson_steps, step); why.empty())
+                link.lesson = static_cast<int>(step);
             else
                 notice(link, vat, why);
         } else {
@@ -258,6 +267,7 @@ std::string view_link_keys(const ShareLink& link) {
         for (std::size_t k = 0; k < link.pins->size(); ++k)
             s += (k ? "," : "") + pin_link_text((*link.pins)[k]);
     }
+    if (link.lesson) s += "&lesson=" + std::to_string(*link.lesson);
     return s;
 }
 

@@ -309,20 +309,66 @@ def _write_file(path, data: bytes) -> None:
         raise OSError(str(e)) from None
 
 
+def _csv_column(cells: tuple) -> np.ndarray:
+    """One CSV column as an array: float64 where every cell is a number or empty (empty: NaN, as the command
+    line leaves a value that does not apply or is not finite), else str."""
+    try:
+        return np.array([float(c) if c else np.nan for c in cells], dtype=np.float64)
+    except ValueError:
+        return np.array(cells, dtype=str)
+
+
+def _csv_array(text: str) -> np.ndarray:
+    """A table the command line writes (a header line, then comma-separated rows; no quoting: no cell holds a
+    comma) as a numpy structured array, one field per column, named by the header."""
+    lines = text.splitlines()
+    names = lines[0].split(",")
+    rows = [line.split(",") for line in lines[1:]]
+    columns = list(zip(*rows)) if rows else [()] * len(names)
+    arrays = [_csv_column(c) for c in columns]
+    out = np.empty(len(rows), dtype=[(n, a.dtype) for n, a in zip(names, arrays)])
+    for n, a in zip(names, arrays):
+        out[n] = a
+    return out
+
+
 class Figure:
     """A rendered figure: its ``data`` bytes (PNG, SVG or PDF), ``title``, ``caption`` (naming every parameter
     behind it, as ID.json's) and ``parameters`` (a dict: the spec `frictionviz render --spec` reads, so the
     command line draws the same figure from it). Shown inline by Jupyter (``_repr_png_`` / ``_repr_svg_``);
-    ``save(path)`` writes the bytes, ``save_spec(path)`` the parameters as JSON."""
+    ``save(path)`` writes the bytes (``data=True``: the tables too), ``save_spec(path)`` the parameters as
+    JSON.
+
+    The numbers behind it: ``tables``, a dict from each table's name (the file name `frictionviz render`
+    writes without ``.csv``: ``"map"``, ``"map-best-angle"``) to a numpy structured array with the CSV's
+    columns (numbers as float64, empty cells NaN; text columns such as ``model`` and ``status`` as str), and
+    ``csv(name)``, the CSV text itself, byte for byte the command line's file."""
 
     def __init__(self, id: str, data: bytes, format: str, title: str = "", caption: str = "",
-                 parameters: Optional[dict] = None):
+                 parameters: Optional[dict] = None, csv: Optional[List[tuple]] = None):
         self.id = id
         self.format = format
         self.data = data
         self.title = title
         self.caption = caption
         self.parameters = parameters or {}
+        # "ID<suffix>" -> CSV text, in the command line's order (ID.csv first).
+        self._csv = {name[: -len(".csv")]: text for name, text in (csv or [])}
+        self._tables: Optional[dict] = None
+
+    @property
+    def tables(self) -> dict:
+        if self._tables is None:  # parsed on first use: a family of maps has 10^5 rows
+            self._tables = {name: _csv_array(text) for name, text in self._csv.items()}
+        return self._tables
+
+    def csv(self, name: Optional[str] = None) -> str:
+        """The CSV text of table ``name`` (default: the figure's main table, named by its id), as
+        `frictionviz render` writes it; KeyError naming the tables there are for another name."""
+        key = self.id if name is None else (name[: -len(".csv")] if name.endswith(".csv") else name)
+        if key not in self._csv:
+            raise KeyError(f"{name!r}: {self.id} has the tables {', '.join(self._csv) or 'none'}")
+        return self._csv[key]
 
     def _repr_png_(self):
         return self.data if self.format == "png" else None
@@ -330,14 +376,23 @@ class Figure:
     def _repr_svg_(self):
         return self.data.decode("utf-8") if self.format == "svg" else None
 
-    def save(self, path) -> None:
+    def save(self, path, data: bool = False) -> None:
+        """Writes the picture to ``path``; with ``data=True`` also each table beside it as `frictionviz
+        render` names them, the picture's stem in place of the id (``out/m.png``: ``out/m.csv``,
+        ``out/m-best-angle.csv`` for a map), the same bytes as the command line's files."""
+        path = os.fspath(path)
         _write_file(path, self.data)
+        if not data:
+            return
+        stem = os.path.splitext(path)[0]
+        for name, text in self._csv.items():
+            _write_file(stem + name[len(self.id):] + ".csv", text.encode("utf-8"))
 
     def save_spec(self, path) -> None:
         _write_file(path, (json.dumps(self.parameters) + "\n").encode("utf-8"))
 
     def __repr__(self) -> str:
-        return f"Figure({self.id!r}, {self.format}, {len(self.data)} bytes)"
+        return f"Figure({self.id!r}, {self.format}, {len(self.data)} bytes, tables {list(self._csv)})"
 
 
 # The Python keyword of each spec key where it differs: the unit in the name, so that an angle in radians or
@@ -373,11 +428,12 @@ def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: floa
 
     params  the figure's parameters (figures() lists them): zeta, theta_deg (DEGREES), rdisp, i, model, data
             (a path), amplitude_um, frequency_khz, start. rx and ry take lists for theta_deg, rdisp, i and
-            model (one curve per combination) and a (FROM, TO) zeta range; none given: the figure's example
+            model (one curve per combination) and a (FROM, TO) zeta range; map lists for rdisp, i and model
+            (one map per combination, at most 6, as small multiples); none given: the figure's example
             inputs (as `render --figure all`)
     size    (width, height) in pixels; scale the CLI's --scale
-    out     None: returns a Figure (bytes in .data, inline in Jupyter); a path: writes the bytes there
-            (atomically) and returns the path
+    out     None: returns a Figure (bytes in .data, inline in Jupyter; its tables in .tables and .csv());
+            a path: writes the bytes there (atomically) and returns the path
 
     The checks and messages are those of `frictionviz render --spec` (ValueError); the PNG bytes equal the
     CLI's for the same figure, size and parameters (tests/test_render.py).
@@ -388,9 +444,9 @@ def render(id: str, out=None, format: str = "png", size=(1280, 800), scale: floa
             raise TypeError(f"render: {name}: use {_KEYWORD[name]} (the unit is in the name)")
         spec[_SPEC_KEY.get(name, name)] = _spec_value(name, value)
     w, h = size
-    data, title, caption, parameters = _core.render(json.dumps(spec), not params, int(w), int(h), float(scale),
-                                                    format)
-    fig = Figure(id, data, format, title, caption, json.loads(parameters))
+    data, title, caption, parameters, csv = _core.render(json.dumps(spec), not params, int(w), int(h),
+                                                         float(scale), format)
+    fig = Figure(id, data, format, title, caption, json.loads(parameters), csv)
     if out is None:
         return fig
     _write_file(out, data)

@@ -71,7 +71,7 @@ def test_rigid_equals_cli_and_closed_forms():
 
 # Points the solver does not converge at (docs/model.md, "Not yet done"): its status must come through, never a
 # silent NaN; the CLI exits 3 and still writes the row.
-HARD = [(0.285, 90, 2, 10)]
+HARD = [(0.18, 124, 10, 10)]  # the creep ends where the period grazes v = 0 (docs/model.md, "Slow creeps")
 
 
 @pytest.mark.parametrize("zeta,theta,rdisp,i", HARD)

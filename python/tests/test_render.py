@@ -73,8 +73,8 @@ def test_family_equals_cli_and_spec_round_trip(tmp_path):
 def test_render_errors_are_the_spec_files():
     with pytest.raises(ValueError, match="theta"):
         fv.render("rx", theta_deg=[30, 30])           # a value twice
-    with pytest.raises(ValueError, match="map takes one"):
-        fv.render("map", rdisp=[1, 3])                # map takes one r_disp
+    with pytest.raises(ValueError, match=r"= 7 maps; allowed: at most 6 maps"):
+        fv.render("map", rdisp=[1, 2, 3, 4, 5, 6, 7])  # a family of maps beyond the cap
     with pytest.raises(TypeError, match="theta_deg"):
         fv.render("scene", zeta=0.3, theta=60, rdisp=2, i=1)   # degrees must be said
     with pytest.raises(ValueError, match="finite"):

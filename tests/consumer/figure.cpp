@@ -1,7 +1,8 @@
 // A registered figure through the installed frictionviz::figures, against the installed command line:
 //   consumer_figure ID CLI_DIR OUT_DIR
 // renders figure ID (its example inputs: none for the paper's figures) as PNG and SVG, writes them into
-// OUT_DIR and compares them byte for byte with CLI_DIR/ID.png and CLI_DIR/ID.svg, which `frictionviz render
+// OUT_DIR and compares them (and its tables, figure_tables) byte for byte with CLI_DIR/ID.png, CLI_DIR/ID.svg
+// and CLI_DIR/ID*.csv, which `frictionviz render
 // --figure ID
 // --format png,svg --out CLI_DIR` wrote at the same default size (1280x800, scale 1). Exit 0 when both agree.
 #include <figures/figure_renderer.hpp>
@@ -44,6 +45,14 @@ int main(int argc, char** argv) {
         }
         const bool same = !cli.empty() && mine == cli;
         std::printf("%s: library %zu bytes, command line %zu bytes: %s\n", name.c_str(), mine.size(),
+                    cli.size(), same ? "identical" : "DIFFERENT");
+        if (!same) ++failures;
+    }
+    // Its tables: the CSV files the command line wrote beside the picture, from the same writer.
+    for (const fv::app::FigureTableFile& t : fv::app::figure_tables(data)) {
+        const std::string cli = read_file(cli_dir + "/" + t.name);
+        const bool same = !cli.empty() && t.csv == cli;
+        std::printf("%s: library %zu bytes, command line %zu bytes: %s\n", t.name.c_str(), t.csv.size(),
                     cli.size(), same ? "identical" : "DIFFERENT");
         if (!same) ++failures;
     }

@@ -33,9 +33,11 @@ void one_line(const std::string& m, const char* what) {
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
+    // A reader with 8 lesson steps, as the app's (the count is the app's data; any positive one will do).
+    constexpr int kSteps = 8;
     fv::ShareLink l;
     try {
-        l = fv::parse_share_link(text);
+        l = fv::parse_share_link(text, kSteps);
     } catch (const fv::LinkError& e) {
         one_line(e.what(), "a LinkError is one line 'column N: ...'");
         return 0;
@@ -44,6 +46,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     for (const std::string& n : l.notices) one_line(n, "a notice is one line 'column N: ...'");
     if (l.speed) check(fv::inside(*l.speed, fv::kSpeedRange), "speed in range");
+    if (l.lesson) check(*l.lesson >= 1 && *l.lesson <= kSteps, "lesson within the steps");
     if (l.pins) {
         check(!l.pins->empty() && l.pins->size() <= fv::kMaxPins, "1 to kMaxPins pins");
         for (const fv::PinSource& p : *l.pins)
@@ -57,11 +60,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     view.presentation = l.presentation;
     view.speed = l.speed;
     view.pins = l.pins;
-    const fv::ShareLink again = fv::parse_share_link("?model=dahl" + fv::view_link_keys(view));
+    view.lesson = l.lesson;
+    const fv::ShareLink again = fv::parse_share_link("?model=dahl" + fv::view_link_keys(view), kSteps);
     check(again.notices.empty(), "the view written back reads without notices");
     check(again.panel == l.panel && again.presentation == l.presentation && again.speed == l.speed,
           "panel, presentation and speed read back");
     check(again.pins.has_value() == l.pins.has_value() && (!l.pins || again.pins->size() == l.pins->size()),
           "the pins read back");
+    check(again.lesson == l.lesson, "the lesson step reads back");
     return 0;
 }

@@ -206,8 +206,6 @@ MarkerStyle series_marker(const Series& s, Color c) {
 
 } // namespace
 
-static constexpr float kColorBarSpace = 90; // Bar, its tick labels and its title, right of the data area.
-
 // Range of an axis when a heat map is present: exactly its extent (series beyond it are clipped).
 static Range with_heatmap(double lo, double hi, const Axis& axis) {
     Range r{lo, hi};
@@ -282,8 +280,8 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
         bounds.y1 - reserve_below -
         std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
     // Room for the last x tick label's overhang, or for the colour bar.
-    const float right =
-        bounds.x1 - (reserve > 0 ? reserve : std::round(fs * 1.5f)) - (hm ? kColorBarSpace : 0.0f);
+    const float right = bounds.x1 - (reserve > 0 ? reserve : std::round(fs * 1.5f)) -
+                        (hm && hm->color_bar ? kColorBarSpace : 0.0f);
     float left_margin = 50;
     // Two passes: the y tick labels' width sets the left margin, which changes the area and,
     // with equal aspect, the ranges and ticks.
@@ -695,14 +693,11 @@ void draw_legend_sample(Canvas& canvas, const Series& s, Color c, float x0, floa
     if (s.style.marker != MarkerShape::None) canvas.marker({x0 + 0.5f * sample, cy}, series_marker(s, c));
 }
 
-// The legend above the axes: entries side by side in rows as wide as the data area, in the band kept for it.
-void draw_legend_above(Canvas& canvas, const Plot& plot, const std::vector<Series>& series,
-                       const std::vector<std::size_t>& entries, float sample, const Frame& fr) {
-    const Rect& A = fr.layout.tf.area;
-    const float fs = plot.font_size;
-    const AboveLayout above = above_layout(canvas, series, entries, fs, A.width());
+// Legend entries side by side in rows (above_layout's), from `origin` (top left), samples `sample` long.
+void draw_legend_rows(Canvas& canvas, const std::vector<Series>& series,
+                      const std::vector<std::size_t>& entries, const AboveLayout& above, Vec2 origin,
+                      float sample, float fs) {
     const float above_row = std::round(fs * kAboveRow);
-    const Vec2 origin{A.x0, A.y0 - top_axis_band(plot) - fr.band};
     const Canvas::Mark legend_start = canvas.mark();
     TextStyle lt;
     lt.size = fs, lt.valign = VAlign::Middle;
@@ -717,6 +712,16 @@ void draw_legend_above(Canvas& canvas, const Plot& plot, const std::vector<Serie
                     series[entries[k]].label, lt);
     canvas.add_region("legend", {origin.x, origin.y, origin.x + above.size.x, origin.y + above.size.y},
                       legend_start);
+}
+
+// The legend above the axes: entries side by side in rows as wide as the data area, in the band kept for it.
+void draw_legend_above(Canvas& canvas, const Plot& plot, const std::vector<Series>& series,
+                       const std::vector<std::size_t>& entries, float sample, const Frame& fr) {
+    const Rect& A = fr.layout.tf.area;
+    const float fs = plot.font_size;
+    const AboveLayout above = above_layout(canvas, series, entries, fs, A.width());
+    const Vec2 origin{A.x0, A.y0 - top_axis_band(plot) - fr.band};
+    draw_legend_rows(canvas, series, entries, above, origin, sample, fs);
 }
 
 // The eight places for a legend box of `size` inside the data area: corners (top right, top left, bottom
@@ -891,7 +896,7 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     if (!y_axis.title.empty()) draw_y_title(canvas, *this, fr);
     if (!title.empty()) draw_panel_title(canvas, *this, fr);
     if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
-    if (heatmap_) draw_colorbar(canvas, A, *heatmap_, font_size, font_size + 1);
+    if (heatmap_ && heatmap_->color_bar) draw_colorbar(canvas, A, *heatmap_, font_size, font_size + 1);
 
     if (legend == LegendPosition::None || entries.empty()) return tf;
     if (legend == LegendPosition::Above) {
@@ -905,13 +910,27 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     std::optional<Vec2> below_size;
     if (below_geom) below_size = below_geom->size;
     const BoxSpot spot = legend_spot(canvas, *this, outside, place == LegendPlace::Below, lg.size, below_size,
-                                     heatmap_.has_value(), fr);
+                                     heatmap_ && heatmap_->color_bar, fr);
     if (spot.again != Again::no) {
         redraw = spot.again == Again::right ? LegendPlace::Right : LegendPlace::Below;
         return tf;
     }
     draw_legend_box(canvas, series_, entries, lg, spot.box, font_size);
     return tf;
+}
+
+void draw_color_bar(Canvas& canvas, const Rect& area, const HeatMap& hm, float font_size) {
+    draw_colorbar(canvas, area, hm, font_size, font_size + 1);
+}
+
+Vec2 legend_rows(Canvas& canvas, const std::vector<Series>& series, Vec2 origin, float width, float font_size,
+                 bool draw) {
+    const std::vector<std::size_t> entries = legend_entries(series);
+    const AboveLayout above = above_layout(canvas, series, entries, font_size, width);
+    if (draw && !entries.empty())
+        draw_legend_rows(canvas, series, entries, above, origin,
+                         legend_geom(canvas, series, entries, font_size).sample, font_size);
+    return above.size;
 }
 
 } // namespace fv::gfx

@@ -75,6 +75,8 @@ struct HeatmapData {
     int nx = 0, ny = 0;
     double x0 = 0, x1 = 1, y0 = 0, y1 = 1; // outer cell edges
     std::string label;                     // colour bar title
+    std::optional<double> vmin, vmax;      // the colour scale's ends; unset: the values' finite min, max
+    bool color_bar = true;                 // false: none beside this panel (small multiples draw one)
 };
 
 // A shaded interval of the x axis over the whole height (e.g. the times the tip slips).
@@ -128,6 +130,9 @@ struct TableData {
 struct FigureData {
     std::string id, title;
     std::vector<PanelData> panels; // laid out side by side
+    // > 0: small multiples (a family of maps): the panels on a grid of this many columns, row by row, their
+    // heat maps on one colour scale drawn once beside the grid, their legends merged into one below it.
+    int columns = 0;
     std::vector<TableData> tables;
 };
 

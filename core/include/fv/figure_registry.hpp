@@ -22,7 +22,7 @@ namespace fv {
 
 // What a caller (the command line, a spec file, the Python module) gives a figure that takes parameters.
 // Unset or empty: not given. theta_deg, rdisp, i and models hold one value, or a list where the figure
-// takes lists (FigureParamUse::list: rx, ry); figure_family.hpp reads and checks lists.
+// takes lists (FigureParamUse::list: rx, ry, map); figure_family.hpp reads and checks lists.
 struct FigureInputs {
     std::optional<double> zeta;        // one velocity ratio (fig4, scene)
     std::optional<ZetaSpan> zeta_span; // a range of them (rx, ry)
@@ -42,6 +42,9 @@ struct FigureParamUse {
     FigureParam param;
     bool required = false;
     bool list = false;
+    // A list of one value is written to ID.json's parameters as that number (the map: its files as they
+    // were before it took lists); else a list as a list, even of one (rx, ry).
+    bool one_as_number = false;
 };
 
 // The key of `p` in a spec file and ID.json's parameters (and the Python module's keyword): "zeta",

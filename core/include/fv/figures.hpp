@@ -114,8 +114,18 @@ struct SceneFigure {
     RatioCurvesFigure ratio;
 };
 
-// r_x over zetas x theta from 0 to theta_max_deg in theta_count steps, for one r_disp and i.
+// One map of a family of maps (map_family.hpp): its model, r_disp and i (NaN for the rigid model, which
+// has neither) and its panel's title, naming only what varies across the family.
+struct MapPanelSpec {
+    Model model = Model::dahl;
+    double rdisp = 2, i = 1;
+    std::string title;
+};
+
+// r_x over zetas x theta from 0 to theta_max_deg in theta_count steps, for one r_disp and i (the Dahl
+// model), or of the rigid model (Eq. 9; r_disp and i do not apply).
 struct MapFigure {
+    Model model = Model::dahl;
     double rdisp = 2;
     double i = 1;
     std::vector<double> zetas;
@@ -126,6 +136,11 @@ struct MapFigure {
     // gives every cell).
     double ode_tolerance = 0;
     Start start = Start::rest; // as in SceneFigure
+    // A family (render --figure map --rdisp 1,3,10 --i 0.5,1): one map per entry on the same grid (the
+    // fields above but model, rdisp and i), as small multiples on `columns` columns with one colour scale
+    // and one legend; empty: the one map of model, rdisp and i.
+    std::vector<MapPanelSpec> family;
+    int columns = 0;
 };
 
 // The figure, computed (data read and fitted) when the spec was made, the fit behind it, and the sentence

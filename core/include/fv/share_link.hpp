@@ -18,6 +18,8 @@
 //                           pinned r_x(zeta) curves by what they were computed at (at most kMaxPins, ','
 //                           between them): MODEL:THETA_DEG[:RDISP:I[:START]] (the Dahl model needs r_disp
 //                           and i; the rigid curve depends on theta alone); the page computes them again
+//   &lesson=3               the guided lesson's step shown (1 to the reader's number of steps,
+//                           docs/lessons.md): its setup first, then the link's other keys over it
 //
 // and the compare mode's setup B beside the setup above (A), each key as A's, read and checked alike (an
 // error, not a notice: they are a setup); any of them turns compare mode on, and what they leave out is
@@ -35,7 +37,7 @@
 // shared range table (param_ranges.hpp), dahl|rigid, rest|sliding or body|ground; %XX escapes are decoded
 // ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming the column, what was
 // wrong and what is allowed, except the app's view values (panel, present, speed, pins), which are ignored
-// with a notice.
+// with a notice (lesson too: the steps are the app's data, so the reader says how many there are).
 #pragma once
 
 #include "fv/lower_panel.hpp"
@@ -53,9 +55,9 @@
 
 namespace fv {
 
-inline constexpr const char* kLinkKeys =
-    "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, pins, b.zeta, b.theta, b.rdisp, b.i, "
-    "b.model, b.start";
+inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, "
+                                         "pins, lesson, b.zeta, b.theta, b.rdisp, "
+                                         "b.i, b.model, b.start";
 // A pins value longer than this is ignored (kMaxPins pins of shortest decimals fit with room to spare).
 inline constexpr std::size_t kMaxPinsText = 600;
 
@@ -75,7 +77,8 @@ struct ShareLink : SetupKeys {
     std::optional<bool> presentation;
     std::optional<double> speed;
     std::optional<std::vector<PinSource>> pins;
-    SetupKeys b; // compare mode's setup B (any key given: compare on)
+    std::optional<int> lesson; // a guided lesson's step, 1-based
+    SetupKeys b;               // compare mode's setup B (any key given: compare on)
     // View values that did not read and were ignored, each "column N: what; allowed: ...; ignored".
     std::vector<std::string> notices;
 };
@@ -85,7 +88,9 @@ struct LinkError : std::invalid_argument {
     using std::invalid_argument::invalid_argument;
 };
 
-ShareLink parse_share_link(std::string_view text);
+// `lesson_steps`: how many lesson steps the reader has (the app's lessons.json; app::parse_link passes
+// them); a lesson value outside 1..lesson_steps is ignored with a notice naming that range.
+ShareLink parse_share_link(std::string_view text, int lesson_steps = 0);
 
 // The link's values over `model` and `params` (theta converted from degrees as the command line does), and
 // its start over `start`. (The three-argument form leaves the start to the caller.) Given link.b, B's.
@@ -105,7 +110,7 @@ std::string share_link(Model model, const Params& params, Start start = Start::r
 std::string compare_link_keys(Model model, const Params& params, Start start = Start::rest);
 
 // The view's keys for the view fields `link` sets, in the order above ("&panel=map&present=1&speed=1.5&
-// pins=dahl:60:2:1"), or "": appended to share_link() by the app for what differs from its defaults.
+// pins=dahl:60:2:1&lesson=3"), or "": appended to share_link() by the app for what differs from its defaults.
 std::string view_link_keys(const ShareLink& link);
 
 // One pin as the link writes it ("dahl:60:2:1", "dahl:90:0.1:5:sliding", "rigid:30"), numbers that read

@@ -113,6 +113,10 @@ struct SteadyResult {
     // the steady period starts on the circle, and in words what stopped it when the status is not converged.
     int newton_steps = 0, plain_steps = 0, events_per_period = 0;
     long periods_skipped = 0;
+    // Periods of a slow creep towards the circle (i > 1) projected over on the way from the start, not
+    // integrated: about as many as the motion takes to get where the search went on (docs/model.md, "Slow
+    // creeps").
+    double creep_periods_skipped = 0;
     bool on_circle = false;
     std::string detail;
     Vec2 lag{0, 0}; // Scheme::ode: L = P(0) - T(0) of the steady period found (a warm start for neighbours)

@@ -2,6 +2,7 @@
 #include "reach.hpp"
 
 #include "closed_forms.hpp"
+#include "creep_skip.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -32,10 +33,9 @@ PeriodRequest state_only(const ReachSetup& s) {
     return PeriodRequest{s.rq.atol, s.rq.atol_force, false};
 }
 
-// One period of the motion from l (force units). For i = 0 a whole stuck period is a translation: the
-// motion is skipped to its first slip in closed form and that period finished (a later section of the
-// same motion). `pr` gets the last period integrated.
-bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult* last = nullptr) {
+} // namespace
+
+bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult* last) {
     const LagModel& m = *s.m;
     PeriodResult pr = run_lag(m, l, 0, kTwoPi, rq);
     if (!pr.ok) return false;
@@ -56,6 +56,8 @@ bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult
     if (last) *last = pr;
     return true;
 }
+
+namespace {
 
 bool advance_k(const ReachSetup& s, Vec2& l, int k, const PeriodRequest& rq) {
     for (int j = 0; j < k; ++j)
@@ -493,9 +495,13 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     xs.push_back(x);
     int chunk = 4;
     std::vector<int> tried_at(kMaxPeriodK + 1, -1000);
+    int creep_skips = 0;
     while (static_cast<int>(xs.size()) <= kFollowPeriods) {
+        Vec2 before = x;
+        PeriodResult last;
         for (int j = 0; j < chunk; ++j) {
-            if (!advance(s, x, rq_state)) {
+            before = x;
+            if (!advance(s, x, rq_state, &last)) {
                 st.status = SteadyStatus::integration_failed;
                 st.failure = "the integrator could not continue";
                 return out;
@@ -532,6 +538,21 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 return out;
             }
             break;
+        }
+        // A slow creep towards the circle (i > 1), where Newton's method from the chunk's end (above) found
+        // no state the motion reaches: skipped to a few periods before the motion leaves it
+        // (creep_skip.hpp), and followed from there.
+        if (creep_skips < kMaxCreepSkips && creep_period(m, before, last)) {
+            const CreepSkip cs = skip_creep(s, before, x);
+            out.periods += cs.periods;
+            if (cs.skipped > 0) {
+                ++creep_skips;
+                out.skipped += cs.skipped;
+                x = cs.x;
+                xs.assign(1, x);
+                std::fill(tried_at.begin(), tried_at.end(), -1000);
+                chunk = 4;
+            }
         }
     }
 

@@ -50,6 +50,7 @@ struct Reach {
     Orbit state;               // what the motion from the start settles into (its status says how sure)
     std::vector<Orbit> others; // stable states found on the way that the start does not reach (verified)
     int periods = 0;           // periods integrated
+    double skipped = 0;        // periods of slow creep projected over, not integrated (creep_skip.hpp)
 };
 
 // The periods followed from a start before its motion is called not periodic, and the window (after
@@ -57,6 +58,13 @@ struct Reach {
 inline constexpr int kFollowPeriods = 600;
 inline constexpr int kWindowPeriods = 1000;
 inline constexpr int kWindowBatches = 20;
+// Slow creeps skipped per start (each followed again from where its skip ends).
+inline constexpr int kMaxCreepSkips = 2;
+
+// One period of the motion from l (force units). For i = 0 a whole stuck period is a translation: the
+// motion is skipped to its first slip in closed form and that period finished (a later section of the
+// same motion). `last` gets the last period integrated.
+bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult* last = nullptr);
 
 // The state the motion from `start` (force units) settles into. `guesses`: first guesses for Newton's
 // method (a warm start, limits, the start itself), tried in order before the motion is followed.

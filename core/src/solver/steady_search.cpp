@@ -250,6 +250,7 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     int periods = 0;
     Orbit state;
     std::vector<Orbit> others;
+    double creep_skipped = 0;
     const Vec2 l_start = start_force(opt.start);
     if (opt.start == Start::rest) {
         state = default_search(setup, opt, periods);
@@ -260,6 +261,7 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     if (!state.reached && state.status != SteadyStatus::integration_failed) {
         Reach reach = solver::reach_from(setup, l_start, guesses_for(m, opt, l_start, rq));
         periods += reach.periods;
+        creep_skipped = reach.skipped;
         const bool better = ok(reach.state.status) || reach.state.status == SteadyStatus::not_periodic ||
                             opt.start != Start::rest;
         if (better) {
@@ -269,6 +271,7 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
         for (Orbit& o : reach.others) others.push_back(std::move(o));
     }
     fill_result(sol, state, p, periods);
+    res.creep_periods_skipped = creep_skipped;
     res.start = opt.start;
     res.start_reaches = state.reached;
     std::vector<SteadyState>& list = res.states;

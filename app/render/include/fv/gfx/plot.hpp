@@ -47,7 +47,13 @@ struct HeatMap {
     double x0 = 0, x1 = 1, y0 = 0, y1 = 1; ///< Data extent of the grid (outer cell edges).
     std::optional<double> vmin, vmax;      ///< Colour range; default: the finite min/max.
     std::string label;                     ///< Colour bar title (markup allowed).
+    /// false: no colour bar (and no room for one): small multiples on one scale draw a single bar for all of
+    /// them (draw_color_bar).
+    bool color_bar = true;
 };
+
+/// The room a colour bar takes right of the data area: the bar, its tick labels and its title.
+inline constexpr float kColorBarSpace = 90;
 
 /// Best: the first of the corners and edge middles inside the axes (top right, top left, bottom right,
 /// bottom left, top, bottom, right, left) whose box touches nothing drawn in the data area (series samples
@@ -124,5 +130,16 @@ class Plot {
     float legend_band(const Canvas& canvas) const;
     std::vector<std::function<void(Canvas&, const PlotTransform&)>> underlays_;
 };
+
+/// For small multiples, whose plots leave out their own (HeatMap::color_bar false): the colour bar of `hm`
+/// right of `area` (as a plot draws it beside its data area: from area.x1 on, as tall as `area`), its text at
+/// `font_size`.
+void draw_color_bar(Canvas& canvas, const Rect& area, const HeatMap& hm, float font_size = 13);
+
+/// For small multiples, whose plots leave out their own legends: the legend of `series` (each labelled one
+/// an entry: its line, marker and label) side by side in rows at most `width` wide, from `origin` (top
+/// left), as a LegendPosition::Above legend. Returns its size; draws only when `draw`.
+Vec2 legend_rows(Canvas& canvas, const std::vector<Series>& series, Vec2 origin, float width,
+                 float font_size = 13, bool draw = true);
 
 } // namespace fv::gfx
