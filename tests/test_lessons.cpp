@@ -188,3 +188,40 @@ TEST_CASE("lessons: the script's lesson N, checked when loaded", "[gui][lessons]
     std::ofstream(bad) << "0 lesson two\n";
     CHECK_THROWS_WITH(load_script(bad), Catch::StartsWith(bad + ":1: lesson = 'two' is not an integer"));
 }
+
+TEST_CASE("lessons: the mean step shows compare mode, A across and B along: both r_x are Eqs. (11) and (10)",
+          "[gui][lessons][compare]") {
+    const LessonStep* mean = find_lesson_step("mean");
+    REQUIRE(mean);
+    REQUIRE(mean->setup.b);
+    const Setup& b = *mean->setup.b;
+    CHECK(b.model == mean->setup.model); // what the step leaves out is A's
+    CHECK(b.params.zeta == mean->setup.params.zeta);
+    CHECK(b.params.theta == 0);
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    int n = 0;
+    for (const LessonStep& s : lesson_steps()) {
+        ++n;
+        if (&s == mean) break;
+    }
+    UiEdits go;
+    go.lesson = n;
+    a.sync(go);
+    REQUIRE(a.ui().session.compare);
+    CHECK(a.sim().tau() == 0);
+    CHECK(a.sim_b().tau() == 0); // one time base: both from their start
+    CHECK(a.sim_b().params().theta == 0);
+    a.worker().wait_idle();
+    a.worker_b().wait_idle();
+    const auto ca = a.worker().latest(), cb = a.worker_b().latest();
+    REQUIRE(ca);
+    REQUIRE(cb);
+    const double zeta = mean->setup.params.zeta;
+    CHECK(ca->current.rx == Approx(rx_perpendicular(zeta)).epsilon(1e-6));
+    CHECK(cb->current.rx == Approx(rx_parallel(zeta)).epsilon(1e-6));
+    // The next step has no B: compare mode goes off with it.
+    UiEdits next;
+    next.lesson = n + 1;
+    a.sync(next);
+    CHECK_FALSE(a.ui().session.compare);
+}

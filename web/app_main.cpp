@@ -89,7 +89,8 @@ std::string layout_json(const fv::app::ShownLayout& l) {
                   l.screen.stacked ? "true" : "false", l.controls_scroll_max);
     return b + std::string("\"controls\":") + rect_json(l.screen.controls) +
            ",\"top_view\":" + rect_json(l.panels.top_view) + ",\"force\":" + rect_json(l.panels.force) +
-           ",\"lower\":" + rect_json(l.panels.ratio) + "}";
+           ",\"lower\":" + rect_json(l.panels.ratio) +
+           (l.panels.top_view_b.width() > 0 ? ",\"top_view_b\":" + rect_json(l.panels.top_view_b) : "") + "}";
 }
 
 } // namespace
@@ -117,6 +118,12 @@ int main() {
                         o.start.params, o.start.amplitude_um, o.start.frequency_khz);
                     !why.empty())
                     throw fv::LinkError(why + " (the app's default amplitude and frequency)");
+                if (o.start.compare)
+                    if (const std::string why = fv::units::physical_view_error(
+                            o.start.b.params, o.start.amplitude_um, o.start.frequency_khz);
+                        !why.empty())
+                        throw fv::LinkError("setup B: " + why +
+                                            " (the app's default amplitude and frequency)");
             } catch (const fv::LinkError& e) {
                 o.start = fv::app::Session{}; // the defaults, whatever the link had set before its error
                 o.start_notice.clear();

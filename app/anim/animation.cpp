@@ -30,7 +30,7 @@ std::string pretty(double v) {
     return o.str();
 }
 
-std::string caption_of(const Spec& s, double rx) {
+std::string caption_of(const Setup& s, double rx) {
     const Params& p = s.params;
     std::string c = s.model == Model::rigid ? "rigid model" : "Dahl model, i = " + format_number("%g", p.i);
     c += "   ζ = " + format_number("%g", p.zeta) + "   θ = " + format_number("%g", p.theta * 180 / kPi) + "°";
@@ -39,13 +39,44 @@ std::string caption_of(const Spec& s, double rx) {
     return c;
 }
 
-// The top view's frame for the loop: the parameters' (top_view_frame.hpp). In the ground frame the body
+// The compare view's caption: each setup's angle and r_x, then what else differs per setup, then what the two
+// share once.
+std::string compare_caption_of(const Setup& a, double rx_a, const Setup& b, double rx_b) {
+    struct Item {
+        std::string name, va, vb;
+    };
+    const auto num = [](double v) { return format_number("%g", v); };
+    const bool dahl = a.model == Model::dahl || b.model == Model::dahl;
+    std::vector<Item> items{
+        {"model", a.model == Model::rigid ? "rigid" : "Dahl", b.model == Model::rigid ? "rigid" : "Dahl"},
+        {"ζ", num(a.params.zeta), num(b.params.zeta)}};
+    if (dahl) {
+        items.push_back({"r_{disp}", num(a.params.rdisp), num(b.params.rdisp)});
+        items.push_back({"i", num(a.params.i), num(b.params.i)});
+    }
+    std::string da, db, shared;
+    for (const Item& it : items) {
+        const std::string eq = it.name == "model" ? "" : it.name + " = ";
+        if (it.va == it.vb)
+            shared += (shared.empty() ? "" : ", ") + eq + it.va;
+        else
+            da += ", " + eq + it.va, db += ", " + eq + it.vb;
+    }
+    const auto side = [&](const char* n, const Setup& s, double rx, const std::string& more) {
+        return std::string(n) + ": θ = " + format_number("%g", s.params.theta * 180 / kPi) + "°" + more +
+               ", r_{x} = " + format_number("%.4f", rx);
+    };
+    return side("A", a, rx_a, da) + "    " + side("B", b, rx_b, db) +
+           (shared.empty() ? "" : "    (" + shared + ")");
+}
+
+// The top view's frame for the loop: the setup's (top_view_frame.hpp). In the ground frame the body
 // drifts D = zeta 2 pi per period; where the loop carries it across the frame at least once, the frame is
 // widened (about its centre, both ways) to D / k for whole k, so that the last frame wraps onto the first.
-FrameBox loop_frame(const Spec& s, double aspect) {
+FrameBox loop_frame(const Spec& spec, const Setup& s, double aspect) {
     FrameBox b = steady_frame(s.model, s.params, ViewState{}.trail_periods, aspect);
-    const double drift = s.periods * 2 * kPi * s.params.zeta, w = b.width();
-    if (s.frame != FrameChoice::ground || !(w > 0) || drift < w) return b;
+    const double drift = spec.periods * 2 * kPi * s.params.zeta, w = b.width();
+    if (spec.frame != FrameChoice::ground || !(w > 0) || drift < w) return b;
     const double k = (drift / std::floor(drift / w)) / w;
     const double mx = 0.5 * (b.x0 + b.x1), my = 0.5 * (b.y0 + b.y1);
     return {mx + k * (b.x0 - mx), mx + k * (b.x1 - mx), my + k * (b.y0 - my), my + k * (b.y1 - my)};
@@ -97,80 +128,96 @@ std::string check_spec(const Spec& s) {
     return {};
 }
 
-Frames::Frames(const Spec& spec)
-    : spec_(spec), count_(frame_count(spec)), start_(spec.model, spec.params), sim_(spec.model, spec.params) {
-    const SteadyResult steady = steady_ratio(spec.model, spec.params, spec.steady);
-    rx_ = steady.rx;
-    if (spec.view == View::dashboard)
-        curves_ = compute_ratio_curves(
-            {spec.model, spec.params, false, ratio_zeta_max(nullptr), spec.steady.start});
+SetupLoop::SetupLoop(const Spec& spec, const Setup& s, bool with_curves)
+    : setup(s), start(s.model, s.params), sim(s.model, s.params) {
+    SteadyOptions opt = spec.steady;
+    opt.start = s.start;
+    const SteadyResult steady = steady_ratio(s.model, s.params, opt);
+    rx = steady.rx;
+    if (with_curves)
+        curves = compute_ratio_curves({s.model, s.params, false, ratio_zeta_max(nullptr), s.start});
     // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
     // stepping settle on its fixed point, a whole number of periods at a time.
     Vec2 lag = Vec2::Zero();
-    if (spec.model == Model::dahl && !steady.period.empty())
+    if (s.model == Model::dahl && !steady.period.empty())
         lag = steady.period.back().P - steady.period.back().T;
-    const int n = start_.steps_per_period();
+    const int n = start.steps_per_period();
     // Two periods (the force plot's) less half a step: the history then always holds 2n samples (with
     // exactly two periods rounding would make it 2n or 2n + 1 by turns, and the oldest sample would sit on
     // the plot's edge), so the panels draw the same samples every period.
-    start_.set_history_periods(2 - 0.5 / n);
-    start_.start_steady(lag);
-    const double tol = kSettleTolerance * spec.params.zss();
+    start.set_history_periods(2 - 0.5 / n);
+    start.start_steady(lag);
+    const double tol = kSettleTolerance * s.params.zss();
     for (int k = 0; k < kMaxSettlePeriods; ++k) {
-        const Vec2 before = start_.P() - start_.T();
-        start_.step(n);
-        if (((start_.P() - start_.T()) - before).norm() <= tol) break;
+        const Vec2 before = start.P() - start.T();
+        start.step(n);
+        if (((start.P() - start.T()) - before).norm() <= tol) break;
     }
     // Two more periods: the trails and the force plot's history are the steady ones. And one step: no frame
     // falls on a multiple of pi, where the picture's choices that go by the phase (which end of the vibration
     // line is labelled) would be decided by rounding.
-    start_.step(2 * n + 1);
-    sim_ = start_;
-    box_ = loop_frame(spec, 0);
+    start.step(2 * n + 1);
+    sim = start;
+    box = loop_frame(spec, s, 0);
+}
+
+const LiveSim& SetupLoop::at_frame(int k, int count, int periods) {
+    if (k < at) {
+        sim = start;
+        at = 0;
+    }
+    const long n = static_cast<long>(periods) * sim.steps_per_period();
+    const auto steps_to = [&](int f) { return static_cast<long>(f) * n / count; };
+    sim.step(static_cast<int>(steps_to(k) - steps_to(at)));
+    at = k;
+    return sim;
+}
+
+Frames::Frames(const Spec& spec)
+    : spec_(spec), count_(frame_count(spec)),
+      a_(spec, {spec.model, spec.params, spec.steady.start}, spec.view != View::scene) {
+    if (spec.view == View::compare) {
+        b_.emplace(spec, spec.b, true);
+        // One time base: each settled for as many periods as it needed; the one behind runs on by whole
+        // periods (its steady state repeats), so that both loops start at the same tau up to a step.
+        const long ahead = std::lround((a_.start.tau() - b_->start.tau()) / (2 * kPi));
+        SetupLoop& behind = ahead > 0 ? *b_ : a_;
+        behind.start.step(static_cast<int>(std::labs(ahead)) * behind.start.steps_per_period());
+        behind.sim = behind.start;
+    }
     if (!spec.title.empty()) top_ = 46;
 }
 
 gfx::Rect Frames::top_view_area(gfx::Vec2 page) const {
     const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
-    return spec_.view == View::scene ? area : app::layout_dashboard(area).top_view;
+    return spec_.view == View::scene ? area : app::layout_dashboard(area, b_.has_value()).top_view;
 }
 
 void Frames::fit(gfx::Canvas& canvas, gfx::Vec2 page, float pixel_ratio) {
-    // Twice: the y tick labels' width depends on the frame, the frame on the area they leave.
+    // Twice: the y tick labels' width depends on the frame, the frame on the area they leave. (B's view is
+    // A's size: it takes A's aspect.)
     for (int pass = 0; pass < 2; ++pass) {
         canvas.begin(page, pixel_ratio, gfx::colors::white);
         ViewState view;
         view.frame = spec_.frame;
-        view.box = box_;
-        const gfx::PlotTransform t =
-            app::paint_panel(canvas, top_view_panel(sim_at(0), view), top_view_area(page));
+        view.box = a_.box;
+        const gfx::PlotTransform t = app::paint_panel(
+            canvas, top_view_panel(a_.at_frame(0, count_, spec_.periods), view), top_view_area(page));
         canvas.end_recording();
         if (t.area.width() > 0 && t.area.height() > 0) aspect_ = t.area.width() / t.area.height();
-        box_ = loop_frame(spec_, aspect_);
+        a_.box = loop_frame(spec_, a_.setup, aspect_);
+        if (b_) b_->box = loop_frame(spec_, b_->setup, aspect_);
     }
-}
-
-const LiveSim& Frames::sim_at(int k) {
-    if (k < at_) {
-        sim_ = start_;
-        at_ = 0;
-    }
-    // Frame k sits floor(k N / count) steps into the loop of N = periods x n steps: frame count is the
-    // loop's start again.
-    const long n = static_cast<long>(spec_.periods) * sim_.steps_per_period();
-    const auto steps_to = [&](int f) { return static_cast<long>(f) * n / count_; };
-    sim_.step(static_cast<int>(steps_to(k) - steps_to(at_)));
-    at_ = k;
-    return sim_;
 }
 
 int Frames::still_frame() {
-    const double w = box_.width();
+    const FrameBox& box = a_.box;
+    const double w = box.width();
     if (spec_.frame != FrameChoice::ground || !(w > 0)) return 0;
     // Where the top view puts the vibration centre: its x modulo the frame's width (live_panels.cpp).
     const auto off_middle = [&](int k) {
-        const double x = sim_at(k).vibration_centre().x();
-        return std::abs(x - w * std::floor((x - box_.x0) / w) - (box_.x0 + 0.5 * w));
+        const double x = a_.at_frame(k, count_, spec_.periods).vibration_centre().x();
+        return std::abs(x - w * std::floor((x - box.x0) / w) - (box.x0 + 0.5 * w));
     };
     int best = 0;
     double best_off = off_middle(0);
@@ -179,8 +226,28 @@ int Frames::still_frame() {
     return best;
 }
 
+PanelData Frames::top_view(SetupLoop& loop, int k, const char* name) {
+    const LiveSim& sim = loop.at_frame(k, count_, spec_.periods);
+    // The top view in the frame fixed for the loop's parameters (it never re-frames). Body frame: the camera
+    // moves with the body's mean velocity v_b, on where P would be without vibrating, the axis reading
+    // x - v_b t; the trails stay where they were laid down. Ground frame: the floor stands still and the
+    // body wraps round at the edges.
+    ViewState view;
+    view.frame = spec_.frame;
+    view.box = loop.box;
+    view.aspect = aspect_;
+    PanelData top = top_view_panel(sim, view, name);
+    if (spec_.frame == FrameChoice::body) {
+        const double centre = sim.vibration_centre().x();
+        shift_panel_x(top, -centre);
+        // Set rather than shifted back: the same numbers in every frame, not the same up to round-off.
+        top.x_min = loop.box.x0, top.x_max = loop.box.x1;
+        top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
+    }
+    return top;
+}
+
 void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
-    const LiveSim& sim = sim_at(k);
     gfx::TextStyle ts;
     ts.size = 14;
     ts.halign = gfx::HAlign::Center;
@@ -189,36 +256,32 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
         title.size = 17;
         canvas.text({page.x / 2, 4}, spec_.title, title);
     }
-    canvas.text({page.x / 2, top_ - 19}, caption_of(spec_, rx_), ts);
+    canvas.text({page.x / 2, top_ - 19},
+                b_ ? compare_caption_of(a_.setup, a_.rx, b_->setup, b_->rx) : caption_of(a_.setup, a_.rx),
+                ts);
     const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
-
-    // The top view in the frame fixed for the loop's parameters (it never re-frames). Body frame: the camera
-    // moves with the body's mean velocity v_b, on where P would be without vibrating, the axis reading
-    // x - v_b t; the trails stay where they were laid down. Ground frame: the floor stands still and the
-    // body wraps round at the edges.
-    ViewState view;
-    view.frame = spec_.frame;
-    view.box = box_;
-    view.aspect = aspect_;
-    PanelData top = top_view_panel(sim, view);
-    if (spec_.frame == FrameChoice::body) {
-        const double centre = sim.vibration_centre().x();
-        shift_panel_x(top, -centre);
-        // Set rather than shifted back: the same numbers in every frame, not the same up to round-off.
-        top.x_min = box_.x0, top.x_max = box_.x1;
-        top.x_title = "(x − v_{b}t) / x_{v}: the view moves with the body";
-    }
+    PanelData top = top_view(a_, k, b_ ? "A" : nullptr);
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
         return;
     }
+    const LiveSim& sim = a_.sim;
+    app::DashboardPanels panels;
+    CompareOverlay b;
+    if (b_) {
+        panels.top_view_b = top_view(*b_, k, "B");
+        b = {&b_->sim, b_->curves ? &*b_->curves : nullptr, false};
+    }
     // The force plot's time axis counts back from now, so that it reads the same every period.
-    PanelData force = force_panel_live(sim, curves_);
+    PanelData force = force_panel_live(sim, a_.curves, 0, b);
     shift_panel_x(force, -sim.tau());
     force.x_title = "time τ − τ_{now}";
-    app::paint_dashboard(
-        canvas, area,
-        {std::move(top), std::move(force), ratio_panel_live(curves_, false, {nullptr, spec_.vv_m_s})});
+    RatioOverlay overlay{nullptr, spec_.vv_m_s};
+    overlay.b = b;
+    panels.top_view = std::move(top);
+    panels.force = std::move(force);
+    panels.lower = ratio_panel_live(a_.curves, false, overlay);
+    app::paint_dashboard(canvas, area, panels);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include "fv/gfx/canvas.hpp"
 #include "fv/live_sim.hpp"
 #include "fv/ratio_curves.hpp"
+#include "fv/setup.hpp"
 
 #include <atomic>
 #include <functional>
@@ -40,9 +41,26 @@ int frame_count(const Spec& spec);
 // frame rate, MP4's even size, libx264 missing).
 std::string check_spec(const Spec& spec);
 
-// The loop's frames: the steady state of the live simulation (the continuous-time solver's fixed point,
-// then the animation's own stepping settled on it), sampled at periods x steps_per_period / frames steps
-// apart, so that the frame after the last is the first.
+// One setup's part of a loop: the live simulation settled on its steady state (the continuous-time solver's
+// fixed point, then the animation's own stepping), the simulation at the frame drawn, its steady r_x, its
+// r_x(zeta) curves (for the dashboard views) and the top view's frame held over the loop.
+struct SetupLoop {
+    SetupLoop(const Spec& spec, const Setup& setup, bool with_curves);
+    // The simulation at frame k of `count` in a loop of `periods` periods: floor(k N / count) steps into it
+    // (N = periods x steps per period), so that frame `count` is the loop's start again.
+    const LiveSim& at_frame(int k, int count, int periods);
+
+    Setup setup;
+    double rx = 0;
+    std::optional<RatioCurves> curves;
+    LiveSim start, sim;
+    int at = 0; // the frame sim is at
+    FrameBox box;
+};
+
+// The loop's frames: each setup's steady state (A's; in the compare view B's too, on the same time base: the
+// setups share the vibration and so its period 2 pi, and each is sampled at periods x its steps per period /
+// frames steps apart), so that the frame after the last is the first for both.
 class Frames {
   public:
     explicit Frames(const Spec& spec);
@@ -54,25 +72,24 @@ class Frames {
     // away), so that its frame fits the area exactly: the ground frame's wrap-around then falls on the
     // axes' edges. Without it the frame is the parameters' own, widened by the painter.
     void fit(gfx::Canvas& canvas, gfx::Vec2 page, float pixel_ratio);
-    // The frame the top view shows in every frame of the loop (relative to the vibration centre).
-    const FrameBox& frame_box() const { return box_; }
-    // The steady r_x the caption shows.
-    double rx() const { return rx_; }
+    // The frame the top view shows in every frame of the loop (relative to the vibration centre); B's in the
+    // compare view.
+    const FrameBox& frame_box() const { return a_.box; }
+    const FrameBox* frame_box_b() const { return b_ ? &b_->box : nullptr; }
+    // The steady r_x the caption shows (A's).
+    double rx() const { return a_.rx; }
     // The frame a still picture shows: 0, or in the ground frame the one with the body nearest the middle of
     // the frame (in frame 0 it may stand on the edge, drawn half at each side).
     int still_frame();
 
   private:
-    const LiveSim& sim_at(int k);
+    PanelData top_view(SetupLoop& loop, int k, const char* name);
 
     Spec spec_;
     int count_ = 0;
-    double rx_ = 0;
-    float top_ = 24; // the panels' top: below the caption, and the title where there is one
-    std::optional<RatioCurves> curves_;
-    LiveSim start_, sim_;
-    int at_ = 0; // the frame sim_ is at
-    FrameBox box_;
+    SetupLoop a_;
+    std::optional<SetupLoop> b_; // the compare view's setup B
+    float top_ = 24;             // the panels' top: below the caption, and the title where there is one
     double aspect_ = 0;
     gfx::Rect top_view_area(gfx::Vec2 page) const;
 };

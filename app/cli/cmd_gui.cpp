@@ -85,6 +85,11 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
         throw UsageError((given.empty() ? "" : given + ": ") + why +
                          (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
     }
+    // Compare mode's B (a link's b.* keys) likewise.
+    if (s.compare)
+        if (const std::string why = units::physical_view_error(s.b.params, s.amplitude_um, s.frequency_khz);
+            !why.empty())
+            throw UsageError("--link: setup B: " + why);
     // A malformed data file is a usage error before any window opens.
     if (!a.data.empty()) {
         ReadOptions ro;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "fv/params.hpp"
+#include "fv/setup.hpp"
 #include "fv/steady_state.hpp"
 #include "fv/top_view_frame.hpp"
 
@@ -17,8 +18,9 @@ enum class AnimationFormat { gif, mp4 };
 std::optional<AnimationFormat> animation_format(const std::string& path);
 
 // scene: the top view alone over the whole frame. dashboard: the app's picture without its control panel
-// (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x.
-enum class AnimationView { scene, dashboard };
+// (top view, force plot, r_x(zeta)); both under a one-line caption naming the parameters and r_x. compare:
+// the app's compare mode, the dashboard with setup B's top view beside A's and both on the plots.
+enum class AnimationView { scene, dashboard, compare };
 
 struct AnimationSpec {
     Model model = Model::dahl;
@@ -34,7 +36,9 @@ struct AnimationSpec {
     SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point (its start: the
                           // history that picks between coexisting steady states)
     double vv_m_s = 0;    // > 0: the r_x(zeta) axis also names v_v (as the app does with A and f)
-    std::string title;    // a line above the caption (a lesson step's title); none when empty
+    Setup b =
+        compare_default(Setup{}); // the compare view's setup B (its solver options: steady's, B's start)
+    std::string title;            // a line above the caption (a lesson step's title); none when empty
 };
 
 } // namespace fv

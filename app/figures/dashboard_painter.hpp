@@ -7,21 +7,27 @@
 #include "fv/gfx/canvas.hpp"
 #include "fv/gfx/plot.hpp"
 
+#include <optional>
+
 namespace fv::app {
 
 struct DashboardLayout {
     gfx::Rect top_view, force, ratio;
+    gfx::Rect top_view_b; // compare mode: setup B's top view beside A's (empty otherwise)
 };
 // The top view above, the force and lower panels side by side below; in an upright area (taller than 1.1
-// times its width) the three stacked.
-DashboardLayout layout_dashboard(const gfx::Rect& area);
+// times its width) the three stacked. compare: the top view's place split in two, A's and B's side by side
+// (one above the other where that place is upright).
+DashboardLayout layout_dashboard(const gfx::Rect& area, bool compare = false);
 
 struct DashboardPanels {
     PanelData top_view, force, lower;
+    std::optional<PanelData> top_view_b; // compare mode: setup B's top view
 };
 // Each panel's data <-> pixel mapping (the mouse reads positions through them).
 struct DashboardTransforms {
     gfx::PlotTransform top_view, force, ratio;
+    gfx::PlotTransform top_view_b; // compare mode (an empty area otherwise)
 };
 
 // The panel with its text, lines and markers k times larger (presentation mode).

@@ -215,6 +215,8 @@ gfx::Color ink_color(Ink ink, std::size_t series_index) {
         return gfx::Color::hex(0x8A8A8A);
     case Ink::black:
         return gfx::colors::black;
+    case Ink::setup_b:
+        return gfx::palette(4); // orange (setup A is blue)
     case Ink::automatic:
         break;
     }

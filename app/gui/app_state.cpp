@@ -35,6 +35,21 @@ void set_up(UiEdits& e, const LessonSetup& u) {
     e.frame = u.frame;
     e.playing = true;
     e.reset = true;
+    // Compare mode as the step has it: on with its B, or off.
+    e.compare = u.b.has_value();
+    e.b = SetupEdits{};
+    if (u.b)
+        e.b_setup = *u.b;
+    else
+        e.b_setup.reset();
+}
+
+// "" when the parameters may be shown: inside the range table and with a finite physical view (what the
+// panel shows in physical units must stay finite: rdisp 5e-324 would give z_ss = inf). A's and B's alike.
+std::string params_error(const Params& p, const SessionState& s) {
+    std::string err = range_error(p);
+    if (err.empty()) err = units::physical_view_error(p, s.amplitude_um, s.frequency_khz);
+    return err;
 }
 
 // The status line after a session has been opened.
@@ -45,7 +60,7 @@ std::string opened(const std::string& file, const std::string& loaded) {
 } // namespace
 
 AppState::AppState(const Session& start, std::optional<MeasurementSet> data, const std::string& session_file)
-    : sim_(start.model, start.params) {
+    : a_(start.a()), b_(start.b) {
     const std::string loaded = show_session(start, std::move(data));
     ui_.status = session_file.empty() ? loaded : opened(session_file, loaded);
 }
@@ -59,20 +74,31 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
     ui_.session.view.rewind = 0; // the simulation restarts: no history to look back into
     ui_.data.reset();
     const std::string loaded = data ? show_measured(ui_, std::move(*data)) : "";
-    sim_.set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
-    sim_.apply(ui_.session.model, ui_.session.params);
-    sim_.reset(ui_.session.start);
-    step_carry_ = 0;
+    for (SetupRun* run : {&a_, &b_})
+        run->set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
+    a_.apply(ui_.session.a());
+    b_.apply(ui_.session.b);
+    reset_sims();
     step_pending_ = false;
     refresh_units();
-    retarget_frame(true);
-    worker_.request(ratio_request());
+    retarget_frames(true);
+    request_curves(true, true);
     return loaded;
 }
 
-RatioRequest AppState::ratio_request() const {
-    return RatioRequest{ui_.session.model, ui_.session.params, ui_.session.panel == LowerPanel::map,
-                        ratio_zeta_max(ui_.data ? &*ui_.data : nullptr), ui_.session.start};
+RatioRequest AppState::ratio_request(const Setup& s, bool map) const {
+    return RatioRequest{s.model, s.params, map, ratio_zeta_max(ui_.data ? &*ui_.data : nullptr), s.start};
+}
+
+void AppState::request_curves(bool a, bool b) {
+    if (a) a_.worker().request(ratio_request(ui_.session.a(), ui_.session.panel == LowerPanel::map));
+    // B's curve only while it is shown (never its map: the lower panel's map is A's).
+    if (b && ui_.session.compare) b_.worker().request(ratio_request(ui_.session.b, false));
+}
+
+void AppState::reset_sims() {
+    a_.reset(ui_.session.start);
+    b_.reset(ui_.session.b.start);
 }
 
 void AppState::refresh_units() {
@@ -152,10 +178,7 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         } catch (const units::UnitError& x) {
             err = x.what();
         }
-        if (err.empty()) err = range_error(p);
-        // What the panel shows in physical units must stay finite (rdisp 5e-324 would give z_ss = inf).
-        if (err.empty())
-            err = units::physical_view_error(p, ui_.session.amplitude_um, ui_.session.frequency_khz);
+        if (err.empty()) err = params_error(p, ui_.session);
         if (err.empty())
             ui_.session.params = p, model_changed = true;
         else
@@ -204,20 +227,26 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         for (int k = 0; k < 2; ++k) view.pan[k] = std::clamp((*e.pan)[k], kPanRange.lo, kPanRange.hi);
     if (e.trail_periods) {
         view.trail_periods = std::clamp(*e.trail_periods, kTrailRange.lo, kTrailRange.hi);
-        sim_.set_history_periods(std::max(view.trail_periods, kHistoryPeriods));
+        for (SetupRun* run : {&a_, &b_})
+            run->set_history_periods(std::max(view.trail_periods, kHistoryPeriods));
     }
-    if (model_changed) sim_.apply(ui_.session.model, ui_.session.params);
-    retarget_frame(false); // a new frame only where the parameters, the trail or the area changed it
-    if (model_changed || ask_worker || data_changed || start_changed) worker_.request(ratio_request());
+    if (model_changed) a_.apply(ui_.session.a());
+    bool restart = false;
+    const bool b_changed = sync_compare(e, restart);
+    if (b_changed) b_.apply(ui_.session.b);
+    reset = reset || restart;
+    retarget_frames(false); // a new frame only where the parameters, the trail or the area changed it
+    request_curves(model_changed || ask_worker || data_changed || start_changed, b_changed || data_changed);
     if (e.pin) pin_current_curve(wait); // the curve of this frame's parameters (scripts wait for it)
-    if (reset) sim_.reset(ui_.session.start), step_carry_ = 0;
+    if (reset) reset_sims();
     // Time: any change of the model or a reset shows the live state again; scrubbing and stepping back
     // pause, so that the moment stays on screen.
-    if (model_changed || reset) ui_.session.view.rewind = 0;
+    if (model_changed || b_changed || reset) ui_.session.view.rewind = 0;
     if (e.rewind)
-        ui_.session.view.rewind = std::clamp(*e.rewind, 0.0, max_rewind(sim_)), ui_.session.playing = false;
+        ui_.session.view.rewind = std::clamp(*e.rewind, 0.0, max_rewind(a_.sim())),
+        ui_.session.playing = false;
     if (e.step_back)
-        ui_.session.view.rewind = std::min(ui_.session.view.rewind + frame_tau(), max_rewind(sim_)),
+        ui_.session.view.rewind = std::min(ui_.session.view.rewind + frame_tau(), max_rewind(a_.sim())),
         ui_.session.playing = false;
     if (e.jump_steady) jump_to_steady();
     step_pending_ = e.step;
@@ -231,28 +260,62 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         spec.steady.start = ui_.session.start;
         spec.frame = ui_.session.view.frame; // the top view as on screen
         spec.vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
+        // In compare mode the dashboard shows both setups, as on screen.
+        if (ui_.session.compare && spec.view == AnimationView::dashboard) {
+            spec.view = AnimationView::compare;
+            spec.b = ui_.session.b;
+        }
     }
     return act;
 }
 
-ViewState AppState::view() const {
+bool AppState::sync_compare(const UiEdits& e, bool& restart) {
+    SessionState& s = ui_.session;
+    bool changed = false, turned_on = false;
+    if (e.compare && *e.compare != s.compare) {
+        s.compare = *e.compare;
+        if (s.compare) {
+            // B starts beside A (after this frame's edits of A) at the other angle, both from tau = 0.
+            s.b = compare_default(s.a());
+            changed = restart = turned_on = true;
+            ui_.status = "compare: setup B beside A";
+        } else {
+            ui_.editing_b = false;
+            ui_.status = "compare off";
+        }
+    }
+    if (e.b_setup) {
+        if (const std::string err = params_error(e.b_setup->params, s); err.empty())
+            s.b = *e.b_setup, changed = restart = true;
+        else
+            ui_.status = "setup B: " + err;
+    }
+    if (e.b.model && *e.b.model != s.b.model) s.b.model = *e.b.model, changed = true;
+    if (e.b.start && *e.b.start != s.b.start) s.b.start = *e.b.start, changed = restart = true;
+    if (e.b.params) {
+        if (const std::string err = params_error(*e.b.params, s); err.empty())
+            s.b.params = *e.b.params, changed = true;
+        else
+            ui_.status = "setup B: " + err;
+    }
+    if (e.editing_b) ui_.editing_b = *e.editing_b && s.compare;
+    // B's view appears in its own frame at once (easing is for a frame on screen that changes).
+    if (turned_on) b_.retarget_frame(s.b, s.view.trail_periods, view_aspect_, true);
+    return changed && s.compare;
+}
+
+ViewState AppState::view_of(const SetupRun& run) const {
     ViewState v = ui_.session.view;
-    v.box = eased_frame(frame_from_, frame_to_, frame_ease_);
+    v.box = run.frame();
     v.aspect = view_aspect_;
     return v;
 }
 
-void AppState::retarget_frame(bool snap) {
-    const FrameBox to =
-        steady_frame(ui_.session.model, ui_.session.params, ui_.session.view.trail_periods, view_aspect_);
-    if (snap) {
-        frame_from_ = frame_to_ = to, frame_ease_ = 1;
-        return;
-    }
-    if (to == frame_to_) return;
-    frame_from_ = eased_frame(frame_from_, frame_to_, frame_ease_); // from where it is now: no jump
-    frame_to_ = to;
-    frame_ease_ = 0;
+void AppState::retarget_frames(bool snap) {
+    const double trail = ui_.session.view.trail_periods;
+    a_.retarget_frame(ui_.session.a(), trail, view_aspect_, snap);
+    // B's while it is shown; turned on, it eases from wherever it was left (or snaps with A).
+    if (ui_.session.compare || snap) b_.retarget_frame(ui_.session.b, trail, view_aspect_, snap);
 }
 
 double AppState::frame_tau() const {
@@ -260,23 +323,26 @@ double AppState::frame_tau() const {
 }
 
 void AppState::advance(double dt) {
-    // The frame eases in wall time, playing or not.
-    if (frame_ease_ < 1) frame_ease_ = std::min(1.0, frame_ease_ + dt / kFrameEaseSeconds);
-    // While rewound, playing replays the history towards the live state; then the simulation runs on.
+    // The frames ease in wall time, playing or not. Both setups run on one time base: the same periods of
+    // simulation time each frame (B's steps are its own, as fine as its parameters need).
+    const bool compare = ui_.session.compare;
+    a_.ease(dt);
+    if (compare) b_.ease(dt);
+    // While rewound, playing replays the history towards the live state; then the simulations run on.
     if (ui_.session.playing && ui_.session.view.rewind > 0) {
         ui_.session.view.rewind = std::max(0.0, ui_.session.view.rewind - dt * ui_.session.speed * 2 * kPi);
     } else if (ui_.session.playing) {
-        step_carry_ += dt * ui_.session.speed * sim_.steps_per_period();
-        const int n = static_cast<int>(step_carry_);
-        step_carry_ -= n;
-        sim_.step(n);
+        a_.run(dt * ui_.session.speed);
+        if (compare) b_.run(dt * ui_.session.speed);
     }
-    // One frame forward: through the history while rewound, else the simulation's steps of one frame.
+    // One frame forward: through the history while rewound, else the simulations' steps of one frame.
     if (step_pending_) {
-        if (ui_.session.view.rewind > 0)
+        if (ui_.session.view.rewind > 0) {
             ui_.session.view.rewind = std::max(0.0, ui_.session.view.rewind - frame_tau());
-        else
-            sim_.step(std::max(1, static_cast<int>(std::lround(frame_tau() / sim_.dtau()))));
+        } else {
+            a_.step_frame(frame_tau());
+            if (compare) b_.step_frame(frame_tau());
+        }
         step_pending_ = false;
     }
 }
@@ -286,9 +352,10 @@ void AppState::pin_current_curve(bool wait) {
         ui_.status = std::to_string(kMaxPins) + " curves pinned: clear the pins to pin more";
         return;
     }
-    if (wait) worker_.wait_idle();
-    const auto curves = worker_.latest();
-    if (!curves || !(curves->request == ratio_request())) {
+    if (wait) a_.worker().wait_idle();
+    const auto curves = a_.worker().latest();
+    if (!curves ||
+        !(curves->request == ratio_request(ui_.session.a(), ui_.session.panel == LowerPanel::map))) {
         ui_.status = "the curve is still being computed: pin it once it is drawn";
         return;
     }
@@ -299,23 +366,14 @@ void AppState::pin_current_curve(bool wait) {
 
 void AppState::jump_to_steady() {
     ui_.session.view.rewind = 0;
-    if (ui_.session.model == Model::rigid) {
-        ui_.status = "the rigid model has no transient: its friction follows the velocity at once";
-        return;
+    std::string why = a_.jump_to_steady(ui_.session.a());
+    // B onto its own steady state too (a rigid B has none to skip to and is steady already).
+    if (ui_.session.compare && ui_.session.b.model == Model::dahl) {
+        const std::string b_why = b_.jump_to_steady(ui_.session.b);
+        if (!b_why.empty()) why = "setup B: " + b_why;
     }
-    OdeOptions opt;
-    opt.start = ui_.session.start; // the state the chosen start reaches, where two coexist
-    const OdeSolution s = ode_solve(ui_.session.params, opt);
-    if (!ok(s.result.status) || !std::isfinite(s.lag.x()) || !std::isfinite(s.lag.y())) {
-        ui_.status =
-            std::string("no verified steady state to jump to here (") + to_string(s.result.status) + ")";
-        return;
-    }
-    // The solver's L* at a period start, then one period animated at once so that the trails, the force
-    // plot and the period mean show the steady motion.
-    sim_.start_steady(s.lag);
-    sim_.step(sim_.steps_per_period());
-    ui_.status = "on the steady state: P - T = L* at each period start (the solver's fixed point)";
+    ui_.status =
+        why.empty() ? "on the steady state: P - T = L* at each period start (the solver's fixed point)" : why;
 }
 
 } // namespace fv::app

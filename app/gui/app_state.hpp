@@ -9,6 +9,7 @@
 #include "measured_data.hpp"
 #include "ratio_worker.hpp"
 #include "session.hpp"
+#include "setup_run.hpp"
 #include "ui_state.hpp"
 
 #include "fv/live_sim.hpp"
@@ -54,37 +55,45 @@ class AppState {
     const UiState& ui() const { return ui_; }
     // The view to draw: the session's, with the top view's frame as it is now (eased over kFrameEaseSeconds
     // of wall time from the last parameter set's to this one's, by advance()).
-    ViewState view() const;
-    const LiveSim& sim() const { return sim_; }
-    RatioWorker& worker() { return worker_; }
+    ViewState view() const { return view_of(a_); }
+    const LiveSim& sim() const { return a_.sim(); }
+    RatioWorker& worker() { return a_.worker(); }
+    // Compare mode's setup B (running while ui().session.compare): as sim(), worker() and view() for A.
+    ViewState view_b() const { return view_of(b_); }
+    const LiveSim& sim_b() const { return b_.sim(); }
+    RatioWorker& worker_b() { return b_.worker(); }
     MechanismBase& mechanism() { return mechanism_; } // the mechanism panel's base, kept between frames
     int syncs() const { return syncs_; }              // how many frames' edits were applied
 
   private:
-    RatioRequest ratio_request() const;
+    ViewState view_of(const SetupRun& run) const;
+    RatioRequest ratio_request(const Setup& s, bool map) const;
+    void request_curves(bool a, bool b);
     void jump_to_steady();
     void pin_current_curve(bool wait);
     double frame_tau() const; // dimensionless time of one displayed frame at the current speed (1/60 s)
     void refresh_units();
-    // The frame for the parameters, trail and area in effect: eased to from the frame shown now, or
-    // (`snap`) shown at once.
-    void retarget_frame(bool snap);
+    // The frames for the parameters, trail and area in effect (B's while compare mode is on): eased to
+    // from the frames shown now, or (`snap`) shown at once.
+    void retarget_frames(bool snap);
+    // Both setups back to tau = 0, each from its start (one time base).
+    void reset_sims();
+    // Compare mode's edits: on or off, B's setup and its edits (checked as A's). Returns whether B's
+    // simulation must take new parameters, and sets `restart` when both must start again (compare turned on,
+    // B's start changed).
+    bool sync_compare(const UiEdits& e, bool& restart);
     // The whole state from `s` and `data`; the simulation restarts at tau = 0. Returns the data's status
     // line ("loaded FILE: N points"), or "" without data.
     std::string show_session(const Session& s, std::optional<MeasurementSet> data);
 
     UiState ui_;
-    LiveSim sim_;
-    RatioWorker worker_;
+    SetupRun a_, b_; // A always; B in compare mode
     MechanismBase mechanism_;
     DataFit fit_;
-    double step_carry_ = 0;
     bool step_pending_ = false;
     bool drop_fit_ = false; // a session was opened while a fit ran: its result is for another state
     int syncs_ = 0;
-    // The top view's frame: eased from `from` to `to`, `ease` of the way (0..1, in kFrameEaseSeconds).
-    FrameBox frame_from_, frame_to_;
-    double frame_ease_ = 1, view_aspect_ = 0;
+    double view_aspect_ = 0; // the top view's data area, width / height (A's; B's is the same size)
 };
 
 } // namespace fv::app

@@ -5,6 +5,8 @@
 #include "lesson_card.hpp"
 #include "lessons.hpp"
 
+#include "figures/figure_painter.hpp"
+
 #include "fv/figures.hpp"
 #include "fv/format.hpp"
 #include "fv/param_ranges.hpp"
@@ -35,6 +37,10 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.trail_periods) trail_periods = o.trail_periods;
     if (o.preset) preset = o.preset;
     if (o.lesson) lesson = o.lesson;
+    if (o.compare) compare = o.compare;
+    if (o.b_setup) b_setup = o.b_setup, b = SetupEdits{};
+    b.merge(o.b);
+    if (o.editing_b) editing_b = o.editing_b;
     if (o.zoom) zoom = o.zoom;
     if (o.pan) pan = o.pan;
     if (o.frame) frame = o.frame;
@@ -119,16 +125,58 @@ void draw_coexisting_states(const std::optional<RatioCurves>& curves, const Live
     ImGui::Unindent();
 }
 
-// The model's parameters, the model and the start (with the coexisting states where there are several).
+// The colours of setups A and B (the plots' blue and orange, ink_color), for the panel's text and buttons.
+ImVec4 setup_colour(bool b) {
+    const gfx::Color c = ink_color(b ? Ink::setup_b : Ink::body, 0);
+    return ImVec4(c.r, c.g, c.b, 1);
+}
+
+// Compare mode (turned on from the View menu or with C): its switch, and which setup the controls below
+// edit, in the setups' colours. Only while it is on: the panel keeps its rows otherwise.
+UiEdits draw_compare_controls(const UiState& ui) {
+    UiEdits e;
+    if (!ui.session.compare) return e;
+    bool compare = ui.session.compare;
+    if (ImGui::Checkbox("Compare A | B [C]", &compare)) e.compare = compare;
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Two setups side by side on one time base: A (blue) and B (orange), two top views, "
+                          "both force traces and both r_x points. Turned on, B is A at the other angle "
+                          "(θ = 90°, or 0° when A is at 90°).");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("edit:");
+    for (const bool b : {false, true}) {
+        ImGui::SameLine();
+        ImGui::PushStyleColor(ImGuiCol_Text, setup_colour(b));
+        if (ImGui::RadioButton(b ? "B##edit" : "A##edit", ui.editing_b == b)) e.editing_b = b;
+        ImGui::PopStyleColor();
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the sliders, the model and the start below set up %s (B key: switch)",
+                              b ? "B" : "A");
+    }
+    return e;
+}
+
+// The model's parameters, the model and the start (with the coexisting states where there are several) of
+// setup A, or of B when compare mode edits B: the same controls, their edits sent to the one shown.
 UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
                                 const std::optional<RatioCurves>& curves, const ShareAddress& share) {
     UiEdits e;
-    Params p = ui.session.params;
+    const bool edit_b = ui.session.compare && ui.editing_b;
+    const Setup& shown = edit_b ? ui.session.b : ui.session.a();
+    Params p = shown.params;
     double theta_deg = p.theta * 180 / kPi;
     bool changed = false;
-    ImGui::TextUnformatted("Parameters");
+    if (edit_b)
+        ImGui::TextColored(setup_colour(true), "Parameters of B");
+    else if (ui.session.compare)
+        ImGui::TextColored(setup_colour(false), "Parameters of A");
+    else
+        ImGui::TextUnformatted("Parameters");
     ImGui::SameLine();
     e.merge(draw_share_link(ui, share)); // the share link of this state, on the header's row
+    e.merge(draw_compare_controls(ui));
+    SetupEdits edits; // the setup's own, sent to A's or B's below
+    if (edit_b) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.9f, 0.62f, 0.0f, 0.25f));
     changed |= slider_double("ζ", &p.zeta, kSliders.zeta, "%.3f");
     range_tooltip("velocity ratio ζ = v_b / v_v, Eq. (6)", kSliders.zeta, kZetaRange);
     changed |= slider_double("θ [°]", &theta_deg, kSliders.theta_deg, "%.1f");
@@ -141,7 +189,7 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
         ImGui::SameLine();
     }
     ImGui::NewLine();
-    const bool dahl = ui.session.model == Model::dahl;
+    const bool dahl = shown.model == Model::dahl;
     if (!dahl) ImGui::BeginDisabled();
     changed |= slider_double("r_disp", &p.rdisp, kSliders.rdisp, "%.3g", true);
     range_tooltip("displacement ratio x_v / z_ss, Eq. (34): large = stiff contact", kSliders.rdisp,
@@ -159,12 +207,12 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
         ImGui::SetTooltip("%s", "i = 1: the classic Dahl law, the force rises smoothly to F_c");
     if (!dahl) ImGui::EndDisabled();
     int model = dahl ? 0 : 1;
-    if (ImGui::RadioButton("Dahl (compliant)", &model, 0)) e.model = Model::dahl;
+    if (ImGui::RadioButton("Dahl (compliant)", &model, 0)) edits.model = Model::dahl;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("%s",
                           "the asperity bends (Dahl law, Eq. 12): friction builds up over a stretch z_ss");
     ImGui::SameLine();
-    if (ImGui::RadioButton("rigid", &model, 1)) e.model = Model::rigid;
+    if (ImGui::RadioButton("rigid", &model, 1)) edits.model = Model::rigid;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "%s", "Coulomb friction, F_c against the velocity at every instant (Eq. 2; r_disp -> infinity)");
@@ -172,8 +220,8 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
     // where two coexist. The rigid model has no deflection to start from, so no choice there.
     if (!dahl) ImGui::BeginDisabled();
     const char* starts[] = {"from rest (paper)", "switched on while sliding"};
-    int start = ui.session.start == Start::sliding ? 1 : 0;
-    if (ImGui::Combo("start", &start, starts, 2)) e.start = start == 1 ? Start::sliding : Start::rest;
+    int start = shown.start == Start::sliding ? 1 : 0;
+    if (ImGui::Combo("start", &start, starts, 2)) edits.start = start == 1 ? Start::sliding : Start::rest;
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
         ImGui::SetTooltip(
             "%s",
@@ -185,12 +233,19 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
             "against v_b (P - T = z_ss along v_b, the force F_c); then the vibration is switched on.\n"
             "Choosing one starts the motion again from it; r_x and the r_x(ζ) curve are that start's.");
     if (!dahl) ImGui::EndDisabled();
-    if (dahl) draw_coexisting_states(curves, sim);
+    if (dahl && !edit_b) draw_coexisting_states(curves, sim);
+    if (edit_b) ImGui::PopStyleColor();
     if (changed) {
         p.theta = theta_deg * kPi / 180;
-        e.params = p;
+        edits.params = p;
     }
-
+    if (edit_b) {
+        e.b.merge(edits);
+    } else {
+        if (edits.model) e.model = edits.model;
+        if (edits.start) e.start = edits.start;
+        if (edits.params) e.params = edits.params;
+    }
     return e;
 }
 
@@ -295,6 +350,11 @@ void draw_readouts(const UiState& ui, const LiveSim& sim, const std::optional<Ra
     ImGui::Separator();
     // Readouts two to a line: the panel must leave room for the data section on an 800-pixel screen.
     const SimMoment now = moment_at(sim, ui.session.view.rewind);
+    // In compare mode these are A's (B's r_x is in the ratio plot's title).
+    if (ui.session.compare) {
+        ImGui::TextColored(setup_colour(false), "A:");
+        ImGui::SameLine();
+    }
     if (sim.model() == Model::rigid)
         ImGui::Text("Now  τ/2π %.2f   rigid: F = F_c against v", now.tau / (2 * kPi));
     else
@@ -445,6 +505,8 @@ UiEdits keyboard_edits(const UiState& ui) {
     if (help_key_pressed()) e.show_help = !ui.show_help;
     if (ImGui::IsKeyPressed('P', false)) e.presentation = !ui.session.presentation;
     if (ImGui::IsKeyPressed('R', false)) e.reset = true;
+    if (ImGui::IsKeyPressed('C', false)) e.compare = !ui.session.compare;
+    if (ImGui::IsKeyPressed('B', false) && ui.session.compare) e.editing_b = !ui.editing_b;
     if (ImGui::IsKeyPressed('S', false)) e.screenshot = true;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) e.quit = true;
     e.merge(lesson_keys(ui));

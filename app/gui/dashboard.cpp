@@ -4,11 +4,17 @@ namespace fv::app {
 
 DashboardPanels dashboard_panels(const LiveSim& sim, const ViewState& view,
                                  const std::optional<RatioCurves>& curves, bool busy, LowerPanel lower,
-                                 const RatioOverlay& overlay, MechanismBase* mechanism) {
+                                 const RatioOverlay& overlay, MechanismBase* mechanism,
+                                 const CompareSetup* b) {
     MechanismBase once;
     DashboardPanels panels;
-    panels.top_view = top_view_panel(sim, view);
-    panels.force = force_panel_live(sim, curves, view.rewind);
+    CompareOverlay on_plots;
+    if (b) {
+        panels.top_view_b = top_view_panel(b->sim, b->view, "B");
+        on_plots = {&b->sim, b->curves ? &*b->curves : nullptr, b->busy};
+    }
+    panels.top_view = top_view_panel(sim, view, b ? "A" : nullptr);
+    panels.force = force_panel_live(sim, curves, view.rewind, on_plots);
     switch (lower) {
     case LowerPanel::map:
         panels.lower = map_panel_live(sim, curves, busy);
@@ -19,10 +25,15 @@ DashboardPanels dashboard_panels(const LiveSim& sim, const ViewState& view,
     case LowerPanel::why:
         panels.lower = mechanism_panel_live(sim, mechanism ? *mechanism : once, view.rewind);
         break;
-    case LowerPanel::curves:
-        panels.lower = ratio_panel_live(curves, busy, overlay);
+    case LowerPanel::curves: {
+        RatioOverlay o = overlay;
+        o.b = on_plots;
+        panels.lower = ratio_panel_live(curves, busy, o);
         break;
     }
+    }
+    // The panels that show A alone say so beside B.
+    if (b && lower != LowerPanel::curves) panels.lower.title = "A: " + panels.lower.title;
     return panels;
 }
 

@@ -17,11 +17,22 @@ namespace fv::app {
 inline constexpr ParamRange kZoomRange{0.05, 20};
 inline constexpr ParamRange kPanRange{-1e6, 1e6};
 
+// Compare mode's setup B as the dashboard draws it: its simulation, its view (A's, with B's frame), its
+// curves.
+struct CompareSetup {
+    const LiveSim& sim;
+    ViewState view;
+    const std::optional<RatioCurves>& curves;
+    bool busy = false;
+};
+
 // The three panels: top view and force at the view's moment, and the lower panel asked for.
-// mechanism: the base kept between frames (nullptr: computed for this call).
+// mechanism: the base kept between frames (nullptr: computed for this call). b: compare mode's setup B (its
+// top view beside A's, its force trace and r_x point on the shared plots; the map, loop and why panels are
+// A's).
 DashboardPanels dashboard_panels(const LiveSim& sim, const ViewState& view,
                                  const std::optional<RatioCurves>& curves, bool busy,
                                  LowerPanel lower = LowerPanel::curves, const RatioOverlay& overlay = {},
-                                 MechanismBase* mechanism = nullptr);
+                                 MechanismBase* mechanism = nullptr, const CompareSetup* b = nullptr);
 
 } // namespace fv::app

@@ -14,11 +14,13 @@ UiEdits dashboard_mouse_edits(const ViewState& view, const LiveSim& sim, const D
     ImGuiIO& io = ImGui::GetIO();
     if (io.WantCaptureMouse) return e;
     const gfx::Vec2 m{io.MousePos.x, io.MousePos.y};
-    const auto& tv = t.top_view;
-    if (tv.area.contains(m)) {
+    // Compare mode's two top views share one view: the mouse over either zooms and pans both.
+    for (const gfx::PlotTransform* tv : {&t.top_view, &t.top_view_b}) {
+        if (!tv->area.contains(m)) continue;
         if (io.MouseWheel != 0) e.zoom = view.zoom * std::pow(0.85, io.MouseWheel);
         if (ImGui::IsMouseDragging(ImGuiMouseButton_Left)) {
-            const double sx = (tv.x1 - tv.x0) / tv.area.width(), sy = (tv.y1 - tv.y0) / tv.area.height();
+            const double sx = (tv->x1 - tv->x0) / tv->area.width(),
+                         sy = (tv->y1 - tv->y0) / tv->area.height();
             e.pan = Vec2(view.pan + Vec2(-io.MouseDelta.x * sx, io.MouseDelta.y * sy));
         }
         e.reset_view = ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);

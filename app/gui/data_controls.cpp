@@ -132,6 +132,7 @@ UiEdits draw_menu(const UiState& ui, FileDialogs& dialog) {
     if (ImGui::BeginMenu("View")) {
         if (ImGui::MenuItem("Presentation mode", "P", ui.session.presentation))
             e.presentation = !ui.session.presentation;
+        if (ImGui::MenuItem("Compare A | B", "C", ui.session.compare)) e.compare = !ui.session.compare;
         ImGui::EndMenu();
     }
     e.merge(draw_lessons_menu(ui));

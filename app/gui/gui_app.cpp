@@ -183,7 +183,10 @@ class GuiLoop {
         // frame that moves the model's parameters: the sync below supersedes the job in progress, so the
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
-        if (!queued_.moves_curves()) app_.worker().run_slice(std::chrono::milliseconds(6));
+        // B's curves (compare mode) get the frame's slice once A's are done.
+        if (!queued_.moves_curves())
+            (app_.worker().busy() || !ui.session.compare ? app_.worker() : app_.worker_b())
+                .run_slice(std::chrono::milliseconds(6));
         queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
         if (const gfx::Rect& a = transforms_.top_view.area; a.width() > 0 && a.height() > 0)
             queued_.view_aspect = static_cast<double>(a.width()) / a.height();
@@ -240,14 +243,17 @@ class GuiLoop {
         const bool busy = app_.worker().busy();
         gfx::Canvas& canvas = session_.canvas();
         canvas.begin(logical, session_.pixel_ratio(), gfx::colors::white);
+        const auto curves_b = ui.session.compare ? app_.worker_b().latest() : std::nullopt;
+        const CompareSetup b{app_.sim_b(), app_.view_b(), curves_b, app_.worker_b().busy()};
         const DashboardPanels panels =
             dashboard_panels(app_.sim(), app_.view(), curves, busy, ui.session.panel,
-                             {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins}, &app_.mechanism());
+                             {ui.data ? &*ui.data : nullptr, ui.vv_m_s, &ui.session.pins}, &app_.mechanism(),
+                             ui.session.compare ? &b : nullptr);
         // Beside the panel as built (presentation may have changed since).
         transforms_ = paint_dashboard(canvas, layout_.pictures, panels, present ? kPresentationScale : 1.0f);
         if (o_.on_layout)
             o_.on_layout({logical, session_.pixel_ratio(), session_.context().framebuffer_size(), layout_,
-                          layout_dashboard(layout_.pictures), controls_.scroll_max});
+                          layout_dashboard(layout_.pictures, ui.session.compare), controls_.scroll_max});
         times_.layout = Clock::now();
         canvas.end();
         session_.imgui().render(*ImGui::GetDrawData());

@@ -52,9 +52,12 @@ constexpr Entry kPlots[] = {
     {Ink::automatic, "start",
      "where the motion begins: from rest (T = P, the paper's start) or switched on while sliding (the "
      "asperity fully stretched); where two steady states coexist it decides which one the body settles into"},
+    {Ink::setup_b, "A | B",
+     "compare mode (C, View menu): setup A (blue) and B (orange) side by side on one time base, both "
+     "force traces and both r_x points; the parameter controls edit the one chosen (B key)"},
     {Ink::automatic, "keys",
-     "Space play/pause, ← → one frame, J steady state, R reset, S screenshot, F1 or ? "
-     "this help, Esc quit"},
+     "Space play/pause, ← → one frame, J steady state, R reset, C compare, B edit A or B, S screenshot, "
+     "F1 or ? this help, Esc quit"},
 };
 
 // The meanings' column starts after the widest term of both tables, so that no term runs into its meaning at

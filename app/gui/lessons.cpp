@@ -78,7 +78,7 @@ class StepReader {
         if (s.title.empty() || s.text.empty()) fail("empty title or text; allowed: plain words");
         const auto setup = step_.find("setup");
         if (setup == step_.end() || !setup->is_object()) fail("missing \"setup\"; allowed: an object");
-        only(*setup, {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed", "frame"});
+        only(*setup, {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed", "frame", "b"});
         LessonSetup& u = s.setup;
         const std::string model = text(*setup, "model");
         if (const auto m = parse_model(model))
@@ -102,7 +102,30 @@ class StepReader {
             u.frame = *f;
         else
             fail("frame \"" + frame + "\"; allowed: body, ground");
+        if (setup->contains("b")) u.b = read_b(setup->at("b"), {u.model, u.params, u.start});
         return s;
+    }
+
+    // "b": compare mode's setup B, each key as the step's own; one left out is compare_default's of the
+    // step's setup (its value, theta at the other angle).
+    Setup read_b(const json& b, const Setup& a) const {
+        if (!b.is_object()) fail("\"b\" is not an object; allowed: {\"theta\": 0, ...} (setup B)");
+        only(b, {"model", "zeta", "theta", "rdisp", "i", "start"});
+        Setup out = compare_default(a);
+        if (b.contains("model")) {
+            const std::string model = text(b, "model");
+            if (const auto m = parse_model(model))
+                out.model = *m;
+            else
+                fail("b: model \"" + model + "\"; allowed: dahl, rigid");
+        }
+        out.params.zeta = number(b, "zeta", kZetaRange, out.params.zeta);
+        out.params.theta = number(b, "theta", kThetaRange, out.params.theta * 180 / kPi) * kPi / 180;
+        out.params.rdisp = number(b, "rdisp", kRdispRange, out.params.rdisp);
+        out.params.i = number(b, "i", kIRange, out.params.i);
+        const std::string start = b.contains("start") ? text(b, "start") : to_string(out.start);
+        if (!parse_start(start, out.start)) fail("b: start \"" + start + "\"; allowed: rest, sliding");
+        return out;
     }
 
   private:

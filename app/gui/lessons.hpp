@@ -8,9 +8,11 @@
 #include "lower_panel.hpp"
 
 #include "fv/params.hpp"
+#include "fv/setup.hpp"
 #include "fv/steady_state.hpp"   // Start
 #include "fv/top_view_frame.hpp" // FrameChoice
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -25,6 +27,7 @@ struct LessonSetup {
     LowerPanel panel = LowerPanel::curves;
     double speed = 0.25;                   // vibration periods per second (kSpeedRange)
     FrameChoice frame = FrameChoice::body; // what stands still in the top view
+    std::optional<Setup> b;                // compare mode with this setup B beside the step's; none: off
 };
 
 struct LessonStep {

@@ -25,6 +25,8 @@ struct ScriptContext {
     UiEdits& edits;
     Params& params; // the frame's parameter edits so far (set params_changed when touched)
     bool& params_changed;
+    Params& b_params; // the same for compare mode's setup B
+    bool& b_changed;
 };
 
 struct ScriptAction {
@@ -40,6 +42,11 @@ namespace {
 void set_param(ScriptContext& c, double Params::*field, double v) {
     c.params.*field = v;
     c.params_changed = true;
+}
+// Setup B's parameter (compare mode; turns it on as a link's b.* key does).
+void set_b_param(ScriptContext& c, double Params::*field, double v) {
+    c.b_params.*field = v;
+    c.b_changed = true;
 }
 
 constexpr ParamRange kRewindRange{0, 1e6};
@@ -68,6 +75,32 @@ const ScriptAction kActions[] = {
          parse_start(s.text, start);
          c.edits.start = start;
      }},
+    {"compare",
+     ScriptArg::word,
+     {},
+     "on | off: compare mode, setup B beside A (on: B is A at the other angle)",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.compare = s.text == "on"; }},
+    {"b.zeta", ScriptArg::number, kZetaRange, "setup B's zeta (compare mode on)",
+     [](const ScriptEntry& s, ScriptContext& c) { set_b_param(c, &Params::zeta, s.number); }},
+    {"b.theta", ScriptArg::number, kThetaRange, "setup B's angle in degrees (compare mode on)",
+     [](const ScriptEntry& s, ScriptContext& c) { set_b_param(c, &Params::theta, s.number * kPi / 180); }},
+    {"b.rdisp", ScriptArg::number, kRdispRange, "setup B's r_disp (compare mode on)",
+     [](const ScriptEntry& s, ScriptContext& c) { set_b_param(c, &Params::rdisp, s.number); }},
+    {"b.i", ScriptArg::number, kIRange, "setup B's Dahl exponent i (compare mode on)",
+     [](const ScriptEntry& s, ScriptContext& c) { set_b_param(c, &Params::i, s.number); }},
+    {"b.model",
+     ScriptArg::word,
+     {},
+     "dahl | rigid: setup B's model (compare mode on)",
+     [](const ScriptEntry& s, ScriptContext& c) {
+         c.edits.b.model = *parse_model(s.text);
+         c.b_changed = true;
+     }},
+    {"edit",
+     ScriptArg::word,
+     {},
+     "a | b: which setup the panel's parameter controls edit in compare mode",
+     [](const ScriptEntry& s, ScriptContext& c) { c.edits.editing_b = s.text == "b"; }},
     {"vb", ScriptArg::number, kVbRange, "v_b in m/s (with the A and f in effect, as the panel's input)",
      [](const ScriptEntry& s, ScriptContext& c) { c.edits.vb_m_s = s.number; }},
     {"zss", ScriptArg::number, kZssRange, "z_ss in um (with the A in effect)",
@@ -240,8 +273,12 @@ std::string preset_ids() {
 
 // The value of a word action, or why it is not one.
 std::string word_error(const ScriptAction& a, const std::string& v) {
-    if (std::string(a.name) == "model")
-        return parse_model(v) ? "" : "model = " + quoted_text(v) + "; allowed: dahl, rigid";
+    if (std::string(a.name) == "model" || std::string(a.name) == "b.model")
+        return parse_model(v) ? "" : std::string(a.name) + " = " + quoted_text(v) + "; allowed: dahl, rigid";
+    if (std::string(a.name) == "compare")
+        return v == "on" || v == "off" ? "" : "compare = " + quoted_text(v) + "; allowed: on, off";
+    if (std::string(a.name) == "edit")
+        return v == "a" || v == "b" ? "" : "edit = " + quoted_text(v) + "; allowed: a, b";
     if (std::string(a.name) == "start") {
         Start unused = Start::rest;
         return parse_start(v, unused) ? "" : "start = " + quoted_text(v) + "; allowed: " + kStartNames;
@@ -324,11 +361,18 @@ UiEdits script_edits(const Script& s, int frame, const UiState& ui) {
     UiEdits e;
     const auto it = s.lines.find(frame);
     if (it == s.lines.end()) return e;
-    Params p = ui.session.params;
-    bool params_changed = false;
-    ScriptContext c{ui, e, p, params_changed};
+    // B's keys set B over the B shown, or with compare mode off over the B it would turn on with (A's
+    // setup before this frame's edits, at the other angle), and turn it on, as a link's b.* keys do.
+    const Setup b = ui.session.compare ? ui.session.b : compare_default(ui.session.a());
+    Params p = ui.session.params, pb = b.params;
+    bool params_changed = false, b_changed = false;
+    ScriptContext c{ui, e, p, params_changed, pb, b_changed};
     for (const ScriptEntry& entry : it->second) entry.action->apply(entry, c);
     if (params_changed) e.params = p;
+    if (b_changed) {
+        if (!ui.session.compare) e.compare = true, e.b_setup = b;
+        e.b.params = pb;
+    }
     return e;
 }
 

@@ -282,6 +282,7 @@ std::pair<std::string, ParamRange> number_key(const std::string& ptr) {
         return {ptr.back() == '0' ? "pan x" : "pan y", kPanRange};
     for (const auto& [key, range] : keys)
         if (ptr == std::string("/") + key || ptr == std::string("/view/") + key ||
+            ptr == std::string("/compare/") + key ||
             ptr.find(std::string("/") + key + "/") != std::string::npos)
             return {key, range};
     return {"", ParamRange{-DBL_MAX, DBL_MAX}};
@@ -351,6 +352,13 @@ std::string session_json(const Session& s) {
                      {"trail_periods", s.view.trail_periods},
                      {"frame", to_string(s.view.frame)},
                      {"presentation", s.presentation}};
+    if (s.compare)
+        j["compare"] = Json{{"model", to_string(s.b.model)},
+                            {"zeta", s.b.params.zeta},
+                            {"theta", theta_degrees(s.b.params.theta)},
+                            {"rdisp", s.b.params.rdisp},
+                            {"i", s.b.params.i},
+                            {"start", to_string(s.b.start)}};
     j["pins"] = Json::array();
     for (const PinnedCurve& p : s.pins) {
         Json rx = Json::array();
@@ -422,6 +430,35 @@ std::vector<PinnedCurve> read_pins(const Json& pins, const Reader& r) {
     return out;
 }
 
+// "compare": {"model": .., "zeta": .., "theta": .., "rdisp": .., "i": .., "start": ..}: compare mode on with
+// this setup B; a key left out is compare_default's of A (A's value, theta at the other angle).
+void read_compare(const Json& c, const Reader& r, Session& s) {
+    if (!c.is_object())
+        r.fail_at("/compare",
+                  "compare: expected an object {\"theta\": 0, ..} (setup B) or null, got " + type_name(c));
+    r.only(c, "/compare", {"model", "zeta", "theta", "rdisp", "i", "start"});
+    Setup b = compare_default(s.a());
+    std::string model = to_string(b.model), start = to_string(b.start);
+    r.get(c, "/compare", "model", model, one_of("model", {"dahl", "rigid"}));
+    b.model = *parse_model(model);
+    double theta_deg = theta_degrees(b.params.theta);
+    r.get(c, "/compare", "zeta", b.params.zeta, kZetaRange);
+    r.get(c, "/compare", "theta", theta_deg, kThetaRange);
+    if (c.contains("theta")) b.params.theta = theta_deg * kPi / 180;
+    r.get(c, "/compare", "rdisp", b.params.rdisp, kRdispRange);
+    r.get(c, "/compare", "i", b.params.i, kIRange);
+    r.get(c, "/compare", "start", start, one_of("start", {"rest", "sliding"}));
+    parse_start(start, b.start);
+    if (const std::string why = units::physical_view_error(b.params, s.amplitude_um, s.frequency_khz);
+        !why.empty())
+        r.fail_at(why.rfind("zeta", 0) == 0 && c.contains("zeta") ? "/compare/zeta"
+                  : c.contains("rdisp")                           ? "/compare/rdisp"
+                                                                  : "/compare",
+                  "setup B: " + why);
+    s.compare = true;
+    s.b = b;
+}
+
 } // namespace
 
 Session parse_session(const std::string& text, const std::string& file) {
@@ -458,7 +495,7 @@ Session parse_session(const std::string& text, const std::string& file) {
                   "key \"" + pos.duplicate().substr(1) + "\" is given twice; each key at most once", true);
     r.only(j, "",
            {"version", "model", "zeta", "theta", "rdisp", "i", "start", "amplitude_um", "frequency_khz",
-            "speed", "playing", "panel", "lesson", "view", "pins", "data"});
+            "speed", "playing", "panel", "lesson", "view", "compare", "pins", "data"});
     if (!j.contains("version"))
         r.fail_at("", "no \"version\"; a frictionviz session starts {\"version\": " +
                           std::to_string(kSessionVersion) + ", ...}");
@@ -532,6 +569,7 @@ Session parse_session(const std::string& text, const std::string& file) {
             }
         }
     }
+    if (j.contains("compare") && !j["compare"].is_null()) read_compare(j["compare"], r, s);
     if (j.contains("pins")) s.pins = read_pins(j["pins"], r);
     if (j.contains("data") && !j["data"].is_null()) {
         r.get(j, "", "data", s.data_file, [](const std::string& f) {

@@ -14,6 +14,9 @@
 //     "lesson": 3,                             the guided lesson's step on screen (written only during a
 //                                              lesson; 0 or missing: none; lessons.hpp)
 //     "view": {"zoom": 1, "pan": [0, 0], "follow": true, "trail_periods": 1.5, "presentation": false},
+//     "compare": {"model": "dahl", "zeta": 0.15, "theta": 0, "rdisp": 2, "i": 1, "start": "rest"},
+//                                              compare mode's setup B (written only when on; null or left
+//                                              out: off; a key left out: A's, theta at the other angle)
 //     "pins": [{"label": "..", "zeta": [..], "r_x": [..], "link": "dahl:60:2:1"}],   pinned r_x(zeta)
 //                                              curves (at most 6; null: a gap; link: optional, what the
 //                                              curve was computed at, as a share link's pins= has it)

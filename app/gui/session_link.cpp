@@ -28,7 +28,8 @@ std::string session_link(const SessionState& s) {
         if (p.source) pins.push_back(*p.source);
     if (!pins.empty()) view.pins = std::move(pins);
     if (s.lesson != 0) view.lesson = s.lesson;
-    return share_link(s.model, s.params, s.start, s.view.frame) + view_link_keys(view);
+    return share_link(s.model, s.params, s.start, s.view.frame) +
+           (s.compare ? compare_link_keys(s.b.model, s.b.params, s.b.start) : "") + view_link_keys(view);
 }
 
 std::string share_address(const ShareAddress& where, const SessionState& s) {
@@ -51,8 +52,17 @@ void apply_link(const ShareLink& link, Session& s) {
         s.model = u.model, s.params = u.params, s.start = u.start;
         s.panel = u.panel, s.speed = u.speed, s.view.frame = u.frame;
         s.lesson = *link.lesson;
+        s.compare = u.b.has_value(); // compare mode as the step has it
+        if (u.b) s.b = *u.b;
     }
     apply_share_link(link, s.model, s.params, s.start, s.view.frame);
+    // Any of B's keys: compare mode, B's keys over the step's B, or over A (as the link left it) at the other
+    // angle.
+    if (link.b.any()) {
+        if (!s.compare) s.b = compare_default(s.a());
+        s.compare = true;
+        apply_share_link(link.b, s.b.model, s.b.params, s.b.start);
+    }
     if (link.panel) s.panel = *link.panel;
     if (link.presentation) s.presentation = *link.presentation;
     if (link.speed) s.speed = *link.speed;

@@ -28,7 +28,8 @@ struct ShareAddress {
 // "" when `base` can take a link (http:// or https://, printable, no query or fragment), else why not.
 std::string link_base_error(const std::string& base);
 
-// The link of the state: share_link() of the setup, then view_link_keys() of what differs from a default
+// The link of the state: share_link() of the setup (A's), compare_link_keys() of B in compare mode, then
+// view_link_keys() of what differs from a default
 // SessionState (the link of a default view is the setup's keys alone, as before the view keys existed).
 // Pins whose source is not known (an older session file) are left out.
 std::string session_link(const SessionState& s);

@@ -8,6 +8,7 @@
 
 #include "fv/measurements.hpp"
 #include "fv/params.hpp"
+#include "fv/setup.hpp"
 #include "fv/steady_state.hpp" // Start
 
 #include <optional>
@@ -18,12 +19,10 @@ namespace fv::app {
 
 // What a session file holds (session.hpp) apart from its data file: the setup a teacher hands a class. The
 // app keeps it as one value (UiState::session): saving writes it, opening a session replaces it.
-struct SessionState {
-    Model model = Model::dahl;
-    Params params{0.15, kPi / 2, 2, 1};
-    // The history (docs/model.md, "Which steady state"): where the animation starts (reset, a new start) and
-    // which of coexisting steady states the readouts and the r_x(zeta) curve report.
-    Start start = Start::rest;
+// Its Setup (fv/setup.hpp: model, params, start) is setup A, the one the app always shows. start, the history
+// (docs/model.md, "Which steady state"): where the animation starts (reset, a new start) and which of
+// coexisting steady states the readouts and the r_x(zeta) curve report.
+struct SessionState : Setup {
     // The physical view of zeta and r_disp: v_b = zeta 2 pi f A, z_ss = A / r_disp (units.hpp). Default:
     // the experiment of the paper's Fig. 19 (Littmann et al., Sec. 4: 0.7 um at 60 kHz).
     double amplitude_um = 0.7, frequency_khz = 60;
@@ -33,12 +32,17 @@ struct SessionState {
     bool presentation = false; // larger type, thicker lines, the advanced panels folded away (View menu, P)
     ViewState view;            // its rewind is not saved: an opened session restarts the simulation
     std::vector<PinnedCurve> pins;
+    // Compare mode: setup B beside A, on A's time base, speed, view and vibration (A and f).
+    bool compare = false;
+    Setup b = compare_default(Setup{});
+    const Setup& a() const { return *this; }
     int lesson = 0; // the lesson step shown above the controls (1-based, lessons.hpp); 0: none
 };
 
 struct UiState {
     SessionState session;
     bool show_help = false; // the overlay that explains every symbol (F1, ?)
+    bool editing_b = false; // compare mode: the panel's parameter controls edit setup B (else A)
     std::string status;     // last message (file written, ...)
 
     // The physical view of session.params under A and f, converted once per frame (AppState::sync): v_v = 2
@@ -49,6 +53,19 @@ struct UiState {
     // gives v_b keeps it per point (Measurement::vb): A or f changes convert again, never re-read the file.
     std::optional<MeasurementSet> data;
     bool fitting = false; // a fit of r_disp and i to the data is running
+};
+
+// Edits of one setup's model, start and parameters.
+struct SetupEdits {
+    std::optional<Model> model;
+    std::optional<Start> start; // another start restarts the animation from it
+    std::optional<Params> params;
+    bool any() const { return model || start || params; }
+    void merge(const SetupEdits& o) {
+        if (o.model) model = o.model;
+        if (o.start) start = o.start;
+        if (o.params) params = o.params;
+    }
 };
 
 struct UiEdits {
@@ -92,13 +109,20 @@ struct UiEdits {
     std::optional<std::string> preset;
     // The lesson step to show and set up (1-based); 0 closes the lesson, the setup staying as it is.
     std::optional<int> lesson;
+    // Compare mode on (setup B set to compare_default of A after this frame's edits, unless `b` or
+    // `b_setup` says otherwise) or off; B's whole setup (a lesson, a link); edits of B (the panel, a script,
+    // applied after b_setup); which setup the panel edits.
+    std::optional<bool> compare;
+    std::optional<Setup> b_setup;
+    SetupEdits b;
+    std::optional<bool> editing_b;
 
     // Later edits of the same field win; actions accumulate.
     void merge(const UiEdits& o);
     // Whether these edits may change the model or its parameters, and so the r_x(zeta) curves.
     bool moves_curves() const {
         return model || start || params || amplitude_um || frequency_khz || vb_m_s || zss_um ||
-               open_session || preset || lesson;
+               open_session || preset || lesson || compare || b_setup || b.any();
     }
 };
 

@@ -196,18 +196,22 @@ double max_rewind(const LiveSim& sim) {
     return sim.history().empty() ? 0 : sim.tau() - sim.history().front().tau;
 }
 
-PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
+PanelData top_view_panel(const LiveSim& sim, const ViewState& view, const char* setup) {
     const Params& p = sim.params();
     const bool rigid = sim.model() == Model::rigid;
     const SimMoment m = moment_at(sim, view.rewind);
     const bool slip = m.slip;
     PanelData panel = scene::top_view_axes();
-    panel.legend = Legend::outside; // the trail moves: a legend inside would cover it sooner or later
-    panel.title = std::string("top view: ") +
-                  (rigid ? "rigid body, friction opposes the velocity"
-                         : (slip ? "tip T slips: z = z_{ss} (on the circle)"
-                                 : (p.i == 0 ? "tip T sticks: z < z_{ss} (inside the circle)"
-                                             : "tip T creeps: z < z_{ss} (inside the circle)")));
+    // The trail moves: a legend inside would cover it sooner or later. Compare mode: none, so that the two
+    // views get the same room (a legend beside one only would halve it; the help overlay names every symbol).
+    panel.legend = setup ? Legend::none : Legend::outside;
+    const std::string head =
+        setup ? std::string(setup) + ": θ = " + format_number("%.0f°", p.theta * 180 / kPi) + ", "
+              : "top view: ";
+    panel.title = head + (rigid ? "rigid body, friction opposes the velocity"
+                                : (slip ? "tip T slips: z = z_{ss} (on the circle)"
+                                        : (p.i == 0 ? "tip T sticks: z < z_{ss} (inside the circle)"
+                                                    : "tip T creeps: z < z_{ss} (inside the circle)")));
 
     // Fading trails: older fifths of the history drawn more transparent.
     const auto& h = sim.history();
@@ -292,7 +296,54 @@ PanelData top_view_panel(const LiveSim& sim, const ViewState& view) {
     return panel;
 }
 
-PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind) {
+namespace {
+
+// The period mean of F_x before each instant in [t0, t1] (the history's running sums): once the transient is
+// over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
+SeriesData period_mean_series(const LiveSim& sim, double t0, double t1, std::size_t stride, std::string label,
+                              Ink ink) {
+    SeriesData run{std::move(label), {}, {}, ink, Dash::dashed, Mark::none, 1.6f};
+    const auto& h = sim.history();
+    const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
+    for (std::size_t k = n; k < h.size(); k += stride) {
+        if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
+        run.x.push_back(h[k].tau), run.y.push_back((h[k].fx_sum - h[k - n].fx_sum) / static_cast<double>(n));
+    }
+    return run;
+}
+
+// The steady r_x of `curves` across [t0, t1] when they are the simulation's (their value is in the panel
+// and the ratio plot's title: the legend's rows above the axes stay short).
+void add_steady_line(PanelData& panel, const LiveSim& sim, const RatioCurves* curves, double t0, double t1,
+                     Ink ink) {
+    if (!curves || curves->request.params.zeta != sim.params().zeta) return;
+    // Unlabelled in a setup's colour (compare mode names the kind of line once, in black), unless unverified.
+    const bool verified = ok(shown_status(curves->current));
+    const std::string label = ink == Ink::rigid
+                                  ? std::string("steady r_{x}") + (verified ? "" : " (NOT VERIFIED)")
+                              : verified ? ""
+                                         : "steady r_{x} NOT VERIFIED";
+    panel.series.push_back(hline(label, t0, t1, curves->current.rx, ink, Dash::dotted));
+}
+
+// One setup's F_x over [t0, t1], for compare mode.
+SeriesData fx_series(const LiveSim& sim, double t0, double t1, std::size_t stride, std::string label,
+                     Ink ink) {
+    SeriesData s{std::move(label), {}, {}, ink, Dash::solid, Mark::none, 2};
+    const auto& h = sim.history();
+    for (std::size_t k = 0; k < h.size(); k += stride) {
+        if (h[k].tau < t0) continue;
+        if (h[k].tau > t1) break;
+        s.x.push_back(h[k].tau), s.y.push_back(h[k].F.x());
+    }
+    return s;
+}
+
+} // namespace
+
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind,
+                           const CompareOverlay& b) {
     PanelData panel = scene::force_axes(titles::kTime);
     panel.title = "friction force (F_{x} > 0 resists v_{b}), last periods";
     // The curves scroll through every part of the axes: a legend inside would cover them sooner or later.
@@ -301,8 +352,23 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
     const double t1 = std::max(moment_at(sim, rewind).tau, 0.5), t0 = std::max(0.0, t1 - 2 * kPi * 2.0);
     panel.x_min = t0;
     panel.x_max = t1;
-    scene::ForceCurves f;
     const std::size_t stride = stride_for(h.size(), 400);
+    if (b.sim) {
+        // Compare mode: the two setups on one time base, A in blue and B in orange.
+        const std::size_t stride_b = stride_for(b.sim->history().size(), 400);
+        panel.title = "friction force along v_{b}: A and B, last periods";
+        // Four legend entries, not six: the setups by colour, the kinds of line by dash.
+        panel.series.push_back(fx_series(sim, t0, t1, stride, "A: F_{x}", Ink::body));
+        panel.series.push_back(fx_series(*b.sim, t0, t1, stride_b, "B: F_{x}", Ink::setup_b));
+        panel.series.push_back(period_mean_series(sim, t0, t1, stride, "", Ink::body));
+        panel.series.push_back(period_mean_series(*b.sim, t0, t1, stride_b, "", Ink::setup_b));
+        add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, Ink::body);
+        add_steady_line(panel, *b.sim, b.curves, t0, t1, Ink::setup_b);
+        panel.series.push_back(key("period mean", Ink::black, 1.6f, 1, Dash::dashed));
+        panel.series.push_back(key("steady r_{x}", Ink::black, 1.5f, 1, Dash::dotted));
+        return panel;
+    }
+    scene::ForceCurves f;
     for (std::size_t k = 0; k < h.size(); k += stride) {
         if (h[k].tau < t0) continue;
         if (h[k].tau > t1) break;
@@ -323,21 +389,9 @@ PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>&
         }
         panel.series.push_back(key("T slips", Ink::slip, 9, 0.25f));
     }
-    // F_x averaged over the period before each instant (the history's running sums): once the transient is
-    // over it settles on the steady r_x, which is how the period mean of Eq. (30) becomes the ratio.
-    SeriesData run{"period mean F_{x}", {}, {}, Ink::black, Dash::dashed, Mark::none, 1.6f};
-    const std::size_t n = static_cast<std::size_t>(sim.steps_per_period());
-    for (std::size_t k = n; k < h.size(); k += stride) {
-        if (h[k].tau < t0) continue;
-        if (h[k].tau > t1) break;
-        run.x.push_back(h[k].tau), run.y.push_back((h[k].fx_sum - h[k - n].fx_sum) / static_cast<double>(n));
-    }
+    SeriesData run = period_mean_series(sim, t0, t1, stride, "period mean F_{x}", Ink::black);
     if (!run.x.empty()) panel.series.push_back(std::move(run));
-    // Its value is in the panel and the ratio plot's title: the legend's rows above the axes stay short.
-    if (curves && curves->request.params.zeta == sim.params().zeta)
-        panel.series.push_back(
-            hline(std::string("steady r_{x}") + (ok(shown_status(curves->current)) ? "" : " (NOT VERIFIED)"),
-                  t0, t1, curves->current.rx, Ink::rigid, Dash::dotted));
+    add_steady_line(panel, sim, curves ? &*curves : nullptr, t0, t1, Ink::rigid);
     return panel;
 }
 
@@ -347,6 +401,52 @@ double ratio_zeta_max(const MeasurementSet* data) {
         for (const Measurement& m : data->points) zmax = std::max(zmax, 1.05 * m.zeta);
     return std::min(zmax, kMaxZeta);
 }
+
+namespace {
+
+// A curve's legend entry: the model and what it was computed at. Compare mode (`other`: the other setup's
+// curves, or null while they compute) names the setup (`prefix`) and its angle, the two setups' usual
+// difference, and r_disp and i only where they differ from the other's: the legend stays short enough to
+// leave the r_x points free on a small plot.
+std::string curve_label(const RatioCurves& c, const std::string& prefix = "",
+                        const RatioCurves* other = nullptr) {
+    const Params& p = c.request.params;
+    const bool rigid = c.model_rx.empty();
+    const std::string failed =
+        c.model_failed > 0 ? " (" + std::to_string(c.model_failed) + " failed points not drawn)" : "";
+    if (prefix.empty())
+        return "Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp) +
+               failed;
+    std::string s =
+        prefix + (rigid ? "rigid" : "Dahl") + ", θ = " + format_number("%.0f°", p.theta * 180 / kPi);
+    if (rigid) return s;
+    const Params* q = other && !other->model_rx.empty() ? &other->request.params : nullptr;
+    if (!q || q->i != p.i) s += ", i = " + format_number("%g", p.i);
+    if (!q || q->rdisp != p.rdisp) s += ", r_{disp} = " + format_number("%.3g", p.rdisp);
+    return s + failed;
+}
+
+// Compare mode's setup B on the ratio plot: its curve (the Dahl model's, or the rigid one for the rigid
+// model) and its steady r_x point in orange, and its r_x in the title beside A's.
+void add_compare_curve(PanelData& panel, const CompareOverlay& b, const RatioCurves& a) {
+    if (!b.curves) {
+        panel.title += "   B: computing…";
+        return;
+    }
+    const RatioCurves& c = *b.curves;
+    const SteadyStatus st = shown_status(c.current);
+    panel.title += std::string("   B: ") + (b.busy ? "updating…  " : "") +
+                   "r_{x} = " + format_number("%.4f", c.current.rx) +
+                   (c.request.start == Start::sliding ? "  from sliding" : "") +
+                   (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
+    const bool rigid = c.model_rx.empty();
+    panel.series.push_back({curve_label(c, "B: ", &a), c.zetas, rigid ? c.rigid_rx : c.model_rx, Ink::setup_b,
+                            rigid ? Dash::dashed : Dash::solid, Mark::none, 2.2f});
+    panel.points.push_back({Vec2(c.request.params.zeta, c.current.rx), Ink::setup_b,
+                            ok(st) ? Mark::diamond : Mark::cross, "B", 12});
+}
+
+} // namespace
 
 PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, const RatioOverlay& overlay) {
     PanelData panel = scene::ratio_axes(ratio_zeta_max(overlay.data));
@@ -372,19 +472,22 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
     }
     const Params& p = curves->request.params;
     const SteadyStatus st = shown_status(curves->current);
-    panel.title = std::string(busy ? "updating…  " : "") +
+    const bool compare = overlay.b.sim != nullptr;
+    panel.title = std::string(busy ? "updating…  " : "") + (compare ? "A: " : "") +
                   "r_{x} = " + format_number("%.4f", curves->current.rx) +
-                  ",  r_{y} = " + format_number("%.4f", curves->current.ry) +
+                  (compare ? "" : ",  r_{y} = " + format_number("%.4f", curves->current.ry)) +
                   (curves->request.start == Start::sliding ? "  from sliding" : "") +
                   (ok(st) ? "" : std::string("  NOT VERIFIED: ") + to_string(st));
     if (!curves->model_rx.empty())
-        panel.series.push_back(
-            {"Dahl, i = " + format_number("%g", p.i) + ", r_{disp} = " + format_number("%.3g", p.rdisp) +
-                 (curves->model_failed > 0
-                      ? " (" + std::to_string(curves->model_failed) + " failed points not drawn)"
-                      : ""),
-             curves->zetas, curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
+        panel.series.push_back({curve_label(*curves, compare ? "A: " : "", overlay.b.curves), curves->zetas,
+                                curves->model_rx, Ink::body, Dash::solid, Mark::none, 2.2f});
     panel.series.push_back(scene::rigid_curve(curves->zetas, curves->rigid_rx));
+    if (compare) {
+        // The rigid curve at A's angle: A's own curve (blue) for the rigid model, else its reference.
+        SeriesData& rigid = panel.series.back();
+        rigid.label = curves->model_rx.empty() ? curve_label(*curves, "A: ") : rigid.label + " at A's θ";
+        if (curves->model_rx.empty()) rigid.ink = Ink::body;
+    }
     // Pinned curves in the palette's further colours (the series index picks them), dash-dotted apart.
     if (overlay.pins)
         for (const PinnedCurve& pin : *overlay.pins)
@@ -392,8 +495,8 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
                 {"pinned: " + pin.label, pin.zeta, pin.rx, Ink::automatic, Dash::dotted, Mark::none, 2.0f});
     add_data(p.theta * 180 / kPi);
     // The current point: a cross instead of the diamond when the solver does not vouch for it.
-    panel.points.push_back(
-        {Vec2(p.zeta, curves->current.rx), Ink::tip, ok(st) ? Mark::diamond : Mark::cross, "", 12});
+    panel.points.push_back({Vec2(p.zeta, curves->current.rx), compare ? Ink::body : Ink::tip,
+                            ok(st) ? Mark::diamond : Mark::cross, compare ? "A" : "", 12});
     // Where another stable state coexists: a circle at its r_x, each point named by the start reaching it,
     // the label towards the other states (off the flat parts of the curve at r_x = 0 and 1).
     const std::vector<SteadyState>& states = coexisting_states(*curves);
@@ -404,11 +507,12 @@ PanelData ratio_panel_live(const std::optional<RatioCurves>& curves, bool busy, 
             const bool reported = std::abs(s.rx - curves->current.rx) <= 1e-6;
             if (!reported) panel.points.push_back({Vec2(p.zeta, s.rx), Ink::tip, Mark::circle, "", 11});
             PointData& point = reported ? panel.points[current] : panel.points.back();
-            point.label = reached_from(s);
+            point.label = (compare ? std::string("A ") : std::string()) + reached_from(s);
             point.label_dx = 1;
             point.label_dy = s.rx > mid ? 1 : -1;
         }
     }
+    if (compare) add_compare_curve(panel, overlay.b, *curves);
     return panel;
 }
 

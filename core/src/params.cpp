@@ -1,4 +1,5 @@
 #include "fv/params.hpp"
+#include "fv/setup.hpp"
 
 #include "fv/format.hpp"
 #include "fv/param_ranges.hpp"
@@ -55,6 +56,18 @@ std::string range_error(const Params& p) {
     if (!inside(p.rdisp, kRdispRange)) return outside("r_disp", p.rdisp, kRdispRange);
     if (!inside(p.i, kIRange)) return outside("i", p.i, kIRange);
     return {};
+}
+
+} // namespace fv
+
+namespace fv {
+
+Setup compare_default(const Setup& a) {
+    Setup b = a;
+    // 90 degrees as any door writes it (90 * pi / 180 from a link or a flag, pi / 2 here) is "across"
+    // already.
+    b.params.theta = std::abs(a.params.theta - kPi / 2) < 1e-9 ? 0 : kPi / 2;
+    return b;
 }
 
 } // namespace fv

@@ -57,13 +57,41 @@ double number(const std::string& key, const std::string& v, std::size_t offset, 
 // The numeric keys: where each goes and its range in the shared table.
 struct NumberKey {
     const char* key;
-    std::optional<double> ShareLink::*slot;
+    std::optional<double> SetupKeys::*slot;
     ParamRange range;
 };
-constexpr NumberKey kNumberKeys[] = {{"zeta", &ShareLink::zeta, kZetaRange},
-                                     {"theta", &ShareLink::theta_deg, kThetaRange},
-                                     {"rdisp", &ShareLink::rdisp, kRdispRange},
-                                     {"i", &ShareLink::i, kIRange}};
+constexpr NumberKey kNumberKeys[] = {{"zeta", &SetupKeys::zeta, kZetaRange},
+                                     {"theta", &SetupKeys::theta_deg, kThetaRange},
+                                     {"rdisp", &SetupKeys::rdisp, kRdispRange},
+                                     {"i", &SetupKeys::i, kIRange}};
+
+// A setup's key (without its "b." prefix) into `s`: false when `key` is not one. `name` is the key as
+// written, for messages.
+bool read_setup_key(SetupKeys& s, const std::string& key, const std::string& name, const std::string& value,
+                    std::size_t at, std::size_t vat) {
+    const auto once = [&](bool given) {
+        if (given) fail(at, quoted_text(name) + " is given twice; each key at most once");
+    };
+    const NumberKey* nk = std::find_if(std::begin(kNumberKeys), std::end(kNumberKeys),
+                                       [&](const NumberKey& n) { return key == n.key; });
+    if (nk != std::end(kNumberKeys)) {
+        once((s.*nk->slot).has_value());
+        s.*nk->slot = number(name, value, vat, nk->range);
+    } else if (key == "model") {
+        once(s.model.has_value());
+        s.model = parse_model(value);
+        if (!s.model) fail(vat, name + " = " + quoted_text(value) + "; allowed: dahl, rigid");
+    } else if (key == "start") {
+        once(s.start.has_value());
+        Start st = Start::rest;
+        if (!parse_start(value, st))
+            fail(vat, name + " = " + quoted_text(value) + "; allowed: " + kStartNames);
+        s.start = st;
+    } else {
+        return false;
+    }
+    return true;
+}
 
 // A view value that does not read: noted and ignored (share_link.hpp).
 void notice(ShareLink& link, std::size_t offset, const std::string& what) {
@@ -128,21 +156,9 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
         const auto once = [&](bool given) {
             if (given) fail(at, quoted_text(key) + " is given twice; each key at most once");
         };
-        const NumberKey* nk = std::find_if(std::begin(kNumberKeys), std::end(kNumberKeys),
-                                           [&](const NumberKey& n) { return key == n.key; });
-        if (nk != std::end(kNumberKeys)) {
-            once((link.*nk->slot).has_value());
-            link.*nk->slot = number(key, value, vat, nk->range);
-        } else if (key == "model") {
-            once(link.model.has_value());
-            link.model = parse_model(value);
-            if (!link.model) fail(vat, "model = " + quoted_text(value) + "; allowed: dahl, rigid");
-        } else if (key == "start") {
-            once(link.start.has_value());
-            Start s = Start::rest;
-            if (!parse_start(value, s))
-                fail(vat, "start = " + quoted_text(value) + "; allowed: " + kStartNames);
-            link.start = s;
+        const bool b = key.rfind("b.", 0) == 0;
+        if (read_setup_key(b ? link.b : link, b ? key.substr(2) : key, key, value, at, vat)) {
+            // A's or B's key, read.
         } else if (key == "frame") {
             once(link.frame.has_value());
             link.frame = parse_frame(value);
@@ -190,7 +206,7 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
     return link;
 }
 
-void apply_share_link(const ShareLink& link, Model& model, Params& params) {
+void apply_share_link(const SetupKeys& link, Model& model, Params& params) {
     if (link.zeta) params.zeta = *link.zeta;
     if (link.theta_deg) params.theta = *link.theta_deg * kPi / 180;
     if (link.rdisp) params.rdisp = *link.rdisp;
@@ -198,7 +214,7 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params) {
     if (link.model) model = *link.model;
 }
 
-void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start) {
+void apply_share_link(const SetupKeys& link, Model& model, Params& params, Start& start) {
     apply_share_link(link, model, params);
     if (link.start) start = *link.start;
 }
@@ -232,6 +248,13 @@ std::string pin_link_text(const PinSource& pin) {
     if (pin.model == Model::rigid) return s;
     s += ":" + shortest_decimal(pin.rdisp) + ":" + shortest_decimal(pin.i);
     return pin.start == Start::rest ? s : s + ":" + to_string(pin.start);
+}
+
+std::string compare_link_keys(Model model, const Params& p, Start start) {
+    return "&b.zeta=" + shortest_decimal(p.zeta) + "&b.theta=" + shortest_decimal(theta_degrees(p.theta)) +
+           "&b.rdisp=" + shortest_decimal(p.rdisp) + "&b.i=" + shortest_decimal(p.i) +
+           "&b.model=" + to_string(model) +
+           (start == Start::rest ? "" : std::string("&b.start=") + to_string(start));
 }
 
 std::string view_link_keys(const ShareLink& link) {

@@ -51,6 +51,8 @@ def main():
            f"app page {app['page']} CSS px, expected {width} x {height}")
     expect(app["stacked"] == (width < 720), f"stacked = {app['stacked']} at width {width}")
     parts = {"controls": (300, 150), "top_view": (120, 90), "force": (120, 90), "lower": (120, 90)}
+    if "top_view_b" in app:  # compare mode: B's top view beside A's
+        parts["top_view_b"] = (120, 90)
     for name, (min_w, min_h) in parts.items():
         x0, y0, x1, y1 = app[name]
         expect(x0 >= 0 and y0 >= 0 and x1 <= width and y1 <= height,
@@ -66,7 +68,7 @@ def main():
     expect(app["controls_scroll_max"] >= 0, "negative scroll range")
     print(f"{width:g}x{height:g} at {dpr:g}: canvas {lay['canvas']}, stacked {app['stacked']}, panel {app['controls']} "
           f"(scrolls {app['controls_scroll_max']:g} px), top view {app['top_view']}, force {app['force']}, "
-          f"lower {app['lower']}")
+          f"lower {app['lower']}" + (f", B's top view {app['top_view_b']}" if "top_view_b" in app else ""))
     if len(sys.argv) > 5:
         shot = re.search(r'data-fv-shot="data:image/png;base64,([^"]*)"', text)
         if shot:

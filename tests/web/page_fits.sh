@@ -23,8 +23,10 @@ bash "$here/screenshot.sh" "$tmp" viewport.html "$out/viewport.html" 1024 640 50
 vp=$(grep -o 'data-viewport="[0-9]*x[0-9]*"' "$out/viewport.html" | grep -o '[0-9]*x[0-9]*')
 dw=$((1024 - ${vp%x*})) dh=$((640 - ${vp#*x}))
 echo "headless Chromium's viewport at a 1024x640 window: $vp; windows are opened ${dw}x${dh} larger"
-link="?zeta=0.45&theta=30&rdisp=8&i=0&model=dahl"
-for size in 1280x800@1 1024x640@1 1920x1080@1 1920x1080@2 390x844@3 360x640@2; do
+# The last two: compare mode (a link with B), two top views beside each other, on the Chromebook and the phone.
+for size in 1280x800@1 1024x640@1 1920x1080@1 1920x1080@2 390x844@3 360x640@2 compare:1024x640@1 compare:390x844@3; do
+  link="?zeta=0.45&theta=30&rdisp=8&i=0&model=dahl"
+  case $size in compare:*) size=${size#compare:} link="$link&b.theta=90" ;; esac
   w=${size%%x*} rest=${size#*x}
   h=${rest%@*} dpr=${size#*@}
   page=index.html ww=$((w + dw))
@@ -34,6 +36,8 @@ for size in 1280x800@1 1024x640@1 1920x1080@1 1920x1080@2 390x844@3 360x640@2; d
     sed "s|</head>|<style>canvas { width: ${w}px !important; }</style></head>|" "$tmp/index.html" >"$tmp/narrow.html"
     page=narrow.html ww=500
   fi
-  bash "$here/screenshot.sh" "$tmp" "$page$link" "$out/page-fits-$size.html" "$ww" $((h + dh)) 3000 "$dpr" >/dev/null
-  python3 "$here/page_fits.py" "$out/page-fits-$size.html" "$w" "$h" "$dpr" "$out/page-fits-$size.png"
+  name=$size
+  case $link in *b.theta*) name=compare-$size ;; esac
+  bash "$here/screenshot.sh" "$tmp" "$page$link" "$out/page-fits-$name.html" "$ww" $((h + dh)) 3000 "$dpr" >/dev/null
+  python3 "$here/page_fits.py" "$out/page-fits-$name.html" "$w" "$h" "$dpr" "$out/page-fits-$name.png"
 done

@@ -15,7 +15,8 @@ namespace fv {
 
 // Colours by meaning; the renderer owns the actual palette.
 // body: P (blue); tip: T (vermilion); pull: the asperity sticks (green); slip: it slips (reddish purple).
-enum class Ink { automatic, body, tip, spring, pull, force, magnitude, rigid, black, slip };
+// setup_b: the app's compare mode marks what belongs to setup B in it (setup A's in body's blue).
+enum class Ink { automatic, body, tip, spring, pull, force, magnitude, rigid, black, slip, setup_b };
 enum class Dash { solid, dashed, dotted };
 enum class Mark { none, circle, square, triangle, diamond, cross };
 

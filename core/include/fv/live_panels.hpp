@@ -49,13 +49,28 @@ SimMoment moment_at(const LiveSim& sim, double rewind);
 // How far back the history reaches (dimensionless time).
 double max_rewind(const LiveSim& sim);
 
-PanelData top_view_panel(const LiveSim& sim, const ViewState& view);
-PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind = 0);
+// setup: compare mode's name of the setup shown ("A", "B"; null: the one setup), which then heads the title
+// with its angle ("A: θ = 90°") and leaves the legend out (two views share the room of one).
+PanelData top_view_panel(const LiveSim& sim, const ViewState& view, const char* setup = nullptr);
+
+// Compare mode's setup B on the plots that show both setups: its simulation (on A's time base: the same tau)
+// and its r_x(zeta) curves (null: none yet). sim null: no compare.
+struct CompareOverlay {
+    const LiveSim* sim = nullptr;
+    const RatioCurves* curves = nullptr;
+    bool busy = false; // B's curves are being computed
+};
+
+// With b: both setups' F_x and period means, A's in blue and B's in orange (the components and the slip bands
+// of the one setup would double the lines).
+PanelData force_panel_live(const LiveSim& sim, const std::optional<RatioCurves>& curves, double rewind = 0,
+                           const CompareOverlay& b = {});
 // What the ratio plot shows besides the model: measured points and the physical scale of zeta.
 struct RatioOverlay {
     const MeasurementSet* data = nullptr; // measured r_x(zeta), or none
     double vv_m_s = 0;                    // v_v = 2 pi f A; > 0 adds the v_b scale to the axis title
     const std::vector<PinnedCurve>* pins = nullptr; // curves kept to compare with
+    CompareOverlay b;                               // compare mode: B's curve and r_x point beside A's
 };
 
 // The zeta range the ratio plot spans: [0, 3], wider when measured points lie further out.

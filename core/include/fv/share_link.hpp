@@ -21,6 +21,12 @@
 //   &lesson=3               the guided lesson's step shown (1 to the reader's number of steps,
 //                           docs/lessons.md): its setup first, then the link's other keys over it
 //
+// and the compare mode's setup B beside the setup above (A), each key as A's, read and checked alike (an
+// error, not a notice: they are a setup); any of them turns compare mode on, and what they leave out is
+// fv::compare_default of A (A's values at the other angle):
+//
+//   &b.zeta=0.15&b.theta=0&b.rdisp=2&b.i=1&b.model=dahl&b.start=sliding
+//
 // A view value that does not read is ignored with a notice (ShareLink::notices: "column N: what; allowed:
 // ...; ignored"), never an error: it changes how the setup is shown, not the setup, so the link still opens.
 //
@@ -49,15 +55,22 @@
 
 namespace fv {
 
-inline constexpr const char* kLinkKeys =
-    "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, pins, lesson";
+inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, "
+                                         "pins, lesson, b.zeta, b.theta, b.rdisp, "
+                                         "b.i, b.model, b.start";
 // A pins value longer than this is ignored (kMaxPins pins of shortest decimals fit with room to spare).
 inline constexpr std::size_t kMaxPinsText = 600;
 
-struct ShareLink {
+// The keys of one setup (A's without a prefix, B's with "b.").
+struct SetupKeys {
     std::optional<double> zeta, theta_deg, rdisp, i;
     std::optional<Model> model;
-    std::optional<Start> start;       // the history (docs/model.md, "Which steady state")
+    std::optional<Start> start; // the history (docs/model.md, "Which steady state")
+    bool any() const { return zeta || theta_deg || rdisp || i || model || start; }
+};
+
+// A's keys are the link's own (link.zeta, ...); B's are link.b.
+struct ShareLink : SetupKeys {
     std::optional<FrameChoice> frame; // what stands still in the app's top view
     // The app's view.
     std::optional<LowerPanel> panel;
@@ -65,6 +78,7 @@ struct ShareLink {
     std::optional<double> speed;
     std::optional<std::vector<PinSource>> pins;
     std::optional<int> lesson; // a guided lesson's step, 1-based
+    SetupKeys b;               // compare mode's setup B (any key given: compare on)
     // View values that did not read and were ignored, each "column N: what; allowed: ...; ignored".
     std::vector<std::string> notices;
 };
@@ -79,9 +93,9 @@ struct LinkError : std::invalid_argument {
 ShareLink parse_share_link(std::string_view text, int lesson_steps = 0);
 
 // The link's values over `model` and `params` (theta converted from degrees as the command line does), and
-// its start over `start`. (The three-argument form leaves the start to the caller.)
-void apply_share_link(const ShareLink& link, Model& model, Params& params);
-void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start);
+// its start over `start`. (The three-argument form leaves the start to the caller.) Given link.b, B's.
+void apply_share_link(const SetupKeys& link, Model& model, Params& params);
+void apply_share_link(const SetupKeys& link, Model& model, Params& params, Start& start);
 void apply_share_link(const ShareLink& link, Model& model, Params& params, Start& start, FrameChoice& frame);
 
 // "?zeta=Z&theta=DEG&rdisp=R&i=I&model=M" for the state given, every number the shortest decimal that reads
@@ -90,6 +104,10 @@ void apply_share_link(const ShareLink& link, Model& model, Params& params, Start
 // same as before the start could be chosen; and "&frame=ground" for that frame only, likewise.
 std::string share_link(Model model, const Params& params, Start start = Start::rest,
                        FrameChoice frame = FrameChoice::body);
+
+// "&b.zeta=Z&b.theta=DEG&b.rdisp=R&b.i=I&b.model=M" (and "&b.start=sliding" for that start only): setup B's
+// keys, numbers as share_link() writes them; appended by the app in compare mode.
+std::string compare_link_keys(Model model, const Params& params, Start start = Start::rest);
 
 // The view's keys for the view fields `link` sets, in the order above ("&panel=map&present=1&speed=1.5&
 // pins=dahl:60:2:1&lesson=3"), or "": appended to share_link() by the app for what differs from its defaults.
