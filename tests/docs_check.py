@@ -49,6 +49,7 @@ RUN = [
     ("docs/cli.md", "frictionviz render --spec out/rx.json --format pdf --out out/"),
     ("docs/cli.md", "frictionviz render --lesson 3 --format png,pdf --out out/"),
     ("docs/teaching.md", "frictionviz animate --lesson 2 --out along.gif"),
+    ("docs/teaching.md", "frictionviz animate --lesson 3 --view compare --out compare.gif"),
     ("docs/teaching.md", "frictionviz animate --lesson 3 --out across.gif"),
     ("docs/teaching.md", "mkdir -p handout"),
     ("docs/teaching.md", "frictionviz render --lesson 5 --format png,pdf --out handout/"),
@@ -98,9 +99,6 @@ NOT_RUN = [
      "build-web.sh is run by the web_build test (label web); serve-web.sh serves until Ctrl-C"),
     ("docs/teaching.md", "frictionviz gui --link-base http://192.168.1.20:8000/ --lesson 1",
      "opens the app's window (gui_* tests run it headless; a --link-base is checked by fv_gui_tests)"),
-    # compare: Compare (setup B, animate --view compare) is built on another branch; move this to RUN once merged.
-    ("docs/teaching.md", "frictionviz animate --lesson 3 --view compare --out compare.gif",
-     "animate --view compare comes with the Compare branch (issue #23); run it once that is merged"),
     ("docs/web.md", "./scripts/serve-web.sh [--lan] [SITE_DIR] [PORT]",
      "a web server that runs until Ctrl-C"),
 ]
