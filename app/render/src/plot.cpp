@@ -497,8 +497,11 @@ float Plot::legend_band(const Canvas& canvas) const {
     const auto entries = legend_entries(series_);
     if (legend != LegendPosition::Above || entries.empty()) return 0;
     // The rows wrap at the data area's width, which the band hardly changes (only through the y ticks).
-    const float width = compute_layout(*this, series_, heatmap_, bounds_, canvas).tf.area.width();
-    return above_layout(canvas, series_, entries, font_size, width).size.y + kAboveSpace;
+    const Rect area = compute_layout(*this, series_, heatmap_, bounds_, canvas).tf.area;
+    const float band = above_layout(canvas, series_, entries, font_size, area.width()).size.y + kAboveSpace;
+    // No room: rows that would leave the data area less than their own height (and three lines of type) are
+    // left out, not drawn over a data area squeezed to nothing (the app's force plot on a 360 x 640 phone).
+    return area.height() - band < std::max(band, 3 * font_size) ? 0.0f : band;
 }
 
 PlotTransform Plot::draw(Canvas& canvas) const {
@@ -867,12 +870,16 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
         below_geom = legend_below_geom(canvas, series_, entries, font_size, bounds_.width());
     LegendGeom lg =
         place == LegendPlace::Below ? *below_geom : legend_geom(canvas, series_, entries, font_size);
+    // A legend beside the axes that would take more than half the panel's width or more than its height (the
+    // app's top view on a 360 x 640 phone) leaves the data area no room and spills over the next panel: it is
+    // left out (the app's help overlay names every symbol), as compare mode leaves it out.
+    const bool no_room = outside && (lg.size.x > 0.5f * bounds_.width() || lg.size.y > bounds_.height());
     Frame fr;
     fr.bounds = bounds_;
     fr.below = place == LegendPlace::Below ? lg.size.y + kLegendGap : 0.0f;
     fr.band = legend_band(canvas);
     fr.layout = compute_layout(*this, series_, heatmap_, bounds_, canvas,
-                               outside ? lg.size.x + 2 * kLegendGap : 0.0f, fr.below, fr.band);
+                               outside && !no_room ? lg.size.x + 2 * kLegendGap : 0.0f, fr.below, fr.band);
     const PlotTransform& tf = fr.layout.tf;
     const Rect& A = tf.area;
 
@@ -898,15 +905,18 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
     if (heatmap_ && heatmap_->color_bar) draw_colorbar(canvas, A, *heatmap_, font_size, font_size + 1);
 
-    if (legend == LegendPosition::None || entries.empty()) return tf;
+    if (legend == LegendPosition::None || entries.empty() || no_room) return tf;
     if (legend == LegendPosition::Above) {
-        draw_legend_above(canvas, *this, series_, entries, lg.sample, fr);
+        if (fr.band > 0) draw_legend_above(canvas, *this, series_, entries, lg.sample, fr);
         return tf;
     }
     // Inside the axes, the box no wider than they are: labels too long for that (a user's, say a pinned
     // curve's from a session file) are elided. The figures' own labels always fit, so nothing else changes.
     if (!outside && place != LegendPlace::Below && lg.size.x > A.width() - 2 * kLegendMargin)
         lg = legend_geom(canvas, series_, entries, font_size, 1, 0, A.width() - 2 * kLegendMargin);
+    // A box inside the axes taller than they are (the app's ratio plot on a 360 x 640 phone) would hang below
+    // them over the ticks: left out, like a legend beside the axes that has no room.
+    if (!outside && place == LegendPlace::Inside && lg.size.y > A.height()) return tf;
     std::optional<Vec2> below_size;
     if (below_geom) below_size = below_geom->size;
     const BoxSpot spot = legend_spot(canvas, *this, outside, place == LegendPlace::Below, lg.size, below_size,
