@@ -96,7 +96,6 @@ CreepSkip skip_creep(const ReachSetup& s, Vec2 prev, Vec2 x) {
             n = bounded ? std::max(1.0, std::floor(std::min(4 * n, beyond / 2))) : 4 * n;
             continue;
         }
-        out.leaves = true;
         if (n <= 2) {
             // The motion leaves the creep within a few periods of the base, and z is already past: the
             // motion goes on from there. (Near the circle the creep per period is below the integration's

@@ -20,10 +20,11 @@ namespace fv::solver {
 bool creep_period(const LagModel& m, const Vec2& l0, const PeriodResult& pr);
 
 struct CreepSkip {
-    Vec2 x{0, 0};        // where the motion goes on: just past the creep's end (leaves), else in it
-    double skipped = 0;  // periods projected over (not integrated)
-    int periods = 0;     // periods integrated
-    bool leaves = false; // a law change lies ahead (else the creep reached the circle's rounding, or the cap)
+    // Where the motion goes on: just past the creep's end where a law change was found ahead, else the last
+    // settled point of the creep (next to the circle, or where the jumps' cap stopped it).
+    Vec2 x{0, 0};
+    double skipped = 0; // periods projected over (not integrated)
+    int periods = 0;    // periods integrated
 };
 
 // Skips the creep through prev -> x (two successive sections of the motion, both creep periods).
