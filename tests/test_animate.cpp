@@ -8,6 +8,7 @@
 #include "tools/run_command.hpp"
 
 #include <catch2/catch.hpp>
+#include <cstdio>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -220,6 +221,24 @@ TEST_CASE("render --lesson N: the step's picture in every format, its JSON from 
     CHECK(setup.find("&frame=ground") != std::string::npos); // step 5 stands on the ground
     CHECK(j["files"] ==
           nlohmann::json::array({"lesson-5.png", "lesson-5.svg", "lesson-5.pdf", "lesson-5.json"}));
+    CHECK_FALSE(j.contains("setup_b")); // step 5 has no setup B
+    // A step with setup B (compare mode) shows it, as animate --lesson does: its JSON names B's setup too.
+    for (std::size_t k = 0; k < lessons["steps"].size(); ++k) {
+        const auto& st = lessons["steps"][k];
+        if (!st["setup"].contains("b")) continue;
+        const std::string n = std::to_string(k + 1);
+        const Run b = render("--lesson " + n + " --size 640x400 --out " + dir);
+        INFO(b.err);
+        REQUIRE(b.code == 0);
+        const auto jb = nlohmann::json::parse(slurp(dir + "/lesson-" + n + ".json"));
+        REQUIRE(jb.contains("setup_b"));
+        const std::string setup_b = jb["setup_b"];
+        if (st["setup"]["b"].contains("theta")) {
+            char theta[32];
+            std::snprintf(theta, sizeof theta, "theta=%g", st["setup"]["b"]["theta"].get<double>());
+            CHECK(setup_b.find(theta) != std::string::npos);
+        }
+    }
 
     const std::string steps = "[1, " + std::to_string(lessons["steps"].size()) + "]";
     std::ofstream(dir + "/lesson-3.png") << "keep";

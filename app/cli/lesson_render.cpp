@@ -37,6 +37,7 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     s.steady.start = step.setup.start;
     s.frame = step.setup.frame;
     s.view = anim::View::dashboard;
+    if (step.setup.b) s.view = anim::View::compare, s.b = *step.setup.b; // as animate --lesson shows the step
     s.width = size.w;
     s.height = size.h;
     s.scale = static_cast<float>(output.scale);
@@ -54,6 +55,7 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     j["caption"] = step.text;
     j["link"] = "?lesson=" + std::to_string(lesson); // what opens the step in the app and the browser
     j["setup"] = share_link(s.model, s.params, s.steady.start, s.frame);
+    if (step.setup.b) j["setup_b"] = share_link(s.b.model, s.b.params, s.b.start, s.frame); // compare mode
     j["files"] = names;
     j["version"] = "frictionviz " FV_VERSION;
     files.emplace_back(id + ".json", j.dump(2) + "\n");
