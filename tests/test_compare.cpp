@@ -11,6 +11,7 @@
 #include "gui/script.hpp"
 #include "gui/session.hpp"
 #include "gui/session_link.hpp"
+#include "tools/tick_numbers.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -275,18 +276,6 @@ TEST_CASE("compare: the two top views share the top view's place without overlap
     }
 }
 
-namespace {
-
-bool is_number(std::string t) {
-    for (std::size_t at; (at = t.find("\u2212")) != std::string::npos;) t.replace(at, 3, "-");
-    if (t.empty()) return false;
-    char* end = nullptr;
-    std::strtod(t.c_str(), &end);
-    return end == t.c_str() + t.size();
-}
-
-} // namespace
-
 TEST_CASE("compare: an animate --view compare loop keeps every axis reading of both top views and the plots",
           "[compare][animate]") {
     for (const FrameChoice frame : {FrameChoice::body, FrameChoice::ground}) {
@@ -313,12 +302,9 @@ TEST_CASE("compare: an animate --view compare loop keeps every axis reading of b
             canvas.begin(page, session.pixel_ratio(), gfx::colors::white);
             frames.paint(canvas, page, k);
             canvas.end_recording();
-            std::vector<std::string> numbers;
+            const std::vector<std::string> numbers = fv::test::numbers_on(canvas.display_list());
             for (const auto& c : canvas.display_list().commands)
                 if (const auto* t = std::get_if<gfx::dl::Text>(&c)) {
-                    if (is_number(t->text))
-                        numbers.push_back(t->text + " at " + std::to_string(t->anchor.x) + "," +
-                                          std::to_string(t->anchor.y));
                     saw_a = saw_a || t->text.rfind("A: θ = 90°", 0) == 0;
                     saw_b = saw_b || t->text.rfind("B: θ = 0°", 0) == 0;
                 }

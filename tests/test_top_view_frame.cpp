@@ -5,6 +5,7 @@
 #include "anim/animation.hpp"
 #include "figures/render_session.hpp"
 #include "gui/app_state.hpp"
+#include "tools/tick_numbers.hpp"
 
 #include "fv/live_panels.hpp"
 #include "fv/ode_solver.hpp"
@@ -17,6 +18,7 @@
 
 using namespace fv;
 using namespace fv::app;
+using fv::test::numbers_on;
 
 namespace {
 
@@ -26,24 +28,6 @@ gfx::ContextOptions headless(int w, int h) {
     o.width = w;
     o.height = h;
     return o;
-}
-
-// Whether a text is a number as a tick label writes it ("-1.5" with a minus sign, "0", "2.5").
-bool is_number(std::string t) {
-    for (std::size_t at; (at = t.find("\u2212")) != std::string::npos;) t.replace(at, 3, "-");
-    if (t.empty()) return false;
-    char* end = nullptr;
-    std::strtod(t.c_str(), &end);
-    return end == t.c_str() + t.size();
-}
-
-// Every number written on a frame (the tick labels of all three panels) with where it is written.
-std::vector<std::string> numbers_on(const gfx::DisplayList& list) {
-    std::vector<std::string> out;
-    for (const auto& c : list.commands)
-        if (const auto* t = std::get_if<gfx::dl::Text>(&c); t && is_number(t->text))
-            out.push_back(t->text + " at " + std::to_string(t->anchor.x) + "," + std::to_string(t->anchor.y));
-    return out;
 }
 
 // A steady simulation of p at a period start.
