@@ -46,10 +46,8 @@ bool settle(const ReachSetup& s, const Vec2& z, Base& b, int& periods) {
     rq.params = s.p;
     Vec2 z2 = z1;
     ++periods;
-    if (!advance(s, z2, rq, &pr) || !creep_period(m, z1, pr) || samples.empty()) return false;
-    double v = 0; // the trapezoidal rule on the periodic integrand
-    for (const Sample& x : samples) v += x.F.normalized().dot(m.dP(x.tau));
-    v *= kTwoPi / static_cast<double>(samples.size());
+    if (!advance(s, z2, rq, &pr) || !creep_period(m, z1, pr)) return false;
+    const double v = v_integral(m, samples);
     if (!(v > 0)) return false;
     b.x = z2;
     b.lu = log_u(z2.norm(), m.i);

@@ -35,6 +35,13 @@ PeriodRequest state_only(const ReachSetup& s) {
 
 } // namespace
 
+double v_integral(const LagModel& m, const std::vector<Sample>& samples) {
+    if (samples.empty()) return 0;
+    double sum = 0;
+    for (const Sample& x : samples) sum += x.F.normalized().dot(m.dP(x.tau));
+    return sum * kTwoPi / static_cast<double>(samples.size());
+}
+
 bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult* last) {
     const LagModel& m = *s.m;
     PeriodResult pr = run_lag(m, l, 0, kTwoPi, rq);
@@ -109,8 +116,7 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
     return true;
 }
 
-// int v dtau over a period on the circle from l0 (v = e . P', |e| = 1): the trapezoidal rule on samples,
-// spectrally accurate for the smooth periodic integrand.
+// int v dtau over a period on the circle from l0 (v = e . P', |e| = 1), on 256 samples.
 double circle_v_integral(const ReachSetup& s, const Vec2& l0) {
     std::vector<Sample> samples;
     PeriodRequest rq = state_only(s);
@@ -118,10 +124,7 @@ double circle_v_integral(const ReachSetup& s, const Vec2& l0) {
     rq.n_samples = 256;
     rq.params = s.p;
     const PeriodResult pr = run_lag(*s.m, l0, 0, kTwoPi, rq);
-    if (!pr.ok || samples.empty()) return 0;
-    double sum = 0;
-    for (const Sample& x : samples) sum += x.F.normalized().dot(s.m->dP(x.tau));
-    return sum * kTwoPi / static_cast<double>(samples.size());
+    return pr.ok ? v_integral(*s.m, samples) : 0;
 }
 
 } // namespace

@@ -64,6 +64,10 @@ inline constexpr int kMaxCreepSkips = 2;
 inline constexpr int kMinCreepRun = 4;
 inline constexpr double kMinCreepSkip = 16;
 
+// The integral of v = e . P' over a period from its evenly spaced samples: the trapezoidal rule, spectrally
+// accurate for the smooth periodic integrand. 0 without samples.
+double v_integral(const LagModel& m, const std::vector<Sample>& samples);
+
 // One period of the motion from l (force units). For i = 0 a whole stuck period is a translation: the
 // motion is skipped to its first slip in closed form and that period finished (a later section of the
 // same motion). `last` gets the last period integrated.
