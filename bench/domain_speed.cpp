@@ -12,11 +12,13 @@
 // system, all threads; on a shared machine the CPU time is the figure to compare). This prints figures; it
 // asserts nothing (timings are not tests).
 //   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
-//                          [--tolerance T] [--map-threads N] [--map-rdisp R]...
+//                          [--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE]
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
 //     --map-threads N  threads of the map (default 0: all cores; 1 gives the one-core figure directly)
 //     --map-rdisp R    the map's r_disp (repeatable; default 1, 100, 1e4)
+//     --dump FILE      every grid point's parameters, status, r_x, r_y, error estimate, periods and ms, one
+//                      line each (to compare two builds point by point: only the timings should differ)
 #include "fv/figure_data.hpp"
 #include "fv/figures.hpp"
 #include "fv/steady_state.hpp"
@@ -120,6 +122,7 @@ int main(int argc, char** argv) {
     int repeats = 3, worst = 15, map_threads = 0;
     std::vector<double> map_rdisps;
     double map_i = 1;
+    std::string dump;
     fv::SteadyOptions opt; // --tolerance: the solver's target (default 1e-8; the targets are at 1e-6)
     for (int a = 1; a < argc; ++a) {
         const std::string k = argv[a];
@@ -141,10 +144,12 @@ int main(int argc, char** argv) {
             map_rdisps.push_back(std::atof(argv[++a]));
         else if (k == "--tolerance" && a + 1 < argc)
             opt.ode_tolerance = std::atof(argv[++a]);
+        else if (k == "--dump" && a + 1 < argc)
+            dump = argv[++a];
         else {
             std::fprintf(stderr,
                          "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
-                         "[--tolerance T] [--map-threads N] [--map-rdisp R]...\n",
+                         "[--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE]\n",
                          argv[0]);
             return 2;
         }
@@ -199,6 +204,18 @@ int main(int argc, char** argv) {
             q.ms = quantile(t, 0.5);
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+        if (!dump.empty()) {
+            std::FILE* f = std::fopen(dump.c_str(), "w");
+            if (!f) {
+                std::fprintf(stderr, "fv_domain_speed: cannot write %s\n", dump.c_str());
+                return 1;
+            }
+            for (const Point& q : pts)
+                std::fprintf(f, "%.6g %g %g %g %s %.12g %.12g %.3g %d %.3f\n", q.p.zeta, q.p.theta / kDeg,
+                             q.p.rdisp, q.p.i, fv::status_word(q.r).c_str(), q.r.rx, q.r.ry,
+                             q.r.error_estimate, q.r.periods, q.ms);
+            std::fclose(f);
+        }
 
         std::printf("\nBy rdisp decade\n");
         header("rdisp");

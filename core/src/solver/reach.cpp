@@ -2,6 +2,7 @@
 #include "reach.hpp"
 
 #include "closed_forms.hpp"
+#include "coast.hpp"
 #include "creep_skip.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -10,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace fv::solver {
 namespace {
@@ -110,8 +112,10 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
         if (ok && circle_state && k == 1 && creep_period(*s.m, z, pr)) return true;
         return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > 0;
     };
+    // x first, then from y outwards: where the test fails it mostly fails at x or next to y (a state on the
+    // circle whose chord samples lie inside it), so a failure costs few periods.
     if (!towards(x)) return false;
-    for (int j = 15; j >= 1; --j)
+    for (int j = 1; j <= 15; ++j)
         if (!towards(y + (j / 16.0) * (x - y))) return false;
     return true;
 }
@@ -325,7 +329,9 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
     auto nrm = [&](const Vec2& e) { return (Vinv * e.cast<cd>()).norm(); };
     const double contraction = 1 - rho;
     int creeping = 0, shrinking = 0;
-    for (int n = 0; n < 6; ++n) {
+    double prev_ratio = 0, prev_dist = 0;
+    constexpr int kSteps = 6;
+    for (int n = 0; n < kSteps; ++n) {
         const Vec2 e0 = x - y;
         if (e0.norm() <= noise) return true;
         if (circle_state && x.norm() < 1 - 10 * kPin) {
@@ -355,7 +361,20 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
         periods += k;
         const Vec2 e1 = x1 - y;
         if (e1.norm() <= noise) return true; // arrived
-        if (diagonal && contraction > 0 && nrm(e1 - M * e0) <= 0.5 * contraction * nrm(e0)) return true;
+        if (diagonal && contraction > 0) {
+            const double ratio = nrm(e1 - M * e0) / (0.5 * contraction * nrm(e0)), dist = e1.norm();
+            if (ratio <= 1) return true;
+            // The steps left cannot pass either test where the last step's gains, kept up, fall short (a slow
+            // approach gains little per period): the push below decides, without following on here.
+            if (n >= 1) {
+                const int left = kSteps - 1 - n;
+                const bool no_linear = ratio * std::pow(std::min(1.0, ratio / prev_ratio), left) > 1;
+                const bool no_arrival = dist * std::pow(std::min(1.0, dist / prev_dist), left) > noise;
+                if (no_linear && no_arrival) break;
+            }
+            prev_ratio = ratio;
+            prev_dist = dist;
+        }
         // M without a basis of eigenvectors (e.g. nilpotent on the circle): the distance shrinks by at
         // least (1 + rho)/2 in two successive steps.
         if (!diagonal && rho < 1 && e1.norm() <= 0.5 * (1 + rho) * e0.norm()) {
@@ -437,7 +456,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
 
     // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
     // motion) reaches it, its verification. True when it is the state reached.
-    auto take_period1 = [&](const Search& sr, const Vec2& from) {
+    // The last stable state found that the motion was not (yet) shown to reach.
+    std::optional<Search> candidate;
+    auto take_period1 = [&](const Search& sr, const Vec2& from, bool retry = false) {
         if (!sr.converged) {
             if (!closest.have_last || (sr.have_last && sr.dist < closest.dist)) closest = sr;
             return false;
@@ -460,6 +481,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         }
         const bool reached = reaches(s, from, sr.last_l0, Eigen::Matrix2d::Identity() + sr.last.E, 1,
                                      circle_state, out.periods);
+        if (retry && !reached) return false; // verified and listed the first time
         const Verified v = verify_fixed_point(p, m, sr, s.rq, s.aim, s.tol, s.record && reached,
                                               s.record_samples, s.max_search_periods);
         out.periods += v.periods;
@@ -473,7 +495,10 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             st = std::move(o);
             return true;
         }
-        if (ok(o.status)) add_other(out, std::move(o));
+        if (ok(o.status)) {
+            add_other(out, std::move(o));
+            candidate = sr;
+        }
         return false;
     };
 
@@ -511,8 +536,10 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     classify(m, 0, x);
     xs.push_back(x);
     int chunk = 4;
-    std::vector<int> tried_at(kMaxPeriodK + 1, -1000);
-    int creep_skips = 0;
+    // Where (in periods of the motion, integrated or projected over) each k was last tried.
+    double followed = 0;
+    std::vector<double> tried_at(kMaxPeriodK + 1, -1000);
+    int creep_skips = 0, coasts = 0;
     while (static_cast<int>(xs.size()) <= kFollowPeriods) {
         Vec2 before = x;
         int creep_run = 0; // creep periods in a row at the chunk's end
@@ -528,6 +555,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             xs.push_back(x);
         }
         out.periods += chunk;
+        followed += chunk;
         chunk = std::min(2 * chunk, 64);
         const int n = static_cast<int>(xs.size()) - 1;
         for (int k = 1; k <= kMaxPeriodK; k *= 2) {
@@ -535,9 +563,14 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             const double d = (xs[n] - xs[n - k]).norm(), dprev = (xs[n - k] - xs[n - 2 * k]).norm();
             // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
             if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || (k == 1 && d <= dprev)))) continue;
-            if (n - tried_at[k] < 16 * k) break; // just tried from near here
-            tried_at[k] = n;
-            if (k == 1) {
+            // Just tried from near here: again once the motion has gone on for 16 k periods, and (a long
+            // approach) as long again as before the last try.
+            if (followed - tried_at[k] < std::max(16.0 * k, tried_at[k])) break;
+            tried_at[k] = followed;
+            if (k == 1 && candidate && (xs[n] - xs[n - 1]).dot(candidate->last_l0 - xs[n]) > 0) {
+                // Heading for the state found before: the evidence again from here, without a new search.
+                if (take_period1(*candidate, xs[n], true)) return out;
+            } else if (k == 1) {
                 const int budget = std::max(s.max_search_periods - search_periods, 100);
                 const Search sr = search_from(p, m, xs[n], s.rq, s.aim, budget, kGiveUp);
                 search_periods += sr.periods;
@@ -572,6 +605,25 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 x = cs.x;
                 xs.assign(1, x);
                 std::fill(tried_at.begin(), tried_at.end(), -1000);
+                followed = 0;
+                chunk = 4;
+                continue;
+            }
+        }
+        // A slow approach (successive steps aligned and changing little): projected over (coast.hpp), as far
+        // again as the motion has gone, so that the evidence is tried on the way (a state is often shown to
+        // be reached long before the motion gets near it).
+        // Not over a creep (creep periods at the chunk's end): the creep skip above is made for it, and its
+        // count of periods is what the output reports as the creep's length.
+        if (coasts < kMaxCoasts && n >= 2 && creep_run == 0) {
+            const Coast cs = coast(s, xs[n - 2], xs[n - 1], xs[n], std::max(followed, 64.0));
+            out.periods += cs.periods;
+            followed += cs.periods;
+            if (cs.jumps > 0) {
+                ++coasts;
+                followed += cs.skipped;
+                x = cs.c;
+                xs = {cs.a, cs.b, cs.c};
                 chunk = 4;
             }
         }

@@ -63,6 +63,8 @@ inline constexpr int kMaxCreepSkips = 2;
 // A skip is tried after this many creep periods in a row, and taken when it projects at least kMinCreepSkip.
 inline constexpr int kMinCreepRun = 4;
 inline constexpr double kMinCreepSkip = 16;
+// Slow approaches coasted over per start (coast.hpp; each a series of projections).
+inline constexpr int kMaxCoasts = 16;
 
 // The integral of v = e . P' over a period from its evenly spaced samples: the trapezoidal rule, spectrally
 // accurate for the smooth periodic integrand. 0 without samples.
