@@ -444,7 +444,7 @@ void period1_multipliers(const ReachSetup& s, const PeriodResult& pr, Vec2 l0, c
     sort_desc(mu);
 }
 
-Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses) {
+Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses, const Orbit* rejected) {
     const Params& p = *s.p;
     const LagModel& m = *s.m;
     Reach out;
@@ -461,6 +461,12 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     auto take_period1 = [&](const Search& sr, const Vec2& from, bool retry = false) {
         if (!sr.converged) {
             if (!closest.have_last || (sr.have_last && sr.dist < closest.dist)) closest = sr;
+            return false;
+        }
+        // The state the caller found and tested from the start already (the same fixed point, to well within
+        // the searches' convergence): only remembered, to try the evidence again from further on.
+        if (rejected && from == start && (sr.last_l0 - rejected->l0).norm() <= std::max(1e3 * s.aim, 1e-9)) {
+            candidate = sr;
             return false;
         }
         cd mu[2];

@@ -77,7 +77,10 @@ bool advance(const ReachSetup& s, Vec2& l, const PeriodRequest& rq, PeriodResult
 
 // The state the motion from `start` (force units) settles into. `guesses`: first guesses for Newton's
 // method (a warm start, limits, the start itself), tried in order before the motion is followed.
-Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses);
+// `rejected`: a stable state found before (the default search) that the start's motion was not shown to
+// reach: a guess that leads to it again is not verified and tested again, only followed up later.
+Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses,
+                 const Orbit* rejected = nullptr);
 
 // Evidence that the motion through x (force units, a point of the start's motion) settles into the state y
 // of the k-period map with derivative M (docs/model.md, "Which steady state"). `periods` counts the

@@ -111,7 +111,7 @@ std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Ve
 // The search as it has always run from rest: Newton's method from the warm start, a settled circle start,
 // the nearby limit and the other starts in turn (search_starts.hpp), each given up when it makes no
 // progress (the last only when the budget runs out); the first that converges, verified.
-Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods) {
+Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods, Vec2& found_from) {
     const Params& p = *s.p;
     const LagModel& m = *s.m;
     const double r = p.rdisp;
@@ -132,7 +132,10 @@ Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods) {
                                                       final_try ? 0 : solver::kGiveUp);
         periods += sr.periods;
         const bool better = !best.have_last || (sr.have_last && (sr.converged || sr.dist < best.dist));
-        if (k == 0 || better) best = sr;
+        if (k == 0 || better) {
+            best = sr;
+            found_from = starts[k];
+        }
         if (sr.converged || sr.status != SteadyStatus::converged || periods >= opt.max_periods) break;
     }
     Orbit o;
@@ -252,14 +255,23 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     std::vector<Orbit> others;
     double creep_skipped = 0;
     const Vec2 l_start = start_force(opt.start);
+    Vec2 found_from{2, 2}; // where the default search's Newton's method started (none: outside the disc)
     if (opt.start == Start::rest) {
-        state = default_search(setup, opt, periods);
+        state = default_search(setup, opt, periods, found_from);
         if (ok(state.status))
             state.reached =
                 solver::reaches(setup, l_start, state.l0, state.M, 1, state.circle_state, periods);
     }
     if (!state.reached && state.status != SteadyStatus::integration_failed) {
-        Reach reach = solver::reach_from(setup, l_start, guesses_for(m, opt, l_start, rq));
+        // The default search's state, found but not shown to be reached: its own start is not searched
+        // again, and a guess that leads to it again is only followed up (reach.hpp).
+        const bool rejected = ok(state.status) && state.have_mu && solver::stable(state.mu);
+        std::vector<Vec2> guesses = guesses_for(m, opt, l_start, rq);
+        if (rejected)
+            guesses.erase(std::remove_if(guesses.begin(), guesses.end(),
+                                         [&](const Vec2& g) { return (g - found_from).norm() < 1e-12; }),
+                          guesses.end());
+        Reach reach = solver::reach_from(setup, l_start, guesses, rejected ? &state : nullptr);
         periods += reach.periods;
         creep_skipped = reach.skipped;
         const bool better = ok(reach.state.status) || reach.state.status == SteadyStatus::not_periodic ||
