@@ -13,10 +13,12 @@
 // asserts nothing (timings are not tests).
 //   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
 //                          [--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE]
+//                          [--start rest|sliding]
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
 //     --map-threads N  threads of the map (default 0: all cores; 1 gives the one-core figure directly)
 //     --map-rdisp R    the map's r_disp (repeatable; default 1, 100, 1e4)
+//     --start S        the start whose state is solved for (default rest)
 //     --dump FILE      every grid point's parameters, status, r_x, r_y, error estimate, periods and ms, one
 //                      line each (to compare two builds point by point: only the timings should differ)
 #include "fv/figure_data.hpp"
@@ -146,11 +148,16 @@ int main(int argc, char** argv) {
             opt.ode_tolerance = std::atof(argv[++a]);
         else if (k == "--dump" && a + 1 < argc)
             dump = argv[++a];
+        else if (k == "--start" && a + 1 < argc && std::string(argv[a + 1]) == "sliding" && ++a)
+            opt.start = fv::Start::sliding;
+        else if (k == "--start" && a + 1 < argc && std::string(argv[a + 1]) == "rest" && ++a)
+            opt.start = fv::Start::rest;
         else {
-            std::fprintf(stderr,
-                         "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
-                         "[--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE]\n",
-                         argv[0]);
+            std::fprintf(
+                stderr,
+                "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
+                "[--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE] [--start rest|sliding]\n",
+                argv[0]);
             return 2;
         }
     }

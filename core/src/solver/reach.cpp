@@ -4,6 +4,7 @@
 #include "closed_forms.hpp"
 #include "coast.hpp"
 #include "creep_skip.hpp"
+#include "search_starts.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/LU>
@@ -546,6 +547,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     double followed = 0;
     std::vector<double> tried_at(kMaxPeriodK + 1, -1000);
     int creep_skips = 0, coasts = 0;
+    bool tried_limits = false;
     while (static_cast<int>(xs.size()) <= kFollowPeriods) {
         Vec2 before = x;
         int creep_run = 0; // creep periods in a row at the chunk's end
@@ -582,6 +584,21 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 search_periods += sr.periods;
                 out.periods += sr.periods;
                 if (take_period1(sr, xs[n])) return out;
+                // Newton's method from the motion finds nothing where the map is nearly a translation there
+                // (J = DPhi - I ~ 0: a slow drift at a steady rate, zeta = 0, theta = 90 deg from sliding):
+                // once, the limits (search_starts.hpp) as well, the state found held to the same evidence.
+                if (!sr.converged && !tried_limits) {
+                    tried_limits = true;
+                    for (const Vec2& g : other_starts(m)) {
+                        if (std::any_of(guesses.begin(), guesses.end(),
+                                        [&](const Vec2& q) { return (q - g).norm() < 1e-12; }))
+                            continue;
+                        const Search sl = search_from(p, m, g, s.rq, s.aim, budget, kGiveUp);
+                        search_periods += sl.periods;
+                        out.periods += sl.periods;
+                        if (take_period1(sl, xs[n])) return out;
+                    }
+                }
             } else {
                 const KSearch ks = newton_k(s, xs[n], k, 40 * k);
                 out.periods += ks.periods;
