@@ -572,8 +572,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
             if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || (k == 1 && d <= dprev)))) continue;
             // Just tried from near here: again once the motion has gone on for 16 k periods, and (a long
-            // approach) as long again as before the last try.
-            if (followed - tried_at[k] < std::max(16.0 * k, tried_at[k])) break;
+            // approach, still moving) as long again as before the last try.
+            const double wait = d < 1e-7 ? 16.0 * k : std::max(16.0 * k, tried_at[k]);
+            if (followed - tried_at[k] < wait) break;
             tried_at[k] = followed;
             if (k == 1 && candidate && (xs[n] - xs[n - 1]).dot(candidate->last_l0 - xs[n]) > 0) {
                 // Heading for the state found before: the evidence again from here, without a new search.
