@@ -32,24 +32,23 @@ bool legend_below(const PanelData& panel) {
     return panel.legend != Legend::none;
 }
 
-// A panel's first height in a column `width` wide: kColumnPanelAspect of the width, or where its axes have
-// equal aspect (top views) as tall as its data's ranges need at the full width, up to kColumnMaxTopView of
-// it (a panel that short would draw a top view as a strip, its arrows and labels crowded into its middle;
-// one taller would make the scene's three panels taller than a page); and its legend below.
-constexpr float kColumnMaxTopView = 1.0f;
+// A panel's first height in a column `width` wide: kColumnPanelAspect of the width, taller where its titles
+// and top axis leave the data area less than kColumnDataAspect of its width (fig19's panels), or where its
+// axes have equal aspect (top views) as tall as its data's ranges need at the full width, up to a square (a
+// panel that short would draw a top view as a strip, its arrows and labels crowded into its middle); and its
+// legend below.
+constexpr float kColumnDataAspect = 0.45f;
 float first_height(gfx::Canvas& canvas, const PanelData& panel, float width) {
     float h = std::round(kColumnPanelAspect * width);
     const gfx::Rect cell{0, 0, width, h};
-    if (panel.equal_aspect) {
-        // The ranges the axes fit before equal aspect widens one of them to the data area's shape.
-        gfx::Plot plain = panel_plot(panel, cell);
-        plain.equal_aspect = false;
-        const gfx::PlotTransform tf = plain.layout(canvas);
-        const double need = tf.area.width() * (tf.y1 - tf.y0) / (tf.x1 - tf.x0);
-        if (std::isfinite(need) && need > tf.area.height())
-            h = std::min(std::round(kColumnMaxTopView * width),
-                         std::round(h + static_cast<float>(need) - tf.area.height()));
-    }
+    // The ranges the axes fit before equal aspect widens one of them to the data area's shape.
+    gfx::Plot plain = panel_plot(panel, cell);
+    plain.equal_aspect = false;
+    const gfx::PlotTransform tf = plain.layout(canvas);
+    const double need = panel.equal_aspect ? tf.area.width() * (tf.y1 - tf.y0) / (tf.x1 - tf.x0)
+                                           : kColumnDataAspect * tf.area.width();
+    if (std::isfinite(need) && need > tf.area.height())
+        h = std::min(width, std::round(h + static_cast<float>(need) - tf.area.height()));
     return legend_below(panel) ? h + panel_plot(panel, cell).legend_below_height(canvas) : h;
 }
 
