@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """render --page and --caption (issue #23 item 8): the printed page's size read back by pdfinfo, the tick labels'
 type measured by pdftotext -bbox, the caption found in the PDF's text, the SVG's <desc> and the PNG's bottom band,
-and a bad --page refused with one line naming the allowed pages and nothing written.
+the column's panels one above another and a caption's overlong path broken inside it, and a bad --page refused
+with one line naming the allowed pages and nothing written.
 Usage: render_page_test.py FRICTIONVIZ SCRATCH_DIR"""
 import json, os, re, shutil, struct, subprocess, sys, zlib
 
@@ -82,6 +83,42 @@ out = os.path.join(scratch, "column")
 r = render(out, "--format", "pdf", "--page", "column")
 info = subprocess.run(["pdfinfo", os.path.join(out, "fig5.pdf")], capture_output=True, text=True).stdout
 check(re.search(r"Page size:\s+237.6 x", info) is not None, "--page column: the page is 3.3 in (237.6 pt) wide")
+
+
+def words(pdf):
+    """(xMin, yMin, xMax, yMax, word) of every word pdftotext finds on the page."""
+    bbox = subprocess.run(["pdftotext", "-bbox", pdf, "-"], capture_output=True, text=True).stdout
+    return [(float(a), float(b), float(c), float(d), t) for a, b, c, d, t in
+            re.findall(r'xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)</word>', bbox)]
+
+
+# Two panels on the column: one above the other across its width (side by side they were 160 units each), the
+# page taller than a one-panel figure's.
+r = subprocess.run([fv, "render", "--figure", "fig4", "--format", "pdf", "--page", "column", "--out", out],
+                   capture_output=True, text=True)
+fig4 = words(os.path.join(out, "fig4.pdf"))
+first = [w for w in fig4 if w[4] == "velocity"]    # the first panel's title: "velocity v/v_v and friction ..."
+second = [w for w in fig4 if w[4] == "against"]    # the second's: "friction against v_b over one period"
+check(r.returncode == 0 and first and second and second[0][1] > first[0][3] + 100,
+      f"--page column: fig4's second panel is under the first ({first[:1]}, {second[:1]})")
+h4 = float(re.search(r"Page size:\s+[\d.]+ x ([\d.]+)", subprocess.run(
+    ["pdfinfo", os.path.join(out, "fig4.pdf")], capture_output=True, text=True).stdout).group(1))
+h5 = float(re.search(r"Page size:\s+[\d.]+ x ([\d.]+)", info).group(1))
+check(h4 > 1.6 * h5, f"--page column: fig4's page ({h4:.0f} pt) is taller than fig5's ({h5:.0f} pt)")
+
+# A caption with a word wider than the column (a data file's path) is broken inside the page, not run off it.
+deep = os.path.join(scratch, "a_directory_with_a_long_name_for_measurements", "and-another-level")
+os.makedirs(deep, exist_ok=True)
+data = os.path.join(deep, "friction_ratio_measurements_at_two_angles.csv")
+shutil.copy(os.path.join(os.path.dirname(os.path.abspath(__file__)), "data", "synthetic_two_angles_rdisp2_i0.csv"),
+            data)
+r = subprocess.run([fv, "render", "--figure", "rx", "--model", "rigid", "--theta", "45", "--data", data, "--format",
+                    "pdf", "--page", "column", "--caption", "--out", out], capture_output=True, text=True)
+rx = words(os.path.join(out, "rx.pdf"))
+outside = [w for w in rx if w[0] < -0.01 or w[2] > 237.6 + 0.01]
+caption_text = "".join(w[4] for w in rx)
+check(r.returncode == 0 and not outside and "friction_ratio_measurements_at_two_angles.csv" in caption_text,
+      f"--page column --caption: a {len(data)}-character path broken inside the page ({outside[:2]})")
 
 # A PNG with --caption is the figure (the same pixels) with a band under it that has ink.
 plain, capt = os.path.join(scratch, "plain"), os.path.join(scratch, "capt")

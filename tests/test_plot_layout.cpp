@@ -7,8 +7,12 @@
 // - every force plot states its sign convention, F = (P − T) F_c / z_ss, on its axis and in its caption;
 // - format_number never prints a negative zero;
 // - the app's live top view, through a steady period at theta = 0, 30, 90 and 150 degrees in the body and the
-// ground frame: no two texts overlap, no label lies on an arrow or a marker, no arrow lies along another.
+// ground frame: no two texts overlap, no label lies on an arrow or a marker, no arrow lies along another;
+// - on a journal column (render --page column, full-size text on 330 units): no two texts overlap, no label on
+// an arrow or a marker, no text off the page or below 12 units, every panel's legend drawn and off the data,
+// every data area at least 150 x 90 units; and the same check flags the side-by-side layout it replaced.
 #include "figures/figure_painter.hpp"
+#include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
 #include "gui/app_state.hpp"
 #include "gui/dashboard.hpp"
@@ -625,4 +629,93 @@ TEST_CASE("Fig. 4 along the sliding line: the instants up a time axis, no arrow 
             }
         }
     CHECK(fig4(0.5, 90).panels.at(0).title == "velocity v/v_{v} and friction F/F_{c} at τ = kπ/4");
+}
+
+namespace {
+
+// What makes a figure on a journal column (render --page column: 3.3 in, tick labels 8 pt at 13 units) hard
+// to read, as a description ("" when nothing): text on text, a label on an arrow or a marker, text off the
+// page or below 12 units (7.4 pt), a data area smaller than 150 x 90 units (1.5 x 0.9 in; 60 units tall for
+// a family of more than three maps), a panel's legend left out, a legend box over the data.
+std::string column_problem(const fv::FigureData& fig, const DisplayList& list,
+                           const fv::gfx::FontSet& fonts) {
+    if (std::string o = overlapping_texts(list, fonts, 1.0f); !o.empty()) return "overlap: " + o;
+    if (std::string o = label_on_shape(list, fonts); !o.empty()) return o;
+    for (const auto& c : list.commands)
+        if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
+            const Rect b = fv::gfx::text_bounds(*t, fonts);
+            if (b.x0 < 0 || b.y0 < 0 || b.x1 > list.size.x || b.y1 > list.size.y)
+                return "\"" + t->text + "\" leaves the page";
+            if (t->style.size < 12)
+                return "\"" + t->text + "\" at " + std::to_string(t->style.size) + " units";
+        }
+    int legends = 0, data_areas = 0;
+    for (const fv::gfx::Region& r : list.regions) {
+        if (r.role == "data") {
+            ++data_areas;
+            // Small multiples of more than three maps take shorter rows (six stay within about 8 in).
+            const float least_h = fig.columns > 0 && fig.panels.size() > 3 ? 60.0f : 90.0f;
+            if (r.rect.width() < 150 || r.rect.height() < least_h)
+                return "a data area of " + std::to_string(r.rect.width()) + " x " +
+                       std::to_string(r.rect.height());
+        }
+        if (r.role != "legend") continue;
+        ++legends;
+        if (std::string s = sample_in(list, r.rect); !s.empty()) return "the legend over " + s;
+    }
+    // Small multiples share one legend under the grid (not a panel's); every other panel with labelled
+    // series keeps its legend.
+    int asked = 0;
+    for (const fv::PanelData& p : fig.panels)
+        asked +=
+            fig.columns == 0 && p.legend != fv::Legend::none &&
+            std::any_of(p.series.begin(), p.series.end(), [](const auto& s) { return !s.label.empty(); });
+    if (legends < asked) return std::to_string(asked - legends) + " legend(s) left out";
+    if (data_areas < static_cast<int>(fig.panels.size())) return "a panel not drawn";
+    return "";
+}
+
+// The column's logical width, as render --page column lays a figure out.
+float column_width() {
+    return fv::app::print_layout(fv::app::PaperPage::column, 1280, 800, true).logical.x;
+}
+
+} // namespace
+
+TEST_CASE("On a journal column every figure reads at 8 pt: no overlap, every legend off the data, panels "
+          "large enough",
+          "[layout][column]") {
+    // Side by side on 330 units two panels got 160 each: Fig. 4's labels ran together, Fig. 6's and the
+    // scene's legends were elided to "…" over the curves, Fig. 10-13's, rx's and ry's were left out.
+    std::vector<fv::FigureData> figs = figures();
+    fv::FigureInputs along; // Fig. 4 along the sliding line: nine rows of labelled arrows up a time axis
+    along.theta_deg = {0}, along.zeta = 0.5;
+    figs.push_back(fv::compute_figure(fv::find_registered("fig4")->make(along)));
+    fv::app::RenderSession& s = session();
+    const float width = column_width();
+    REQUIRE(width == Approx(237.6f / (8.0f / (13 * 2048.0f / 2384))).epsilon(1e-4)); // 3.3 in at 8 pt
+    for (const fv::FigureData& fig : figs) {
+        const DisplayList list = s.record_column_figure(fig, width);
+        INFO(fig.id << " (" << fig.panels.size() << " panels) on the column, " << list.size.x << " x "
+                    << list.size.y);
+        CHECK(list.size.x == width);
+        CHECK(column_problem(fig, list, s.fonts()) == "");
+    }
+}
+
+TEST_CASE("On a journal column: the check sees the side-by-side layout's cramping", "[layout][column]") {
+    // The layout before: the figure on a 3:4 page the column's width, full-size text, panels side by side.
+    fv::app::RenderSession& s = session();
+    const float width = column_width();
+    int cramped = 0, multi = 0;
+    for (const fv::FigureData& fig : figures()) {
+        if (fig.panels.size() < 2) continue;
+        ++multi;
+        const DisplayList list = s.record_figure(fig, {width, 0.75f * width}, 1);
+        const std::string problem = column_problem(fig, list, s.fonts());
+        INFO(fig.id << ": " << problem);
+        cramped += !problem.empty();
+    }
+    CHECK(multi >= 4);       // fig4, fig6, fig14, the scenes, the families of maps
+    CHECK(cramped == multi); // every one of them
 }

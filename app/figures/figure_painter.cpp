@@ -141,8 +141,16 @@ class LabelPlacer {
         pending_.push_back(best);
     }
     // Draws the placed labels (after every placement, so that each was placed against the shapes only).
+    // Each leader line is recorded as a region "leader" (a label that found no free place near what it names:
+    // the column layout gives such a panel more room).
     void draw() {
-        for (const auto& [a, b] : leaders_) canvas_.line(a, b, {gfx::Color::hex(0x606060), 0.8f});
+        for (const auto& [a, b] : leaders_) {
+            const gfx::Canvas::Mark at = canvas_.mark();
+            canvas_.line(a, b, {gfx::Color::hex(0x606060), 0.8f});
+            canvas_.add_region(
+                "leader", {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)},
+                at);
+        }
         for (const auto& t : pending_) canvas_.text(t.anchor, t.text, t.style);
     }
 
@@ -426,6 +434,10 @@ void draw_marks_and_labels(gfx::Canvas& c, const gfx::PlotTransform& tf, const P
 
 gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
                                bool legend_below) {
+    return panel_plot(panel, bounds, legend_below).draw(canvas);
+}
+
+gfx::Plot panel_plot(const PanelData& panel, const gfx::Rect& bounds, bool legend_below) {
     gfx::Plot plot(bounds);
     plot.legend_below = legend_below;
     set_axes(plot, panel);
@@ -443,16 +455,11 @@ gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, cons
     // Markers and labels, not clipped: a marker on the frame (theta = 90 deg on the map) is drawn whole.
     plot.add_overlay(
         [pd](gfx::Canvas& c, const gfx::PlotTransform& tf) { draw_marks_and_labels(c, tf, *pd); }, false);
-    return plot.draw(canvas);
+    return plot;
 }
 
-namespace {
-
-// The figure's title centred at the top of `bounds`, within its width: at 22 units where it fits, else
-// smaller down to 16, else on two lines broken after the ", ", "; " or ": " that balances them best (as
-// large as both fit, at most 22). All three sizes times `factor` (page_text_factor). Returns where the title
-// ends.
-float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds, float factor) {
+float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds, float factor,
+                  bool draw) {
     const float kSize = 22 * factor, kMinOneLine = 16 * factor, kTop = 12 * factor;
     constexpr float kLeading = 1.15f;
     const float avail = std::max(1.0f, bounds.width() - 16);
@@ -487,14 +494,18 @@ float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect
     }
     if (second.empty()) {
         ts.size = one;
-        canvas.text({cx, bounds.y0 + kTop}, title, ts);
+        if (draw) canvas.text({cx, bounds.y0 + kTop}, title, ts);
         return bounds.y0 + kTop + one;
     }
     ts.size = fit({first, second}, 1);
-    canvas.text({cx, bounds.y0 + kTop}, std::string(first), ts);
-    canvas.text({cx, bounds.y0 + kTop + kLeading * ts.size}, std::string(second), ts);
+    if (draw) {
+        canvas.text({cx, bounds.y0 + kTop}, std::string(first), ts);
+        canvas.text({cx, bounds.y0 + kTop + kLeading * ts.size}, std::string(second), ts);
+    }
     return bounds.y0 + kTop + (1 + kLeading) * ts.size;
 }
+
+namespace {
 
 // A panel of small multiples as it is drawn: its legend left to the figure, no colour bar of its own, its
 // text at `factor`.
@@ -532,24 +543,26 @@ std::vector<gfx::Series> merged_legend(const FigureData& fig) {
     return legend;
 }
 
-// Small multiples (FigureData::columns, a family of maps): the panels on a grid, row by row, sharing their
-// axes as matplotlib's supxlabel/supylabel label them: one x title under the grid, one y title left of it,
-// none on the panels. The cells are placed so that every data area has the same size and they line up in
-// rows and columns whatever each panel's title takes (a long one wraps on a small page): each panel's
-// margins are measured (its layout, nothing drawn) and every row (column) gets the largest of its panels'.
-// Right of the grid one colour bar on the panels' shared scale, as tall as their data areas; below it one
-// legend (merged_legend). Text at `factor` (page_text_factor).
+} // namespace
+
+float grid_margin_height(gfx::Canvas& canvas, const FigureData& fig, float width, float factor) {
+    const float fs = 13 * factor, title_fs = fs + factor, gap = std::round(10 * factor);
+    const gfx::Vec2 legend_size = gfx::legend_rows(canvas, merged_legend(fig), {0, 0}, width, fs, false);
+    const float below = fig.panels.front().x_title.empty() ? 0 : std::round(title_fs * 1.7f);
+    return below + (legend_size.y > 0 ? legend_size.y + gap : 0);
+}
+
 void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& body, float factor) {
     const std::size_t n = fig.panels.size(), cols = static_cast<std::size_t>(fig.columns);
     const std::size_t rows = (n + cols - 1) / cols;
-    const float fs = 13 * factor, title_fs = fs + factor, gap = std::round(10 * factor);
+    const float fs = 13 * factor, title_fs = fs + factor;
     const PanelData& first = fig.panels.front();
     const std::vector<gfx::Series> legend = merged_legend(fig);
     const gfx::Vec2 legend_size = gfx::legend_rows(canvas, legend, {0, 0}, body.width(), fs, false);
     const float below = first.x_title.empty() ? 0 : std::round(title_fs * 1.7f),
                 left = first.y_title.empty() ? 0 : std::round(title_fs * 1.7f);
     const gfx::Rect grid{body.x0 + left, body.y0, body.x1 - gfx::kColorBarSpace,
-                         body.y1 - below - (legend_size.y > 0 ? legend_size.y + gap : 0)};
+                         body.y1 - grid_margin_height(canvas, fig, body.width(), factor)};
     std::vector<PanelData> panels;
     for (const PanelData& p : fig.panels) {
         panels.push_back(grid_panel(p, factor));
@@ -615,8 +628,6 @@ void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& bod
                          {std::round((body.x0 + body.x1 - legend_size.x) / 2), body.y1 - legend_size.y},
                          body.width(), fs);
 }
-
-} // namespace
 
 float page_text_factor(const gfx::Rect& page) {
     return std::clamp(std::min(page.width() / 640.0f, page.height() / 400.0f), kSmallestTextFactor, 1.0f);

@@ -5,6 +5,8 @@
 #include "fv/gfx/canvas.hpp"
 #include "fv/gfx/plot.hpp"
 
+#include <string>
+
 namespace fv::app {
 
 // Lays the panels out inside `bounds` under the figure title: one panel fills it; three panels (the scene)
@@ -24,6 +26,28 @@ float page_text_factor(const gfx::Rect& page);
 // legends inside).
 gfx::PlotTransform paint_panel(gfx::Canvas& canvas, const PanelData& panel, const gfx::Rect& bounds,
                                bool legend_below = false);
+
+// The plot paint_panel draws (its legend, titles, series and the overlays of its shapes, markers and labels),
+// to draw or to measure; it refers to `panel`, which must outlive it.
+gfx::Plot panel_plot(const PanelData& panel, const gfx::Rect& bounds, bool legend_below = false);
+
+// The figure's title centred at the top of `bounds`, within its width: at 22 units where it fits, else
+// smaller down to 16, else on two lines broken after the ", ", "; " or ": " that balances them best (as
+// large as both fit, at most 22). All three sizes times `factor` (page_text_factor). Returns where the title
+// ends; `draw` false: only that, nothing drawn.
+float paint_title(gfx::Canvas& canvas, const std::string& title, const gfx::Rect& bounds, float factor,
+                  bool draw = true);
+
+// Small multiples (FigureData::columns, a family of maps): the panels on a grid, row by row, sharing their
+// axes as matplotlib's supxlabel/supylabel label them: one x title under the grid, one y title left of it,
+// none on the panels. The cells are placed so that every data area has the same size and they line up in
+// rows and columns whatever each panel's title takes (a long one wraps on a small page): each panel's
+// margins are measured (its layout, nothing drawn) and every row (column) gets the largest of its panels'.
+// Right of the grid one colour bar on the panels' shared scale, as tall as their data areas; below it one
+// legend naming each labelled line or mark of any panel once. Text at `factor` (page_text_factor).
+void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& body, float factor);
+// The height paint_grid keeps under the grid `width` wide: the shared x title and the legend.
+float grid_margin_height(gfx::Canvas& canvas, const FigureData& fig, float width, float factor);
 
 gfx::Color ink_color(Ink ink, std::size_t series_index);
 

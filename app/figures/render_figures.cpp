@@ -73,7 +73,8 @@ PrintLayout print_layout(PaperPage paper, float width, float height, bool captio
     l.logical.x = (page_w - 2 * margin) / scale;
     // A portrait sheet has height to spare: the figure gets at least 3/4 of its width, so that a figure of
     // two panels (fig4's rows of arrows up a time axis) is not squeezed to a wide screen's aspect.
-    l.logical.y = l.logical.x * (column ? 0.75f : std::max(0.75f, height / width));
+    l.logical.y = column ? 0 : l.logical.x * std::max(0.75f, height / width);
+    l.column = column;
     l.text_factor = 1; // full-size text on a page smaller than 640 units: it prints at `type`
     l.vector.scale = scale;
     l.vector.origin = {margin, column ? 0 : margin};
@@ -110,8 +111,9 @@ void draw_pictures(RenderSession& session, const FigureData& data, const Picture
                                                                        session.pixel_ratio()));
     }
     if (vectors && (!formats.png || printed))
-        list = printed ? session.record_figure(data, layout.logical, layout.text_factor)
-                       : session.record_figure(data);
+        list = layout.column ? session.record_column_figure(data, layout.logical.x)
+               : printed     ? session.record_figure(data, layout.logical, layout.text_factor)
+                             : session.record_figure(data);
 }
 
 namespace {

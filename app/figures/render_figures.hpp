@@ -31,11 +31,13 @@ using NamedFile = std::pair<std::string, std::string>; // file name, content
 struct PrintLayout {
     gfx::Vec2 logical{0, 0}; // the page the figure is laid out on ({0, 0}: the session's)
     float text_factor = 0;   // its text factor (paint_figure), 0: the page's own
+    bool column = false;     // a journal column: laid out by column_layout.hpp, logical.x wide, as tall as
+                             // the figure takes there (logical.y unused)
     gfx::VectorPage vector;  // where it goes on the printed page, the caption's size
     float png_caption = 14;  // a PNG's caption text size, logical units
 };
 // The layout of `paper` for a figure drawn at `width` x `height` logical units (its aspect is kept for a4
-// and letter; a column is 3:4), with a caption or not.
+// and letter; a column is as tall as each figure takes: column_layout.hpp), with a caption or not.
 PrintLayout print_layout(PaperPage paper, float width, float height, bool caption);
 
 // ID.png (from `image`), ID.svg and ID.pdf (from `list`) as asked. Thread-safe; throws what the encoders

@@ -1,5 +1,6 @@
 #include "render_session.hpp"
 
+#include "column_layout.hpp"
 #include "figure_painter.hpp"
 
 #include "fv/atomic_file.hpp"
@@ -47,6 +48,16 @@ gfx::DisplayList RenderSession::record_figure(const FigureData& fig) {
 gfx::DisplayList RenderSession::record_figure(const FigureData& fig, gfx::Vec2 logical, float text_factor) {
     canvas_.begin(logical, ratio_, gfx::colors::white);
     paint_figure(canvas_, fig, {0, 0, logical.x, logical.y}, text_factor);
+    canvas_.end_recording();
+    return canvas_.display_list();
+}
+
+gfx::DisplayList RenderSession::record_column_figure(const FigureData& fig, float width) {
+    // A page tall enough for the layout's tries (panel_height draws each panel at up to twice the width).
+    canvas_.begin({width, 4 * width}, ratio_, gfx::colors::white);
+    const ColumnLayout layout = column_layout(canvas_, fig, width);
+    canvas_.begin(layout.page, ratio_, gfx::colors::white);
+    paint_column_figure(canvas_, fig, layout);
     canvas_.end_recording();
     return canvas_.display_list();
 }

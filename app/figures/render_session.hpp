@@ -36,6 +36,9 @@ class RenderSession {
     gfx::DisplayList record_figure(const FigureData& fig);
     // The same on a logical page of its own (a printed page's, render --page), text at `text_factor`.
     gfx::DisplayList record_figure(const FigureData& fig, gfx::Vec2 logical, float text_factor);
+    // The same laid out for a journal column `width` units wide (column_layout.hpp): its page as tall as the
+    // figure takes there.
+    gfx::DisplayList record_column_figure(const FigureData& fig, float width);
     // The logical page: framebuffer / pixel ratio.
     gfx::Vec2 logical_page() const;
     // The screenshot: the frame drawn so far (before present) as a PNG at path, written atomically

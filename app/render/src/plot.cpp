@@ -493,6 +493,12 @@ AboveLayout above_layout(const Canvas& canvas, const std::vector<Series>& series
 
 } // namespace
 
+float Plot::legend_below_height(const Canvas& canvas) const {
+    const auto entries = legend_entries(series_);
+    if (entries.empty()) return 0;
+    return legend_below_geom(canvas, series_, entries, font_size, bounds_.width()).size.y + kLegendGap;
+}
+
 float Plot::legend_band(const Canvas& canvas) const {
     const auto entries = legend_entries(series_);
     if (legend != LegendPosition::Above || entries.empty()) return 0;
@@ -510,6 +516,8 @@ PlotTransform Plot::draw(Canvas& canvas) const {
     LegendPlace redraw = LegendPlace::Inside;
     if (has_legend && legend == LegendPosition::Outside)
         return draw_with_legend(canvas, LegendPlace::Right, redraw);
+    if (has_legend && legend == LegendPosition::Below)
+        return draw_with_legend(canvas, LegendPlace::Below, redraw);
     const Canvas::Mark start = canvas.mark();
     const PlotTransform tf = draw_with_legend(canvas, LegendPlace::Inside, redraw);
     if (redraw == LegendPlace::Inside) return tf;

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <ctime>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -293,8 +294,29 @@ std::string source_date() {
     return buf;
 }
 
-// `text` in words, as lines no wider than `width` at the font size set on `cr` (a word wider than that
-// alone on its line).
+// `word` (wider than `width`) in pieces that fit, each but the last on a line of its own: broken after the
+// last '/', '_' or '-' that keeps a piece inside the width (a data file's path in a caption), else between
+// characters; never inside a UTF-8 sequence. The last piece is returned to go on as a word.
+std::string break_word(const std::string& word, const std::function<bool(const std::string&)>& fits,
+                       std::vector<std::string>& lines) {
+    std::string rest = word;
+    while (!fits(rest)) {
+        std::size_t end = 0, at_mark = 0; // the longest prefix that fits; the one ending after a mark
+        for (std::size_t k = 1; k <= rest.size(); ++k) {
+            if (k < rest.size() && (static_cast<unsigned char>(rest[k]) & 0xC0) == 0x80) continue;
+            if (!fits(rest.substr(0, k))) break;
+            end = k;
+            if (rest[k - 1] == '/' || rest[k - 1] == '_' || rest[k - 1] == '-') at_mark = k;
+        }
+        const std::size_t cut = at_mark > 0 ? at_mark : std::max<std::size_t>(end, 1);
+        lines.push_back(rest.substr(0, cut));
+        rest.erase(0, cut);
+    }
+    return rest;
+}
+
+// `text` in words, as lines no wider than `width` at the font size set on `cr` (a word wider than that in
+// pieces: break_word).
 std::vector<std::string> wrap_text(cairo_t* cr, const std::string& text, double width) {
     std::vector<std::string> lines;
     std::string line, word;
@@ -305,6 +327,11 @@ std::vector<std::string> wrap_text(cairo_t* cr, const std::string& text, double 
     };
     auto flush_word = [&] {
         if (word.empty()) return;
+        if (!fits(word)) {
+            if (!line.empty()) lines.push_back(line);
+            line.clear();
+            word = break_word(word, fits, lines);
+        }
         const std::string joined = line.empty() ? word : line + " " + word;
         if (line.empty() || fits(joined)) {
             line = joined;

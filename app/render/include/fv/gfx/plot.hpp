@@ -60,8 +60,10 @@ inline constexpr float kColorBarSpace = 90;
 /// and segments, markers, error bars, overlays and their text); outside the axes, right of them, when none is
 /// free (in a plot too small for that, the place covering least). Outside: always there (e.g. for an animated
 /// plot, whose free corner moves). Above: between the title and the axes, the entries side by side in rows as
-/// wide as the data area (a small animated plot: nothing it draws can run under its legend).
-enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft, Outside, Above };
+/// wide as the data area (a small animated plot: nothing it draws can run under its legend). Below: always
+/// below the axes, under the x axis title, the plot shorter by its height (legend_below's place, taken
+/// whatever it covers inside: a printed journal column, whose panels are too small for a box on their data).
+enum class LegendPosition { None, Best, TopRight, TopLeft, BottomRight, BottomLeft, Outside, Above, Below };
 
 /// Data <-> pixel mapping of a laid-out plot.
 struct PlotTransform {
@@ -115,6 +117,9 @@ class Plot {
 
     /// Computes ranges, ticks and margins (needs the canvas for text metrics), with the legend inside.
     PlotTransform layout(const Canvas& canvas) const;
+    /// The height a legend below the axes takes in this plot (its box and the gap above it; 0 without
+    /// labelled series): what LegendPosition::Below makes the plot shorter by.
+    float legend_below_height(const Canvas& canvas) const;
     /// Draws the plot; returns the data <-> pixel mapping it used (narrower than layout() when the legend
     /// went outside). Records the regions "data" and "legend" (display_list.hpp).
     PlotTransform draw(Canvas& canvas) const;
