@@ -212,12 +212,27 @@ struct Canvas::Impl {
     // a quad covers, discarded or not.
     float aa_reach() const { return 0.5f / ratio + kQuadMargin; }
 
+    // Whether the line turns by at most 90 degrees at the joint a -> j -> b.
+    static bool gentle_turn(Vec2 a, Vec2 j, Vec2 b) {
+        const Vec2 d0 = j - a, d1 = b - j;
+        return d0.x * d1.x + d0.y * d1.y >= 0;
+    }
+
     void segment(Vec2 prev, Vec2 p0, Vec2 p1, Vec2 next, bool has_prev, bool has_next, float s0,
                  const Stroke& s, const DashPattern& dp) {
         const float hw = 0.5f * s.width;
-        // The shader's reach (hw + 1/ratio + 0.5, where it decides which segment owns a pixel at a joint):
-        // every pixel it may shade.
-        const float e = hw + 1.0f / ratio + 0.5f + kQuadMargin;
+        // The quad covers every pixel the shader may shade; llvmpipe pays for the others too, and a densely
+        // sampled curve (segments shorter than a pixel) lays many quads over each of its pixels. A pixel is
+        // shaded only where its distance to the cores (this segment's or a neighbour's) is below
+        // hw + 0.5/ratio (aa_reach's half pixel). Where the line turns by at most 90 degrees at both ends,
+        // a pixel nearer a neighbour's core that this segment owns (on its side of the joint's bisector) is
+        // at least as near this segment's ray from the joint (reflect the neighbour's ray across the
+        // bisector), so it lies within that distance of this segment's line, inside the quad of that reach.
+        // Sharper turns keep the shader's whole reach (hw + 1/ratio + 0.5, up to which it decides which
+        // segment owns a pixel at a joint). Same pixels either way.
+        const bool gentle =
+            (!has_prev || gentle_turn(prev, p0, p1)) && (!has_next || gentle_turn(p0, p1, next));
+        const float e = gentle ? hw + aa_reach() : hw + 1.0f / ratio + 0.5f + kQuadMargin;
         Vec2 dir = p1 - p0;
         const float len = std::hypot(dir.x, dir.y);
         dir = dir * (1.0f / len);
