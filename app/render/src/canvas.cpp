@@ -449,6 +449,24 @@ struct Canvas::Impl {
         if (clips.size() > 1) clips.pop_back();
     }
 
+    // Whether a fill repeats the page under it: opaque, in the page's colour, over pixels that no earlier
+    // command may have drawn (a plot's white background on the white page). Such a fill leaves every pixel
+    // as it is, and llvmpipe pays about 2 ns per pixel for it (a scissored clear is a quad there): 2.3 ms of
+    // the compare bench frame at 1920x1080 scale 1.5.
+    bool on_blank_page(const DisplayList& dl, std::size_t index, const dl::FillRect& fill) const {
+        const Color &c = fill.color, &bg = dl.background;
+        if (c.a < 1.0f || c.r != bg.r || c.g != bg.g || c.b != bg.b || c.a != bg.a) return false;
+        constexpr float kPad = 2; // beyond any antialiasing ramp and quad margin, in logical units
+        const Rect r{fill.rect.x0 - kPad, fill.rect.y0 - kPad, fill.rect.x1 + kPad, fill.rect.y1 + kPad};
+        for (std::size_t i = 0; i < index; ++i) {
+            const dl::Command& earlier = dl.commands[i];
+            if (const auto* f = std::get_if<dl::FillRect>(&earlier); f && f->rect.overlaps(r)) return false;
+            if (const auto* p = std::get_if<dl::Picture>(&earlier); p && p->dst.overlaps(r)) return false;
+            if (command_touches(earlier, r, fonts)) return false;
+        }
+        return true;
+    }
+
     void render(const DisplayList& dl, float pixel_ratio);
 };
 
@@ -465,7 +483,11 @@ void Canvas::Impl::render(const DisplayList& dl, float pixel_ratio) {
     shared.TexUvWhitePixel = fonts.atlas().TexUvWhitePixel;
     shared.Font = fonts.font_for(14);
     shared.FontSize = 14;
-    for (const dl::Command& c : dl.commands) std::visit([this](const auto& cmd) { draw(cmd); }, c);
+    for (std::size_t i = 0; i < dl.commands.size(); ++i) {
+        const dl::Command& c = dl.commands[i];
+        if (const auto* fill = std::get_if<dl::FillRect>(&c); fill && on_blank_page(dl, i, *fill)) continue;
+        std::visit([this](const auto& cmd) { draw(cmd); }, c);
+    }
 
     const int fb_w = static_cast<int>(std::lround(size.x * ratio));
     const int fb_h = static_cast<int>(std::lround(size.y * ratio));
