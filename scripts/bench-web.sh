@@ -4,6 +4,9 @@
 # frame that shows the new state. Prints the numbers; not a pass/fail test (targets: first frame
 # <= 3 s, slider to frame <= 33 ms). Real time, not virtual: run it on a quiet machine (uptime is printed).
 #   scripts/bench-web.sh [SITE_DIR]      (default build-web/site; scripts/build-web.sh makes it)
+# FV_BENCH_QUERY: a share link to open the page with, e.g. '?b.theta=0' (compare mode: B at theta = 0 beside A;
+# the page then drags zeta on compare mode's row). It also prints the page's own work per edit and per frame
+# by phase (FrameWork, app/gui/platform.hpp), which depends less on the machine's load than the wall times.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh browser
@@ -32,3 +35,7 @@ for _ in $(seq 1 1200); do
 done
 grep -a 'fv-bench: ' "$tmp/chromium.log" | sed 's/^.*fv-bench: /  /; s/", source:.*$//'
 grep -aq 'fv-bench: done' "$tmp/chromium.log" || { echo "bench-web: the page did not finish in 120 s" >&2; exit 1; }
+if grep -aq 'fv-bench: the link did not read' "$tmp/chromium.log"; then
+  echo "bench-web: FV_BENCH_QUERY is not a share link the app reads (nothing measured)" >&2
+  exit 2
+fi

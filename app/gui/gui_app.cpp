@@ -152,7 +152,8 @@ class GuiLoop {
 
   private:
     struct FrameTimes {
-        Clock::time_point start, sim, layout, gl;
+        Clock::time_point start, ui, synced, sim, layout, gl;
+        double slice_ms = 0; // the curves' slice, inside the panel's phase (without threads)
     };
 
     static PlatformOptions platform_options(const GuiOptions& o) {
@@ -184,14 +185,17 @@ class GuiLoop {
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
         // B's curves (compare mode) get the frame's slice once A's are done.
+        const auto slice_start = Clock::now();
         if (!queued_.moves_curves())
             (app_.worker().busy() || !ui.session.compare ? app_.worker() : app_.worker_b())
                 .run_slice(std::chrono::milliseconds(6));
+        times_.slice_ms = Ms(Clock::now() - slice_start).count();
         queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
         if (const gfx::Rect& a = transforms_.top_view.area; a.width() > 0 && a.height() > 0)
             queued_.view_aspect = static_cast<double>(a.width()) / a.height();
         if (ui.show_help && !draw_help_overlay(true, layout_.beside)) queued_.show_help = false;
         ImGui::Render();
+        times_.ui = Clock::now();
     }
 
     // 2. All edits — the panel's, keys, mouse, drops and the script's — applied at one point. A dropped
@@ -220,6 +224,7 @@ class GuiLoop {
             std::fprintf(stderr, "frictionviz: %s\n", queued_.status.value_or(app_.ui().status).c_str());
             ++failed_writes_;
         }
+        times_.synced = Clock::now();
         return true;
     }
 
@@ -267,6 +272,10 @@ class GuiLoop {
         if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_,
                                    app_, queued_))
             ++failed_writes_;
+        platform_->frame_work({Ms(times_.ui - times_.start).count() - times_.slice_ms, times_.slice_ms,
+                               Ms(times_.synced - times_.ui).count(), Ms(times_.sim - times_.synced).count(),
+                               Ms(times_.layout - times_.sim).count(),
+                               Ms(times_.gl - times_.layout).count()});
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)

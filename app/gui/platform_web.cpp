@@ -96,15 +96,39 @@ void web_set_clipboard(void* /*user*/, const char* text) {
     fv_web_copy_text(text);
 }
 
-// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page).
-EM_JS(void, fv_web_frame_shown, (), {
-    if (Module["fvFrame"]) Module["fvFrame"]();
+// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page), with the
+// work it took on the page's thread by phase (FrameWork, ms).
+EM_JS(void, fv_web_frame_shown, (double ui, double slice, double sync, double sim, double paint, double gl), {
+    if (Module["fvFrame"])
+        Module["fvFrame"]({ui: ui, slice: slice, sync: sync, sim: sim, paint: paint, gl: gl});
+});
+// A fence after the frame's drawing commands (WebGL 2's fenceSync on the app's context, emscripten's GLctx),
+// then flushed so the GPU side starts on them.
+EM_JS(void, fv_web_fence_frame, (), {
+    if (Module["fvFence"]) GLctx.deleteSync(Module["fvFence"]);
+    Module["fvFence"] = GLctx.fenceSync(GLctx.SYNC_GPU_COMMANDS_COMPLETE, 0);
+    GLctx.flush();
+});
+// Whether the GPU side has executed the last frame's commands. Never blocks: a fence's status is asked, and
+// WebGL updates it only between tasks (so the caller sleeps between asks). Tells the page when it has
+// (Module.fvGpuDone, the benchmark's page).
+EM_JS(int, fv_web_gpu_done, (), {
+    var f = Module["fvFence"];
+    if (!f) return 1;
+    if (GLctx.getSyncParameter(f, GLctx.SYNC_STATUS) !== GLctx.SIGNALED) return 0;
+    GLctx.deleteSync(f);
+    Module["fvFence"] = null;
+    if (Module["fvGpuDone"]) Module["fvGpuDone"]();
+    return 1;
 });
 // clang-format on
 
 // Beyond 3 device pixels per CSS pixel nobody sees a difference, while the pixels to fill grow with its
 // square (a phone at 3: 1170 x 2532 for 390 x 844 CSS pixels).
 constexpr double kMaxRatio = 3;
+
+// present() waits at most this long for the GPU side to finish a frame (a lost context never signals).
+constexpr double kMaxGpuWaitMs = 250;
 
 // Framebuffer pixels per CSS pixel: as asked, else the screen's (window.devicePixelRatio: 2 on a HiDPI
 // screen, also with the browser's zoom), at most kMaxRatio. Fixed at start (the fonts are rasterised at it):
@@ -162,17 +186,28 @@ class WebPlatform final : public GlfwPlatform {
         if (!(io.DeltaTime > 0)) io.DeltaTime = 1.0f / 60.0f;
     }
     // Back to the browser, which shows the frame and delivers input, for what is left of 1/60 s since the
-    // last frame (at least 1 ms). A timer, not a busy wait: under a virtual time budget (the tests) the
-    // page's clock moves only with its timers.
+    // last frame (at least 1 ms), and then until the browser's GPU side has drawn the frame (at most
+    // kMaxGpuWaitMs more). Timers, not a busy wait: under a virtual time budget (the tests) the page's clock
+    // moves only with its timers.
+    // Why wait for the GPU: a page's WebGL calls only queue commands for the browser's GPU process. When it
+    // draws more slowly than the page makes frames (software rendering, SwiftShader, on a loaded machine:
+    // 20-90 ms a frame measured), the queue grows until a call blocks the page for as long as the backlog
+    // takes: a slider edit then waited 0.2-0.5 s inside the next frame's drawing. Waiting here keeps at most
+    // one frame in flight, and the page answers input meanwhile.
     void present() override {
         ctx_.present();
-        fv_web_frame_shown();
+        fv_web_fence_frame();
+        fv_web_frame_shown(work_.ui_ms, work_.slice_ms, work_.sync_ms, work_.sim_ms, work_.paint_ms,
+                           work_.gl_ms);
         const double now = emscripten_get_now();
         const double wait = last_present_ > 0 ? 1000.0 / 60 - (now - last_present_) : 1000.0 / 60;
         emscripten_sleep(static_cast<unsigned>(wait > 1 ? wait : 1));
+        const double since = emscripten_get_now();
+        while (!fv_web_gpu_done() && emscripten_get_now() - since < kMaxGpuWaitMs) emscripten_sleep(1);
         last_present_ = emscripten_get_now();
     }
 
+    void frame_work(const FrameWork& work) override { work_ = work; }
     void rest_after_frame(double /*frame_ms*/) override {} // present() paced the frame
 
     bool choose_file(const std::string& accept) override {
@@ -185,6 +220,7 @@ class WebPlatform final : public GlfwPlatform {
     float ratio_;
     bool follow_;             // the canvas follows its CSS size (no fixed size asked for)
     double last_present_ = 0; // emscripten_get_now() after the last frame, ms
+    FrameWork work_;          // the frame's, for the page
 };
 
 } // namespace
