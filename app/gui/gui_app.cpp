@@ -27,6 +27,8 @@ using Clock = std::chrono::steady_clock;
 using Ms = std::chrono::duration<double, std::milli>;
 // Presentation mode: type, lines and markers this much larger (the panel's font 22 px instead of 15).
 constexpr float kPresentationScale = 1.4f;
+// Without threads (the browser), how long a control held still keeps the curves' slices waiting.
+constexpr std::chrono::milliseconds kSliceRest(200);
 
 std::string trace_csv(const LiveSim& sim) {
     std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy\n";
@@ -185,8 +187,14 @@ class GuiLoop {
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
         // B's curves (compare mode) get the frame's slice once A's are done.
+        // Nor while a control is held that moved them less than kSliceRest ago: a slider dragged with short
+        // pauses would otherwise meet a slice at its next move, and the move would wait for it (a step of the
+        // work cannot be cut: up to about 20 ms in the browser). They are computed when it rests or is let
+        // go.
         const auto slice_start = Clock::now();
-        if (!queued_.moves_curves())
+        if (queued_.moves_curves()) last_curve_edit_ = slice_start;
+        const bool dragging = ImGui::IsAnyItemActive() && slice_start - last_curve_edit_ < kSliceRest;
+        if (!queued_.moves_curves() && !dragging)
             (app_.worker().busy() || !ui.session.compare ? app_.worker() : app_.worker_b())
                 .run_slice(std::chrono::milliseconds(6));
         times_.slice_ms = Ms(Clock::now() - slice_start).count();
@@ -306,6 +314,8 @@ class GuiLoop {
     double cpu_start_ = 0;
     int failed_writes_ = 0; // files asked for and not written (the exit status of a scripted run)
     Clock::time_point last_ = Clock::now();
+    // The last frame whose edits moved the curves (the sliced worker rests after it while a control is held).
+    Clock::time_point last_curve_edit_;
 };
 
 } // namespace
