@@ -190,7 +190,7 @@ class WebPlatform final : public GlfwPlatform {
     // and delivers input meanwhile. Not a timer of 1/60 s: a page's WebGL calls only queue commands for
     // the browser's GPU side, and where it draws more slowly than the page makes frames (software
     // rendering, SwiftShader, on a loaded machine) the queue grew until a call blocked the page for as long
-    // as the backlog took: a slider edit then waited 0.1-0.5 s inside the next frame's drawing.
+    // as the backlog took: a slider edit then waited 0.1 s to seconds inside a frame's drawing.
     void present() override {
         ctx_.present();
         fv_web_frame_shown(work_.ui_ms, work_.slice_ms, work_.sync_ms, work_.sim_ms, work_.paint_ms,
