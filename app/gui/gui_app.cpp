@@ -27,6 +27,8 @@ using Clock = std::chrono::steady_clock;
 using Ms = std::chrono::duration<double, std::milli>;
 // Presentation mode: type, lines and markers this much larger (the panel's font 22 px instead of 15).
 constexpr float kPresentationScale = 1.4f;
+// Without threads (the browser), how long a control held still keeps the curves' slices waiting.
+constexpr std::chrono::milliseconds kSliceRest(200);
 
 std::string trace_csv(const LiveSim& sim) {
     std::string s = "tau,Px,Py,Tx,Ty,z,Fx,Fy\n";
@@ -152,7 +154,8 @@ class GuiLoop {
 
   private:
     struct FrameTimes {
-        Clock::time_point start, sim, layout, gl;
+        Clock::time_point start, ui, synced, sim, layout, gl;
+        double slice_ms = 0; // the curves' slice, inside the panel's phase (without threads)
     };
 
     static PlatformOptions platform_options(const GuiOptions& o) {
@@ -184,14 +187,23 @@ class GuiLoop {
         // slice would be wasted, and the frame that shows the edit would come that much later (while a
         // slider is dragged, every frame).
         // B's curves (compare mode) get the frame's slice once A's are done.
-        if (!queued_.moves_curves())
+        // Nor while a control is held that moved them less than kSliceRest ago: a slider dragged with short
+        // pauses would otherwise meet a slice at its next move, and the move would wait for it (a step of the
+        // work cannot be cut: up to about 20 ms in the browser). They are computed when it rests or is let
+        // go.
+        const auto slice_start = Clock::now();
+        if (queued_.moves_curves()) last_curve_edit_ = slice_start;
+        const bool dragging = ImGui::IsAnyItemActive() && slice_start - last_curve_edit_ < kSliceRest;
+        if (!queued_.moves_curves() && !dragging)
             (app_.worker().busy() || !ui.session.compare ? app_.worker() : app_.worker_b())
                 .run_slice(std::chrono::milliseconds(6));
+        times_.slice_ms = Ms(Clock::now() - slice_start).count();
         queued_.merge(dashboard_mouse_edits(app_.ui().session.view, app_.sim(), transforms_));
         if (const gfx::Rect& a = transforms_.top_view.area; a.width() > 0 && a.height() > 0)
             queued_.view_aspect = static_cast<double>(a.width()) / a.height();
         if (ui.show_help && !draw_help_overlay(true, layout_.beside)) queued_.show_help = false;
         ImGui::Render();
+        times_.ui = Clock::now();
     }
 
     // 2. All edits — the panel's, keys, mouse, drops and the script's — applied at one point. A dropped
@@ -220,6 +232,7 @@ class GuiLoop {
             std::fprintf(stderr, "frictionviz: %s\n", queued_.status.value_or(app_.ui().status).c_str());
             ++failed_writes_;
         }
+        times_.synced = Clock::now();
         return true;
     }
 
@@ -267,6 +280,10 @@ class GuiLoop {
         if (!write_requested_files(act_, last_frame ? o_.screenshot : std::string(), session_, *platform_,
                                    app_, queued_))
             ++failed_writes_;
+        platform_->frame_work({Ms(times_.ui - times_.start).count() - times_.slice_ms, times_.slice_ms,
+                               Ms(times_.synced - times_.ui).count(), Ms(times_.sim - times_.synced).count(),
+                               Ms(times_.layout - times_.sim).count(),
+                               Ms(times_.gl - times_.layout).count()});
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)
@@ -297,6 +314,8 @@ class GuiLoop {
     double cpu_start_ = 0;
     int failed_writes_ = 0; // files asked for and not written (the exit status of a scripted run)
     Clock::time_point last_ = Clock::now();
+    // The last frame whose edits moved the curves (the sliced worker rests after it while a control is held).
+    Clock::time_point last_curve_edit_;
 };
 
 } // namespace

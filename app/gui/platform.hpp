@@ -25,6 +25,14 @@ struct PlatformOptions {
     std::string title = "frictionviz";
 };
 
+// The work of one frame on the app's thread, by phase, in ms of wall time: the events and the panel (without
+// the curves' slice), the curves' slice (without threads), the sync, the simulation, the dashboard's layout
+// and the GL drawing (up to glFinish). The web platform hands it to the page (the benchmark's,
+// bench/web/bench.html).
+struct FrameWork {
+    double ui_ms = 0, slice_ms = 0, sync_ms = 0, sim_ms = 0, paint_ms = 0, gl_ms = 0;
+};
+
 // What happened since the last frame.
 struct PlatformEvents {
     bool close = false;               // the user closed the window
@@ -57,6 +65,8 @@ class Platform {
     virtual void imgui_new_frame(gfx::Vec2 logical) = 0;
     // Shows the frame (swap buffers; nothing headless).
     virtual void present() = 0;
+    // What the frame about to be shown cost (called before present()); only the web platform keeps it.
+    virtual void frame_work(const FrameWork& work) { (void)work; }
     // After a real-time frame that took frame_ms: without vsync (e.g. Xvfb) do not spin, about 60 frames per
     // second are plenty. The web platform paces its frames in present(), where it hands control back to the
     // browser, and does nothing here.

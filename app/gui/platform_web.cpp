@@ -1,7 +1,8 @@
 // The web platform (browser build only): the page's canvas as a GLFW window through emscripten's GLFW (WebGL
 // 2; the GL context is gfx::WindowContext, as on the desktop) with Dear ImGui's GLFW input backend. The app's
 // loop (run_gui) is a plain loop; present() hands control back to the browser once per frame
-// (emscripten_sleep under ASYNCIFY), so the page stays responsive and the canvas is shown.
+// (until the browser's next animation frame, an await under ASYNCIFY), so the page stays responsive and the
+// canvas is shown.
 #include "platform_glfw.hpp"
 
 #include <emscripten.h>
@@ -96,15 +97,39 @@ void web_set_clipboard(void* /*user*/, const char* text) {
     fv_web_copy_text(text);
 }
 
-// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page).
-EM_JS(void, fv_web_frame_shown, (), {
-    if (Module["fvFrame"]) Module["fvFrame"]();
+// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page), with the
+// work it took on the page's thread by phase (FrameWork, ms).
+EM_JS(void, fv_web_frame_shown, (double ui, double slice, double sync, double sim, double paint, double gl), {
+    if (Module["fvFrame"])
+        Module["fvFrame"]({ui: ui, slice: slice, sync: sync, sim: sim, paint: paint, gl: gl});
+});
+// Back to the browser until its next animation frame (requestAnimationFrame), at most timeout_ms: the
+// browser shows the frame drawn and delivers input meanwhile. A browser calls its animation frames no faster
+// than it can show them (the screen's rate, or slower when its GPU side lags behind), so a page drawing on
+// them never queues more frames than the browser can draw.
+EM_ASYNC_JS(void, fv_web_next_animation_frame, (double timeout_ms), {
+    await new Promise(function(resolve) {
+        var done = false;
+        function go() {
+            if (!done) {
+                done = true;
+                resolve();
+            }
+        }
+        requestAnimationFrame(go);
+        setTimeout(go, timeout_ms);
+    });
 });
 // clang-format on
 
 // Beyond 3 device pixels per CSS pixel nobody sees a difference, while the pixels to fill grow with its
 // square (a phone at 3: 1170 x 2532 for 390 x 844 CSS pixels).
 constexpr double kMaxRatio = 3;
+
+// present() waits at most this long for the browser's next animation frame: a hidden tab gets none, and under
+// Chromium's virtual time (the tests) the page's timers move the clock. 0.1 s is the longest step the app's
+// simulation takes (GuiLoop::advance), so pictures after some seconds are the same either way.
+constexpr double kMaxFrameWaitMs = 100;
 
 // Framebuffer pixels per CSS pixel: as asked, else the screen's (window.devicePixelRatio: 2 on a HiDPI
 // screen, also with the browser's zoom), at most kMaxRatio. Fixed at start (the fonts are rasterised at it):
@@ -161,18 +186,19 @@ class WebPlatform final : public GlfwPlatform {
         ImGuiIO& io = ImGui::GetIO();
         if (!(io.DeltaTime > 0)) io.DeltaTime = 1.0f / 60.0f;
     }
-    // Back to the browser, which shows the frame and delivers input, for what is left of 1/60 s since the
-    // last frame (at least 1 ms). A timer, not a busy wait: under a virtual time budget (the tests) the
-    // page's clock moves only with its timers.
+    // Back to the browser until its next animation frame (at most kMaxFrameWaitMs), which shows the frame
+    // and delivers input meanwhile. Not a timer of 1/60 s: a page's WebGL calls only queue commands for
+    // the browser's GPU side, and where it draws more slowly than the page makes frames (software
+    // rendering, SwiftShader, on a loaded machine) the queue grew until a call blocked the page for as long
+    // as the backlog took: a slider edit then waited 0.1 s to seconds inside a frame's drawing.
     void present() override {
         ctx_.present();
-        fv_web_frame_shown();
-        const double now = emscripten_get_now();
-        const double wait = last_present_ > 0 ? 1000.0 / 60 - (now - last_present_) : 1000.0 / 60;
-        emscripten_sleep(static_cast<unsigned>(wait > 1 ? wait : 1));
-        last_present_ = emscripten_get_now();
+        fv_web_frame_shown(work_.ui_ms, work_.slice_ms, work_.sync_ms, work_.sim_ms, work_.paint_ms,
+                           work_.gl_ms);
+        fv_web_next_animation_frame(kMaxFrameWaitMs);
     }
 
+    void frame_work(const FrameWork& work) override { work_ = work; }
     void rest_after_frame(double /*frame_ms*/) override {} // present() paced the frame
 
     bool choose_file(const std::string& accept) override {
@@ -183,8 +209,8 @@ class WebPlatform final : public GlfwPlatform {
 
   private:
     float ratio_;
-    bool follow_;             // the canvas follows its CSS size (no fixed size asked for)
-    double last_present_ = 0; // emscripten_get_now() after the last frame, ms
+    bool follow_;    // the canvas follows its CSS size (no fixed size asked for)
+    FrameWork work_; // the frame's, for the page
 };
 
 } // namespace

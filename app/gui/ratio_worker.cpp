@@ -54,11 +54,19 @@ void RatioWorker::wait_idle() {
 void RatioWorker::run_slice(std::chrono::microseconds budget) {
     if (threaded_ || !sliced_) return;
     using Clock = std::chrono::steady_clock;
+    using Us = std::chrono::microseconds;
     const auto start = Clock::now();
-    while (sliced_->step())
-        if (!sliced_->done() &&
-            std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start) >= budget)
-            return;
+    auto step_start = start;
+    while (sliced_->step()) {
+        if (sliced_->done()) break;
+        // Another step only when it is likely to end within the budget: the steps of a stage cost about the
+        // same (a curve point, a map cell), so the last one's cost is the guess. At least one step a slice.
+        const auto now = Clock::now();
+        const Us elapsed = std::chrono::duration_cast<Us>(now - start);
+        const Us last = std::chrono::duration_cast<Us>(now - step_start);
+        if (elapsed >= budget || last > budget - elapsed) return;
+        step_start = now;
+    }
     finish(*sliced_, false);
     sliced_.reset();
 }

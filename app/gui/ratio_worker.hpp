@@ -41,9 +41,9 @@ class RatioWorker {
     // Blocks until the last request is finished (scripted runs and tests want the final picture). Without
     // threads, does the rest of the work at once.
     void wait_idle();
-    // Without a thread (the browser build): works on the current request for about `budget` (at least one
-    // step), publishing the result when it completes; the app's loop calls it once a frame. With a thread:
-    // nothing (the thread works).
+    // Without a thread (the browser build): works on the current request within `budget` (one step at
+    // least; another only while the last step's cost still fits), publishing the result when it completes;
+    // the app's loop calls it once a frame. With a thread: nothing (the thread works).
     void run_slice(std::chrono::microseconds budget);
 
   private:
