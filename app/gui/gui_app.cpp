@@ -268,9 +268,14 @@ class GuiLoop {
             o_.on_layout({logical, session_.pixel_ratio(), session_.context().framebuffer_size(), layout_,
                           layout_dashboard(layout_.pictures, ui.session.compare), controls_.scroll_max});
         times_.layout = Clock::now();
+        // The curves' threads wait while the frame is drawn (RatioWorker::hold).
+        app_.worker().hold(true);
+        app_.worker_b().hold(true);
         canvas.end();
         session_.imgui().render(*ImGui::GetDrawData());
         session_.context().gl().Finish();
+        app_.worker().hold(false);
+        app_.worker_b().hold(false);
         times_.gl = Clock::now();
     }
 

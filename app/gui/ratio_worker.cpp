@@ -108,11 +108,32 @@ void RatioWorker::run() {
     }
 }
 
+void RatioWorker::hold(bool on) {
+    if (!threaded_) return;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        held_ = on;
+    }
+    if (!on) cv_.notify_all();
+}
+
 void RatioWorker::work(const RatioRequest& req, std::uint64_t gen) {
     // A newer request makes this one moot: check between steps and give up early.
     RatioJob job = make_job(req);
     bool aborted = false;
-    while (!aborted && job.step()) aborted = generation_ != gen;
+    auto unheld = [this] {
+        std::unique_lock<std::mutex> lock(mutex_);
+        cv_.wait(lock, [this] { return stop_ || !held_; });
+        return !stop_;
+    };
+    while (!aborted) {
+        if (!unheld()) { // stopping: the job is left unfinished
+            aborted = true;
+            break;
+        }
+        if (!job.step()) break;
+        aborted = generation_ != gen;
+    }
     finish(job, aborted || generation_ != gen);
 }
 
