@@ -16,7 +16,8 @@ tmp=$(mktemp -d)
 server="" browser=""
 cleanup() {
   for p in $browser $server; do kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; done
-  rm -rf "$tmp"
+  # Chromium's helper processes may still be writing into the profile for a moment after it exits.
+  rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; } || true
 }
 trap cleanup EXIT
 mkdir "$tmp/site"
