@@ -1,6 +1,8 @@
 // Coasting along a slow approach (see coast.hpp).
 #include "coast.hpp"
 
+#include "plane_angles.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -26,16 +28,6 @@ bool on_circle(const Vec2& l) {
     return std::abs(l.norm() - 1) <= 1e-12;
 }
 
-Vec2 rotated(const Vec2& v, double a) {
-    const double c = std::cos(a), s = std::sin(a);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
-}
-
-// The angle from `from` to `to`, in (-pi, pi].
-double turn(const Vec2& from, const Vec2& to) {
-    return std::atan2(from.x() * to.y() - from.y() * to.x(), from.dot(to));
-}
-
 // The projection K periods ahead of c, with K from the steps a -> b -> c; K = 0 where the motion is not slow
 // and smooth enough. `geometric`: whether the steps' ratio may be taken as steady.
 struct Projection {
@@ -49,8 +41,8 @@ Projection project(const Vec2& a, const Vec2& b, const Vec2& c, double noise, bo
     Projection pj;
     const bool circle = on_circle(a) && on_circle(b) && on_circle(c);
     // On the circle, steps in its angle (the chord would leave the disc).
-    const Vec2 d1 = circle ? Vec2(turn(a, b), 0) : Vec2(b - a),
-               d2 = circle ? Vec2(turn(b, c), 0) : Vec2(c - b);
+    const Vec2 d1 = circle ? Vec2(turn_angle(a, b), 0) : Vec2(b - a),
+               d2 = circle ? Vec2(turn_angle(b, c), 0) : Vec2(c - b);
     const double n1 = d1.norm(), n2 = d2.norm();
     if (!(n2 > 0 && n1 > 0 && n2 <= kSlowStep && d1.dot(d2) >= kAligned * n1 * n2)) return pj;
     const double q = n2 / n1;

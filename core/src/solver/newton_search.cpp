@@ -2,6 +2,7 @@
 #include "newton_search.hpp"
 
 #include "closed_forms.hpp"
+#include "plane_angles.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
@@ -18,11 +19,6 @@ namespace {
 
 Vec2 perp(const Vec2& e) {
     return {-e.y(), e.x()};
-}
-
-Vec2 rotate(const Vec2& v, double a) {
-    const double c = std::cos(a), s = std::sin(a);
-    return {c * v.x() - s * v.y(), s * v.x() + c * v.y()};
 }
 
 constexpr int kMaxIterations = 100;
@@ -272,7 +268,7 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
         s.out.on_circle = true;
         return After::stop;
     }
-    s.l0 = rotate(l0, step);
+    s.l0 = rotated(l0, step);
     s.ref.valid = false;
     return After::next_period;
 }

@@ -4,6 +4,7 @@
 #include "closed_forms.hpp"
 #include "coast.hpp"
 #include "creep_skip.hpp"
+#include "plane_angles.hpp"
 #include "search_starts.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -73,11 +74,6 @@ bool advance_k(const ReachSetup& s, Vec2& l, int k, const PeriodRequest& rq) {
     for (int j = 0; j < k; ++j)
         if (!advance(s, l, rq)) return false;
     return true;
-}
-
-// The angle from b to a.
-double angle_between(const Vec2& a, const Vec2& b) {
-    return std::atan2(b.x() * a.y() - b.y() * a.x(), a.dot(b));
 }
 
 // The map's push Phi^k(z) - z moves towards y at x and at every sixteenth of the way from y to x, along w
@@ -345,7 +341,7 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
             const bool creep = pr.start == Phase::interior && pr.events == 0 && pr.end == Phase::interior &&
                                x1.norm() > x.norm() && x.dot(m.dP(0)) > 0;
             if (creep) {
-                const double a0 = std::abs(angle_between(x, y)), a1 = std::abs(angle_between(x1, y));
+                const double a0 = std::abs(turn_angle(y, x)), a1 = std::abs(turn_angle(y, x1));
                 if (a1 <= noise || a1 < a0)
                     ++creeping;
                 else
