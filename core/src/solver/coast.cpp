@@ -20,7 +20,7 @@ constexpr double kAccuracy = 0.25;
 // a geometric series over K periods, with q^K >= kCover: each projection covers at most 90 % of the rest of
 // the way, so an error in q moves the landing point by a part of the 10 % left.
 constexpr double kCover = 0.1;
-constexpr int kMinJump = 8;       // shorter projections are not worth their two settling periods
+constexpr int kMinJump = 8;       // shorter projections are not worth their three true periods
 constexpr double kMaxJump = 1024; // periods per projection
 constexpr int kMaxJumps = 64;
 
