@@ -451,10 +451,11 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     bool have_unstable = false;
     Search closest;
 
-    // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
-    // motion) reaches it, its verification. True when it is the state reached.
     // The last stable state found that the motion was not (yet) shown to reach.
     std::optional<Search> candidate;
+    // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
+    // motion) reaches it, its verification. True when it is the state reached. `retry`: the candidate again,
+    // from a later point of the motion (verified and listed the first time).
     auto take_period1 = [&](const Search& sr, const Vec2& from, bool retry = false) {
         if (!sr.converged) {
             if (!closest.have_last || (sr.have_last && sr.dist < closest.dist)) closest = sr;
