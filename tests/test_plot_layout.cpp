@@ -8,9 +8,10 @@
 // - format_number never prints a negative zero;
 // - the app's live top view, through a steady period at theta = 0, 30, 90 and 150 degrees in the body and the
 // ground frame: no two texts overlap, no label lies on an arrow or a marker, no arrow lies along another;
-// - on a journal column (render --page column, full-size text on 330 units): no two texts overlap, no label on
-// an arrow or a marker, no text off the page or below 12 units, every panel's legend drawn and off the data,
-// every data area at least 150 x 90 units; and the same check flags the side-by-side layout it replaced.
+// - on a journal column (render --page column, full-size text on 330 units): no two texts overlap, no label
+// on an arrow or a marker, no text off the page or below 12 units, every panel's legend drawn and off the
+// data, every data area at least 150 x 90 units; and the same check flags the side-by-side layout it
+// replaced.
 #include "figures/figure_painter.hpp"
 #include "figures/render_figures.hpp"
 #include "figures/render_session.hpp"
