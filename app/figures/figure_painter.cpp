@@ -543,26 +543,43 @@ std::vector<gfx::Series> merged_legend(const FigureData& fig) {
     return legend;
 }
 
+// What a grid of small multiples `width` wide keeps around its panels, text at `factor`: the shared x
+// title's band below them and the y title's band left of them (none without a title), and the merged
+// legend's rows under it all, a gap above them.
+struct GridMargins {
+    float fs = 0, title_fs = 0, below = 0, left = 0, gap = 0;
+    std::vector<gfx::Series> legend;
+    gfx::Vec2 legend_size{0, 0};
+    // All that is kept below the panels.
+    float bottom() const { return below + (legend_size.y > 0 ? legend_size.y + gap : 0); }
+};
+
+GridMargins grid_margins(gfx::Canvas& canvas, const FigureData& fig, float width, float factor) {
+    GridMargins g;
+    g.fs = 13 * factor, g.title_fs = g.fs + factor, g.gap = std::round(10 * factor);
+    g.legend = merged_legend(fig);
+    g.legend_size = gfx::legend_rows(canvas, g.legend, {0, 0}, width, g.fs, false);
+    const PanelData& first = fig.panels.front();
+    g.below = first.x_title.empty() ? 0 : std::round(g.title_fs * 1.7f);
+    g.left = first.y_title.empty() ? 0 : std::round(g.title_fs * 1.7f);
+    return g;
+}
+
 } // namespace
 
 float grid_margin_height(gfx::Canvas& canvas, const FigureData& fig, float width, float factor) {
-    const float fs = 13 * factor, title_fs = fs + factor, gap = std::round(10 * factor);
-    const gfx::Vec2 legend_size = gfx::legend_rows(canvas, merged_legend(fig), {0, 0}, width, fs, false);
-    const float below = fig.panels.front().x_title.empty() ? 0 : std::round(title_fs * 1.7f);
-    return below + (legend_size.y > 0 ? legend_size.y + gap : 0);
+    return grid_margins(canvas, fig, width, factor).bottom();
 }
 
 void paint_grid(gfx::Canvas& canvas, const FigureData& fig, const gfx::Rect& body, float factor) {
     const std::size_t n = fig.panels.size(), cols = static_cast<std::size_t>(fig.columns);
     const std::size_t rows = (n + cols - 1) / cols;
-    const float fs = 13 * factor, title_fs = fs + factor;
+    const GridMargins gm = grid_margins(canvas, fig, body.width(), factor);
+    const float fs = gm.fs, title_fs = gm.title_fs, below = gm.below, left = gm.left;
+    const std::vector<gfx::Series>& legend = gm.legend;
+    const gfx::Vec2 legend_size = gm.legend_size;
     const PanelData& first = fig.panels.front();
-    const std::vector<gfx::Series> legend = merged_legend(fig);
-    const gfx::Vec2 legend_size = gfx::legend_rows(canvas, legend, {0, 0}, body.width(), fs, false);
-    const float below = first.x_title.empty() ? 0 : std::round(title_fs * 1.7f),
-                left = first.y_title.empty() ? 0 : std::round(title_fs * 1.7f);
-    const gfx::Rect grid{body.x0 + left, body.y0, body.x1 - gfx::kColorBarSpace,
-                         body.y1 - grid_margin_height(canvas, fig, body.width(), factor)};
+    const gfx::Rect grid{body.x0 + left, body.y0, body.x1 - gfx::kColorBarSpace, body.y1 - gm.bottom()};
     std::vector<PanelData> panels;
     for (const PanelData& p : fig.panels) {
         panels.push_back(grid_panel(p, factor));
