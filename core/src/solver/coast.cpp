@@ -24,8 +24,9 @@ constexpr int kMinJump = 8;       // shorter projections are not worth their thr
 constexpr double kMaxJump = 1024; // periods per projection
 constexpr int kMaxJumps = 64;
 
+// Pinned to the circle (lag_phases.hpp).
 bool on_circle(const Vec2& l) {
-    return std::abs(l.norm() - 1) <= 1e-12;
+    return std::abs(l.norm() - 1) <= kPin;
 }
 
 // The projection K periods ahead of c, with K from the steps a -> b -> c; K = 0 where the motion is not slow
@@ -81,8 +82,8 @@ Coast coast(const ReachSetup& s, const Vec2& a, const Vec2& b, const Vec2& c, do
     out.a = a;
     out.b = b;
     out.c = c;
-    const PeriodRequest rq{s.rq.atol, s.rq.atol_force, false};
-    const double noise = std::max(30 * s.aim, 1e-10);
+    const PeriodRequest rq = state_only(s);
+    const double noise = arrival_noise(s);
     bool geometric = true;
     for (int jump = 0; jump < kMaxJumps && out.skipped < max_skip; ++jump) {
         const Projection pj = project(out.a, out.b, out.c, noise, geometric);

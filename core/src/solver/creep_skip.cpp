@@ -35,7 +35,7 @@ struct Base {
 // (sampled) gives the integral of v. False where either is not a creep period (the motion leaves the creep).
 bool settle(const ReachSetup& s, const Vec2& z, Base& b, int& periods) {
     const LagModel& m = *s.m;
-    PeriodRequest rq{s.rq.atol, s.rq.atol_force, false};
+    PeriodRequest rq = state_only(s);
     Vec2 z1 = z;
     PeriodResult pr;
     ++periods;

@@ -31,13 +31,15 @@ void eigen_multipliers(const Eigen::Matrix2d& M, cd mu[2]) {
     sort_desc(mu);
 }
 
-// The map as the search integrates it (the same state and quadrature control, which both set the steps),
-// without the sensitivity: a point of the motion and the fixed point are then points of the same map.
+} // namespace
+
 PeriodRequest state_only(const ReachSetup& s) {
     return PeriodRequest{s.rq.atol, s.rq.atol_force, false};
 }
 
-} // namespace
+double arrival_noise(const ReachSetup& s) {
+    return std::max(30 * s.aim, 1e-10);
+}
 
 double v_integral(const LagModel& m, const std::vector<Sample>& samples) {
     if (samples.empty()) return 0;
@@ -315,7 +317,7 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
              int& periods) {
     const LagModel& m = *s.m;
     const PeriodRequest rq = state_only(s);
-    const double noise = std::max(30 * s.aim, 1e-10);
+    const double noise = arrival_noise(s);
     cd mu[2];
     eigen_multipliers(M, mu);
     const double rho = std::abs(mu[0]);

@@ -66,6 +66,14 @@ inline constexpr double kMinCreepSkip = 16;
 // Slow approaches coasted over per start (coast.hpp; each a series of projections).
 inline constexpr int kMaxCoasts = 16;
 
+// The map as the search integrates it (the same state and quadrature control, which both set the steps),
+// without the sensitivity: a point of the motion and the fixed point are then points of the same map.
+PeriodRequest state_only(const ReachSetup& s);
+
+// How close (force units) a point of the motion must come to a state to have arrived at it: 30 times the
+// aim, the sections' integration noise (at least 1e-10).
+double arrival_noise(const ReachSetup& s);
+
 // The integral of v = e . P' over a period from its evenly spaced samples: the trapezoidal rule, spectrally
 // accurate for the smooth periodic integrand. 0 without samples.
 double v_integral(const LagModel& m, const std::vector<Sample>& samples);
