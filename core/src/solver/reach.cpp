@@ -508,12 +508,18 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         return false;
     };
 
+    // Newton's method from g within `budget` periods, its periods counted against the searches' budget.
+    auto search = [&](const Vec2& g, int budget) {
+        const Search sr = search_from(p, m, g, s.rq, s.aim, budget, kGiveUp);
+        search_periods += sr.periods;
+        out.periods += sr.periods;
+        return sr;
+    };
+
     // 1. Newton's method from the guesses (a warm start, the start itself, limits).
     for (const Vec2& g : guesses) {
         if (search_periods >= s.max_search_periods) break;
-        const Search sr = search_from(p, m, g, s.rq, s.aim, s.max_search_periods - search_periods, kGiveUp);
-        search_periods += sr.periods;
-        out.periods += sr.periods;
+        const Search sr = search(g, s.max_search_periods - search_periods);
         if (sr.status == SteadyStatus::integration_failed) {
             st.status = SteadyStatus::integration_failed;
             st.failure = sr.failure;
@@ -580,9 +586,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 if (take_period1(*candidate, xs[n], true)) return out;
             } else if (k == 1) {
                 const int budget = std::max(s.max_search_periods - search_periods, 100);
-                const Search sr = search_from(p, m, xs[n], s.rq, s.aim, budget, kGiveUp);
-                search_periods += sr.periods;
-                out.periods += sr.periods;
+                const Search sr = search(xs[n], budget);
                 if (take_period1(sr, xs[n])) return out;
                 // Newton's method from the motion finds nothing where the map is nearly a translation there
                 // (J = DPhi - I ~ 0: a slow drift at a steady rate, zeta = 0, theta = 90 deg from sliding):
@@ -593,10 +597,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                         if (std::any_of(guesses.begin(), guesses.end(),
                                         [&](const Vec2& q) { return (q - g).norm() < 1e-12; }))
                             continue;
-                        const Search sl = search_from(p, m, g, s.rq, s.aim, budget, kGiveUp);
-                        search_periods += sl.periods;
-                        out.periods += sl.periods;
-                        if (take_period1(sl, xs[n])) return out;
+                        if (take_period1(search(g, budget), xs[n])) return out;
                     }
                 }
             } else {
