@@ -13,12 +13,16 @@
 // asserts nothing (timings are not tests).
 //   usage: fv_domain_speed [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only]
 //                          [--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE]
-//                          [--start rest|sliding]
+//                          [--start rest|sliding] [--random N [--seed S]]
 //     --quick   every other zeta, theta in {0, 60, 90, 150 deg}, every other rdisp decade plus 1e4, one call
 //               per point (about 1/6 of the grid)
 //     --map-threads N  threads of the map (default 0: all cores; 1 gives the one-core figure directly)
 //     --map-rdisp R    the map's r_disp (repeatable; default 1, 100, 1e4)
 //     --start S        the start whose state is solved for (default rest)
+//     --random N       instead of the grid, N points drawn at random (fixed seed; --seed S for another):
+//                      zeta = 0 for 1 in 20, else log-uniform over [1e-3, 100]; theta uniform over
+//                      [0, 180 deg]; rdisp log-uniform over [1e-9, 1e4]; i uniform over [0, 10] for half of
+//                      them, else one of the grid's values (the tables by i, theta and zeta are left out)
 //     --dump FILE      every grid point's parameters, status, r_x, r_y, error estimate, periods and ms, one
 //                      line each (to compare two builds point by point: only the timings should differ)
 #include "fv/figure_data.hpp"
@@ -32,6 +36,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <map>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -121,7 +126,8 @@ std::string describe(const Point& q) {
 
 int main(int argc, char** argv) {
     bool quick = false, map = true, grid = true;
-    int repeats = 3, worst = 15, map_threads = 0;
+    int repeats = 3, worst = 15, map_threads = 0, random_points = 0;
+    unsigned seed = 1;
     std::vector<double> map_rdisps;
     double map_i = 1;
     std::string dump;
@@ -146,6 +152,10 @@ int main(int argc, char** argv) {
             map_rdisps.push_back(std::atof(argv[++a]));
         else if (k == "--tolerance" && a + 1 < argc)
             opt.ode_tolerance = std::atof(argv[++a]);
+        else if (k == "--random" && a + 1 < argc)
+            random_points = std::max(1, std::atoi(argv[++a]));
+        else if (k == "--seed" && a + 1 < argc)
+            seed = static_cast<unsigned>(std::strtoul(argv[++a], nullptr, 10));
         else if (k == "--dump" && a + 1 < argc)
             dump = argv[++a];
         else if (k == "--start" && a + 1 < argc && std::string(argv[a + 1]) == "sliding" && ++a)
@@ -153,11 +163,11 @@ int main(int argc, char** argv) {
         else if (k == "--start" && a + 1 < argc && std::string(argv[a + 1]) == "rest" && ++a)
             opt.start = fv::Start::rest;
         else {
-            std::fprintf(
-                stderr,
-                "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
-                "[--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE] [--start rest|sliding]\n",
-                argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--quick] [--repeats N] [--worst K] [--map-i I] [--no-map | --map-only] "
+                         "[--tolerance T] [--map-threads N] [--map-rdisp R]... [--dump FILE] [--start "
+                         "rest|sliding] [--random N [--seed S]]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -184,20 +194,39 @@ int main(int argc, char** argv) {
     }
 
     std::vector<Point> pts;
-    for (double i : is)
-        for (int e : decades)
-            for (double th : thetas)
-                for (double z : zetas) {
-                    Point q;
-                    q.p = {z, th, std::pow(10.0, e), i};
-                    pts.push_back(q);
-                }
+    if (random_points > 0) {
+        // The grid's values are where the solver was tuned; points between them test the claims.
+        std::mt19937_64 rng(seed);
+        std::uniform_real_distribution<double> u01(0, 1);
+        for (int n = 0; n < random_points; ++n) {
+            Point q;
+            q.p.zeta = u01(rng) < 0.05 ? 0 : std::pow(10.0, -3 + 5 * u01(rng));
+            q.p.theta = 180 * u01(rng) * kDeg;
+            q.p.rdisp = std::pow(10.0, -9 + 13 * u01(rng));
+            q.p.i = u01(rng) < 0.5 ? 10 * u01(rng) : is[static_cast<std::size_t>(u01(rng) * 6) % is.size()];
+            pts.push_back(q);
+        }
+    } else {
+        for (double i : is)
+            for (int e : decades)
+                for (double th : thetas)
+                    for (double z : zetas) {
+                        Point q;
+                        q.p = {z, th, std::pow(10.0, e), i};
+                        pts.push_back(q);
+                    }
+    }
     if (grid) {
-        std::printf(
-            "fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu theta x %zu "
-            "rdisp x %zu i)%s, median CPU time of %d call(s) per point, one thread\n",
-            opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
-            quick ? " [--quick]" : "", repeats);
+        if (random_points > 0)
+            std::printf("fv::steady_ratio (Dahl, tolerance %g) at %zu random points of the domain (seed %u), "
+                        "median CPU time of %d call(s) per point, one thread\n",
+                        opt.ode_tolerance, pts.size(), seed, repeats);
+        else
+            std::printf("fv::steady_ratio (Dahl, tolerance %g) over the domain: %zu points (%zu zeta x %zu "
+                        "theta x %zu "
+                        "rdisp x %zu i)%s, median CPU time of %d call(s) per point, one thread\n",
+                        opt.ode_tolerance, pts.size(), zetas.size(), thetas.size(), decades.size(), is.size(),
+                        quick ? " [--quick]" : "", repeats);
         std::fflush(stdout);
 
         const auto t_start = std::chrono::steady_clock::now();
@@ -218,8 +247,8 @@ int main(int argc, char** argv) {
                 return 1;
             }
             for (const Point& q : pts)
-                std::fprintf(f, "%.6g %g %g %g %s %.12g %.12g %.3g %d %.3f\n", q.p.zeta, q.p.theta / kDeg,
-                             q.p.rdisp, q.p.i, fv::status_word(q.r).c_str(), q.r.rx, q.r.ry,
+                std::fprintf(f, "%.9g %.9g %.9g %.9g %s %.12g %.12g %.3g %d %.3f\n", q.p.zeta,
+                             q.p.theta / kDeg, q.p.rdisp, q.p.i, fv::status_word(q.r).c_str(), q.r.rx, q.r.ry,
                              q.r.error_estimate, q.r.periods, q.ms);
             std::fclose(f);
         }
@@ -229,16 +258,19 @@ int main(int argc, char** argv) {
         for (int e : decades)
             row(num("1e%+03.0f", e),
                 stats(pts, [&](const Point& q) { return std::lround(std::log10(q.p.rdisp)) == e; }));
-        std::printf("\nBy i\n");
-        header("i");
-        for (double i : is) row(num("%g", i), stats(pts, [&](const Point& q) { return q.p.i == i; }));
-        std::printf("\nBy theta\n");
-        header("theta deg");
-        for (double th : thetas)
-            row(num("%.0f", th / kDeg), stats(pts, [&](const Point& q) { return q.p.theta == th; }));
-        std::printf("\nBy zeta\n");
-        header("zeta");
-        for (double z : zetas) row(num("%.4g", z), stats(pts, [&](const Point& q) { return q.p.zeta == z; }));
+        if (random_points == 0) {
+            std::printf("\nBy i\n");
+            header("i");
+            for (double i : is) row(num("%g", i), stats(pts, [&](const Point& q) { return q.p.i == i; }));
+            std::printf("\nBy theta\n");
+            header("theta deg");
+            for (double th : thetas)
+                row(num("%.0f", th / kDeg), stats(pts, [&](const Point& q) { return q.p.theta == th; }));
+            std::printf("\nBy zeta\n");
+            header("zeta");
+            for (double z : zetas)
+                row(num("%.4g", z), stats(pts, [&](const Point& q) { return q.p.zeta == z; }));
+        }
         std::printf("\nOverall\n");
         header("");
         const Stats all = stats(pts, [](const Point&) { return true; });

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <optional>
 
@@ -362,6 +363,9 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
         if (e1.norm() <= noise) return true; // arrived
         if (diagonal && contraction > 0) {
             const double ratio = nrm(e1 - M * e0) / (0.5 * contraction * nrm(e0)), dist = e1.norm();
+#ifdef FV_SOLVER_TRACE
+            std::fprintf(stderr, "reaches: n %d |e0| %.3g |e1| %.3g ratio %.3g\n", n, e0.norm(), dist, ratio);
+#endif
             if (ratio <= 1) return true;
             // The steps left cannot pass either test where the last step's gains, kept up, fall short (a slow
             // approach gains little per period): the push below decides, without following on here.
@@ -392,6 +396,9 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
         const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
         w = Vinv.row(slow).real();
     }
+#ifdef FV_SOLVER_TRACE
+    std::fprintf(stderr, "reaches: the push from (%.6g,%.6g), %d periods so far\n", x.x(), x.y(), periods);
+#endif
     return pushes_towards(s, x, y, k, w, circle_state, periods);
 }
 
@@ -487,6 +494,12 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         }
         const bool reached = reaches(s, from, sr.last_l0, Eigen::Matrix2d::Identity() + sr.last.E, 1,
                                      circle_state, out.periods);
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr,
+                     "reach: evidence from (%.6g,%.6g) to (%.6g,%.6g) |mu| %.4g %.4g: %s, %d periods\n",
+                     from.x(), from.y(), sr.last_l0.x(), sr.last_l0.y(), std::abs(mu[0]), std::abs(mu[1]),
+                     reached ? "reached" : "not shown", out.periods);
+#endif
         if (retry && !reached) return false; // verified and listed the first time
         const Verified v = verify_fixed_point(p, m, sr, s.rq, s.aim, s.tol, s.record && reached,
                                               s.record_samples, s.max_search_periods);
@@ -513,6 +526,10 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         const Search sr = search_from(p, m, g, s.rq, s.aim, budget, kGiveUp);
         search_periods += sr.periods;
         out.periods += sr.periods;
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "reach: search from (%.6g,%.6g): %s after %d periods (%d in all)\n", g.x(),
+                     g.y(), sr.converged ? "converged" : sr.failure, sr.periods, out.periods);
+#endif
         return sr;
     };
 

@@ -261,9 +261,16 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     Vec2 found_from{2, 2}; // where the default search's Newton's method started (none: outside the disc)
     if (opt.start == Start::rest) {
         state = default_search(setup, opt, periods, found_from);
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "default search: %d periods\n", periods);
+#endif
         if (ok(state.status))
             state.reached =
                 solver::reaches(setup, l_start, state.l0, state.M, 1, state.circle_state, periods);
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "default search: state (%.6g,%.6g) %s, reached from rest %d, %d periods\n",
+                     state.l0.x(), state.l0.y(), to_string(state.status), state.reached, periods);
+#endif
     }
     if (!state.reached && state.status != SteadyStatus::integration_failed) {
         // The default search's state, found but not shown to be reached: its own start is not searched
