@@ -110,6 +110,10 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
         const bool ok = k == 1 ? advance(s, z1, rq, &pr) : advance_k(s, z1, k, rq);
         periods += k;
         if (ok && circle_state && k == 1 && creep_period(*s.m, z, pr)) return true;
+#ifdef FV_SOLVER_TRACE
+        std::fprintf(stderr, "push at (%.6g,%.6g): along w %.3g (wd %.3g), along d %.3g\n", z.x(), z.y(),
+                     w.dot(z1 - z), wd, d.dot(z1 - z));
+#endif
         return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > 0;
     };
     // x first, then from y outwards: where the test fails it mostly fails at x or next to y (a state on the
@@ -388,11 +392,15 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
         x = x1;
     }
     // The map's push along the segment from x to y keeps its sign: along the slow direction's left
-    // eigenvector w where there is one (real mu_s >= 0.5; w is blind to the fast direction to first order),
-    // else along the segment itself (the motion may creep where the map is far from its linearisation at
-    // y: a law change next to y, i > 1).
+    // eigenvector w where there is one (real mu_s >= 0.5, and the other direction contracts at least twice as
+    // fast; w is blind to the fast direction to first order), else along the segment itself (the motion may
+    // creep where the map is far from its linearisation at y: a law change next to y, i > 1). Two directions
+    // that contract alike have no slow one: w is then either eigenvector, and away from y the flow turns it
+    // (zeta 0.0041, theta 65.6 deg, rdisp 0.0176, i 0.5, |mu| 0.9906 and 0.9895: the push along w changed
+    // sign a fifth of the way from rest while the push along the segment kept it; 54 -> 30 periods).
     Eigen::RowVector2d w = (y - x).normalized().transpose();
-    if (!circle_state && diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12) {
+    const bool separated = 1 - std::abs(mu[1]) >= 2 * (1 - rho);
+    if (!circle_state && diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12 && separated) {
         const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
         w = Vinv.row(slow).real();
     }
@@ -450,14 +458,20 @@ void period1_multipliers(const ReachSetup& s, const PeriodResult& pr, Vec2 l0, c
     sort_desc(mu);
 }
 
-Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses, const Orbit* rejected) {
+Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses, const Prior& prior) {
     const Params& p = *s.p;
     const LagModel& m = *s.m;
+    const Orbit* rejected = prior.rejected;
     Reach out;
     Orbit& st = out.state;
     int search_periods = 0;
     Orbit unstable_seen; // the closest fixed point found when nothing stable is reached
-    bool have_unstable = false;
+    bool have_unstable = prior.unstable != nullptr;
+    if (prior.unstable) unstable_seen = *prior.unstable;
+    auto searched_before = [&](const Vec2& g) {
+        return std::any_of(prior.fruitless.begin(), prior.fruitless.end(),
+                           [&](const Vec2& q) { return (q - g).norm() < 1e-12; });
+    };
     Search closest;
 
     // The last stable state found that the motion was not (yet) shown to reach.
@@ -536,6 +550,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     // 1. Newton's method from the guesses (a warm start, the start itself, limits).
     for (const Vec2& g : guesses) {
         if (search_periods >= s.max_search_periods) break;
+        if (searched_before(g)) continue;
         const Search sr = search(g, s.max_search_periods - search_periods);
         if (sr.status == SteadyStatus::integration_failed) {
             st.status = SteadyStatus::integration_failed;
@@ -611,7 +626,8 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 if (!sr.converged && !tried_limits) {
                     tried_limits = true;
                     for (const Vec2& g : other_starts(m)) {
-                        if (std::any_of(guesses.begin(), guesses.end(),
+                        if (searched_before(g) ||
+                            std::any_of(guesses.begin(), guesses.end(),
                                         [&](const Vec2& q) { return (q - g).norm() < 1e-12; }))
                             continue;
                         if (take_period1(search(g, budget), xs[n])) return out;

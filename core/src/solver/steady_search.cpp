@@ -114,7 +114,8 @@ std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Ve
 // The search as it has always run from rest: Newton's method from the warm start, a settled circle start,
 // the nearby limit and the other starts in turn (search_starts.hpp), each given up when it makes no
 // progress (the last only when the budget runs out); the first that converges, verified.
-Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods, Vec2& found_from) {
+Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods, Vec2& found_from,
+                     std::vector<Vec2>& fruitless) {
     const Params& p = *s.p;
     const LagModel& m = *s.m;
     const double r = p.rdisp;
@@ -134,6 +135,7 @@ Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods, V
         const solver::Search sr = solver::search_from(p, m, starts[k], s.rq, s.aim, opt.max_periods - periods,
                                                       final_try ? 0 : solver::kGiveUp);
         periods += sr.periods;
+        if (sr.gave_up) fruitless.push_back(starts[k]);
         const bool better = !best.have_last || (sr.have_last && (sr.converged || sr.dist < best.dist));
         if (k == 0 || better) {
             best = sr;
@@ -259,8 +261,9 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
     double creep_skipped = 0;
     const Vec2 l_start = start_force(opt.start);
     Vec2 found_from{2, 2}; // where the default search's Newton's method started (none: outside the disc)
+    solver::Prior prior;
     if (opt.start == Start::rest) {
-        state = default_search(setup, opt, periods, found_from);
+        state = default_search(setup, opt, periods, found_from, prior.fruitless);
 #ifdef FV_SOLVER_TRACE
         std::fprintf(stderr, "default search: %d periods\n", periods);
 #endif
@@ -273,15 +276,22 @@ OdeSolution solve_start(const Params& p, const OdeOptions& opt) {
 #endif
     }
     if (!state.reached && state.status != SteadyStatus::integration_failed) {
-        // The default search's state, found but not shown to be reached: its own start is not searched
-        // again, and a guess that leads to it again is only followed up (reach.hpp).
+        // The default search's state, found but not shown to be reached (or unstable): its own start is not
+        // searched again, and a guess that leads to it again is only followed up (reach.hpp); nor are the
+        // starts it gave up.
         const bool rejected = ok(state.status) && state.have_mu && solver::stable(state.mu);
+        const bool unstable = state.status == SteadyStatus::unsettled && state.have_mu;
+        if (rejected) prior.rejected = &state;
+        if (unstable) {
+            prior.unstable = &state;
+            prior.fruitless.push_back(found_from);
+        }
         std::vector<Vec2> guesses = guesses_for(m, opt, l_start, rq);
-        if (rejected)
+        if (rejected || unstable)
             guesses.erase(std::remove_if(guesses.begin(), guesses.end(),
                                          [&](const Vec2& g) { return (g - found_from).norm() < 1e-12; }),
                           guesses.end());
-        Reach reach = solver::reach_from(setup, l_start, guesses, rejected ? &state : nullptr);
+        Reach reach = solver::reach_from(setup, l_start, guesses, prior);
         periods += reach.periods;
         creep_skipped = reach.skipped;
         const bool better = ok(reach.state.status) || reach.state.status == SteadyStatus::not_periodic ||
