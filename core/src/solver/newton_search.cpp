@@ -104,9 +104,9 @@ double stop_at(const SearchProblem& pb, const PeriodResult& pr) {
     return std::max(pb.tol_newton, std::min(std::sqrt(0.1 * pb.aim), 0.15 * pb.aim / gain));
 }
 
-bool left_before(const SearchState& s, const Vec2& l) {
+bool left_before(const SearchState& s, const Vec2& l, double within = 1e-9) {
     return std::any_of(s.circle_left.begin(), s.circle_left.end(),
-                       [&](const Vec2& c) { return (c - l).norm() <= 1e-9; });
+                       [&](const Vec2& c) { return (c - l).norm() <= within; });
 }
 
 // Near the fixed point the periods' integration noise limits what the corrections can show: when they stop
@@ -278,10 +278,15 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
 // so slowly that the integrated map may show a fixed point that is not there. The steady state is on the
 // circle: search on the angle from where this period ended. Once: should that circle period leave the
 // circle, the steady state is elsewhere after all. Whether it snapped.
+// Nor next to a circle start that left the circle (within 0.1 rad): the period from there leaves it too,
+// and the search would only repeat the circle's period and the plane's (zeta 0.036, theta 97 deg, rdisp
+// 139, i 7.05: the snap landed 8e-7 from the first start; zeta 0.246, theta 84.5 deg, rdisp 2, i 7.9:
+// 0.047 rad from it; two periods lost each).
+constexpr double kSnapNearLeft = 0.1;
 bool snap_creep_to_circle(const SearchProblem& pb, SearchState& s, Phase start, const PeriodResult& pr) {
     if (!(s.allow_snap && !s.creep_snapped && pb.p.i > 1 && start == Phase::interior && pr.events == 0 &&
           s.l0.dot(pb.m.dP(0)) > 0 && pr.l_end.norm() > 0 &&
-          !left_before(s, Vec2(pr.l_end / pr.l_end.norm()))))
+          !left_before(s, Vec2(pr.l_end / pr.l_end.norm()), kSnapNearLeft)))
         return false;
     s.creep_snapped = true;
     s.l0 = pr.l_end / pr.l_end.norm();

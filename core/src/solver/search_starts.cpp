@@ -8,12 +8,14 @@
 
 namespace fv::solver {
 
-// Where the search starts, in order. First, where the body moves across the vibration faster than along it
-// (|cos theta| <= zeta: the small-amplitude limit is the circle) yet the vibration swings the sliding tip's
-// angle by ~ r sin(theta) so that v ~ zeta + (r/2) sin^2(theta) sin(2 tau) reverses (r sin^2 theta > 4 zeta,
-// r < 1): the unstretched asperity, rest's own start; the state is well inside the circle (zeta 0.001,
-// theta 90 deg, rdisp 0.01, i 0.5: |l| = 0.005, 43 -> 26 periods). Then where the steady state is in a limit
-// that is close by:
+// Where the search starts, in order. First, the unstretched asperity (rest's own start) where the vibration
+// across the motion turns the tip's force more than the nearby limit allows: a transverse displacement
+// r sin(theta) turns a force of size rho by r sin(theta) / rho, which adds ~ (r sin^2 theta / 2 rho)
+// sin(2 tau) to v = e . P'; where that exceeds v's own swing (|cos theta|, or 2 zeta where |cos theta| <=
+// zeta and the limit is the circle, rho = 1), the limit's premise (l hardly moves in a period) fails and
+// the state lies at the scale of r (zeta 0.001, theta 90 deg, rdisp 0.01, i 0.5: |l| = 0.005, 43 -> 26
+// periods; zeta 0.0086, theta 87.9 deg, rdisp 0.0062, i 5.8: the limit says 0.065, the state is at 0.0046,
+// 34 -> 26). Then where the steady state is in a limit that is close by:
 //   i = 0, rdisp <= 1, zeta < 1: the zeta -> 0 limit (lens_center), so no transient of stuck periods;
 //   i > 0, rdisp < 0.1: the small-amplitude limit;
 //   otherwise on the circle along P'(0) (the rigid model's direction), where the tip slips at once, and for
@@ -27,12 +29,13 @@ std::vector<Vec2> other_starts(const LagModel& m) {
     const Vec2 dp = m.dP(0);
     const Vec2 along = dp.norm() > 1e-6 * (1 + m.zeta) ? Vec2(dp / dp.norm()) : Vec2(1, 0);
     std::vector<Vec2> s;
-    if (m.i > 0 && std::abs(m.cth) <= m.zeta && m.r < 1 && m.r * m.sth * m.sth > 4 * m.zeta)
+    const double rho = m.i > 0 && m.r < 0.1 ? small_amplitude_rho(m) : 1.0;
+    if (m.i > 0 && m.r < 1 && m.r * m.sth * m.sth > 2 * rho * std::max(std::abs(m.cth), 2 * m.zeta))
         s.push_back(Vec2(0, 0));
     if (m.i == 0 && m.r <= 1 && m.zeta < 1)
         s.push_back(lens_center(m));
     else if (m.i > 0 && m.r < 0.1)
-        s.push_back(Vec2(small_amplitude_rho(m), 0));
+        s.push_back(Vec2(rho, 0));
     s.push_back(along);
     s.push_back(Vec2(1, 0));
     s.push_back(Vec2(0, 0));
