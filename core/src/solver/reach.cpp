@@ -93,7 +93,7 @@ bool advance_k(const ReachSetup& s, Vec2& l, int k, const PeriodRequest& rq) {
 // sign says nothing, so such samples count as pushing towards it (the circle's own law then contracts the
 // angle onto the state's, DPhi = exp(-r int v) < 1).
 bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, const Eigen::RowVector2d& w,
-                    bool circle_state, int& periods) {
+                    bool circle_state, double floor, int& periods) {
     const PeriodRequest rq = state_only(s);
     const Vec2 d = y - x;
     const double wd = w.dot(d); // the push along w must have its sign (none where w is across the segment)
@@ -114,7 +114,7 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
         std::fprintf(stderr, "push at (%.6g,%.6g): along w %.3g (wd %.3g), along d %.3g\n", z.x(), z.y(),
                      w.dot(z1 - z), wd, d.dot(z1 - z));
 #endif
-        return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > 0;
+        return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > floor * (1 + z.norm()) * d.norm();
     };
     // x first, then from y outwards: where the test fails it mostly fails at x or next to y (a state on the
     // circle whose chord samples lie inside it), so a failure costs few periods.
@@ -399,15 +399,22 @@ bool reaches(const ReachSetup& s, Vec2 x, const Vec2& y, const Eigen::Matrix2d& 
     // (zeta 0.0041, theta 65.6 deg, rdisp 0.0176, i 0.5, |mu| 0.9906 and 0.9895: the push along w changed
     // sign a fifth of the way from rest while the push along the segment kept it; 54 -> 30 periods).
     Eigen::RowVector2d w = (y - x).normalized().transpose();
+    const bool slow_real =
+        !circle_state && diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12;
     const bool separated = 1 - std::abs(mu[1]) >= 2 * (1 - rho);
-    if (!circle_state && diagonal && rho >= 0.5 && rho < 1 && std::abs(mu[0].imag()) <= 1e-12 && separated) {
+    if (slow_real && separated) {
         const int slow = std::abs(ces.eigenvalues()[0]) >= std::abs(ces.eigenvalues()[1]) ? 0 : 1;
         w = Vinv.row(slow).real();
     }
+    // Where the segment stands in for a slow direction there is none of, its push alone decides: it must
+    // exceed 64 units in the last place of l (relative to the segment), not be rounding whatever its sign
+    // (zeta 0, theta 90 deg, rdisp 1e-8, i 5 from sliding, |mu| 1 - 1e-8 twice: pushes of 1e-15, and +-1e-32
+    // at the circle, would have decided between not_converged and a state reached).
+    const double floor = slow_real && !separated ? 64 * std::numeric_limits<double>::epsilon() : 0;
 #ifdef FV_SOLVER_TRACE
     std::fprintf(stderr, "reaches: the push from (%.6g,%.6g), %d periods so far\n", x.x(), x.y(), periods);
 #endif
-    return pushes_towards(s, x, y, k, w, circle_state, periods);
+    return pushes_towards(s, x, y, k, w, circle_state, floor, periods);
 }
 
 Orbit orbit_of(const ReachSetup& s, const Verified& v) {
