@@ -222,6 +222,12 @@ void plain_step_to_end(SearchState& s, const PeriodResult& pr) {
     s.ref.valid = false;
 }
 
+// The derivative of the circle's angle map minus 1 over a period from l0 on the circle (radians per radian).
+double circle_J(const PeriodResult& pr, const Vec2& l0) {
+    const Vec2 le = pr.l_end / pr.l_end.norm();
+    return perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
+}
+
 // A period that started on the circle: Newton on the circle's angle.
 After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& pr) {
     const double r = pb.r;
@@ -229,7 +235,10 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
     // A period that leaves the circle only briefly ends just inside (for i >= 1 the state never gets back
     // exactly): the steady state may still be on the circle at an angle where v never turns negative.
     // Newton on the angle first (a few times), the plane after.
-    const bool near_circle = pb.p.i > 0 && s.circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3;
+    // Not where the angle's map is flat (|J| ~ 0 below: v ~ 0 all along, the angle does not move): a retry
+    // would repeat the same period (zeta 0, theta 30 deg, rdisp 1e-8, i 10 from sliding: 8 such periods).
+    const bool near_circle = pb.p.i > 0 && s.circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3 &&
+                             !(std::abs(circle_J(pr, l0)) <= 1e-12);
     if (pr.end != Phase::circle && near_circle) ++s.circle_retries;
     if (pr.end != Phase::circle && !near_circle) {
         // The period leaves the circle and ends inside: the steady state does not start on the circle.
@@ -244,8 +253,7 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
     const Vec2 d = r * pr.dL; // l_end - l0
     const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
     const double arc = dphi / r;
-    const Vec2 le = pr.l_end / pr.l_end.norm();
-    const double J = perp(le).dot((Eigen::Matrix2d::Identity() + pr.E) * perp(l0)) / pr.l_end.norm() - 1;
+    const double J = circle_J(pr, l0);
     // |J| ~ 0: the angle does not contract over this period (v ~ 0 all along): a plain step, which says
     // nothing about the distance to the fixed point.
     const bool flat = !(std::abs(J) > 1e-12);
