@@ -629,7 +629,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 if (take_period1(sr, xs[n])) return out;
                 // Newton's method from the motion finds nothing where the map is nearly a translation there
                 // (J = DPhi - I ~ 0: a slow drift at a steady rate, zeta = 0, theta = 90 deg from sliding):
-                // once, the limits (search_starts.hpp) as well, the state found held to the same evidence.
+                // once, the limits (search_starts.hpp) as well, the state found held to the same evidence
+                // from this point of the motion. The guesses hold them all but the default search's own
+                // start.
                 if (!sr.converged && !tried_limits) {
                     tried_limits = true;
                     for (const Vec2& g : other_starts(m)) {

@@ -87,8 +87,8 @@ void add_state(std::vector<SteadyState>& list, SteadyState s, Start from, bool r
 }
 
 // Where Newton's method is tried first for a start, before the motion from it is followed: a warm start,
-// the start itself, then the nearby limit and the circle (settled, or along P'(0)) as ode_solve always
-// did (search_starts.hpp).
+// the start itself, then the nearby limit and the other starts (settled circle, along P'(0), along e_x, zero)
+// as ode_solve always did (search_starts.hpp).
 std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Vec2& start,
                               const PeriodRequest& rq) {
     std::vector<Vec2> g;
@@ -104,10 +104,14 @@ std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Ve
     if (const auto pre = solver::prerolled_start(m, rq)) add(*pre);
     add(start);
     const std::vector<Vec2> others = solver::other_starts(m);
-    // The limit (or the circle): from sliding too, where at small r_disp the motion drifts from the circle to
-    // it over ~1/r_disp^2 periods and Newton's method from the start itself gives up (zeta 0.316, theta 60
-    // deg, rdisp 1e-8, i 10: 57 -> 37 periods); the evidence decides whether the start reaches it.
-    if (!others.empty()) add(others.front());
+    // The limits and the circle (search_starts.hpp): from sliding too, where at small r_disp the motion
+    // drifts from the circle to its state over ~1/r_disp^2 periods and Newton's method from the start itself
+    // gives up (zeta 0.316, theta 60 deg, rdisp 1e-8, i 10: 57 -> 37 periods with the first of them); all of
+    // them before the motion is followed, which otherwise goes on for a hundred periods and more before its
+    // own Newton's method gives up and sends the search to them (zeta 0.0042, theta 90 deg, rdisp 0.01, i 2
+    // from sliding: 179 -> 40 periods, the state found from along P'(0)). The evidence decides whether the
+    // start reaches what they find.
+    for (const Vec2& o : others) add(o);
     return g;
 }
 
