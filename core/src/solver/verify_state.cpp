@@ -124,7 +124,10 @@ Verified verify_fixed_point(const Params& p, const LagModel& m, const Search& fo
         if (!refine) break;
         rq.atol *= 0.25;
         rq.atol_force *= 0.25;
-        Search s = search_from(p, m, last_l0, rq, aim, max_periods - v.periods, 0);
+        // Given up like any search once it makes no progress (the first result is kept then): it had no such
+        // rule and could spend the whole budget cycling next to the circle, where the map is a slow
+        // translation (zeta 0, theta 90 deg, rdisp 1e-5, i 0.5 from sliding: 60 and more periods).
+        Search s = search_from(p, m, last_l0, rq, aim, max_periods - v.periods, kGiveUp);
         v.periods += s.periods;
         if (!s.converged || s.status != SteadyStatus::converged) break; // keep the verified first result
         s.newton_steps += v.search.newton_steps;
