@@ -50,13 +50,14 @@ def render_all(fv, formats, n):
         return median_runs([fv, "render", "--figure", "all", "--format", formats, "--out", out], n)
 
 
-def solver(build):
-    text, _, _ = run([os.path.join(build, "bench", "fv_domain_speed"), "--quick", "--no-map"])
+def solver(build, args=("--quick",)):
+    text, _, _ = run([os.path.join(build, "bench", "fv_domain_speed"), *args, "--no-map"])
     overall = re.search(r"Overall\n.*\n\s*\S+\s+(\d+)\s+([\d.]+)\s+([\d.]+)\s+([\d.]+)", text)
     failures = re.search(r"Failures \(status not ok or non-finite\): (\d+) of (\d+)", text)
-    if not overall or not failures:
+    answers = re.search(r"answers \(exit 0\) above 2 ms: (\d+) of (\d+); the slowest ([\d.]+) ms", text)
+    if not overall or not failures or not answers:
         sys.exit("bench-table: fv_domain_speed's output changed; update scripts/bench-table.py")
-    return overall.groups(), failures.groups()
+    return overall.groups(), failures.groups(), answers.groups()
 
 
 def map_one_core(build):
@@ -118,9 +119,16 @@ def main():
     rows.append(("`render --figure all`, 1280×800 PNG", f"{w:.2f} s wall, {c:.2f} s CPU", "≤ 5 s"))
     w, c = render_all(fv, "png,svg,pdf", n)
     rows.append(("the same, PNG + SVG + PDF", f"{w:.2f} s wall, {c:.2f} s CPU", ""))
-    (points, med, p95, mx), (failed, total) = solver(build)
-    rows.append(("solver per point, quick domain grid (`fv_domain_speed --quick`)",
-                 f"median {med} ms, p95 {p95} ms, max {mx} ms CPU; {failed} of {total} not verified", ""))
+    for label, sargs in (("quick domain grid (`fv_domain_speed --quick`)", ("--quick",)),
+                         ("whole domain grid (`fv_domain_speed`)", ("--repeats", "1")),
+                         ("3000 random points (`fv_domain_speed --random 3000`)", ("--random", "3000", "--repeats", "1")),
+                         ("the same from sliding (`--start sliding`)",
+                          ("--random", "3000", "--repeats", "1", "--start", "sliding"))):
+        (points, med, p95, mx), (failed, total), (above, answers, slowest) = solver(build, sargs)
+        rows.append((f"solver per point, {label}",
+                     f"median {med} ms, p95 {p95} ms, max {mx} ms CPU; {failed} of {total} not verified; "
+                     f"answers above 2 ms: {above} of {answers} (the slowest {slowest} ms)",
+                     "answers ≤ 2 ms"))
     rows.append(("(ζ, θ) map, 200 × 91 cells, r_disp 2, i 1, one core", f"{map_one_core(build)} s CPU", "≤ 1 s"))
     anim = animate(build)
     for (fmt, view), (aw, ac) in sorted(anim.items()):
