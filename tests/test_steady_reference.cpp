@@ -180,8 +180,10 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
     const std::vector<RefRow> rows = reference_rows();
     // 13 hard points and 60 random ones, both starts; three slow approaches the solver coasts over (from rest
     // at zeta 0.001, theta 30 deg, rdisp 1e-3, i = 2: 3751 periods of the reference; from sliding at 0.00422,
-    // 90 deg, 0.01, 2: 13697; from sliding at 0.316, 60 deg, 1e-5, 10: 186345)
-    REQUIRE(rows.size() == 149);
+    // 90 deg, 0.01, 2: 13697; from sliding at 0.316, 60 deg, 1e-5, 10: 186345); a near miss that ended
+    // not_converged at 1e-8 until the solver retried it 4x tighter (zeta 0.0274, theta 1.37 deg, rdisp 0.232,
+    // i 0.5 from rest)
+    REQUIRE(rows.size() == 150);
     int compared = 0, creeps = 0;
     double worst_ratio = 0;
     for (const RefRow& r : rows) {
