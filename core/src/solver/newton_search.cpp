@@ -41,6 +41,7 @@ struct SearchProblem {
 struct NewtonRef {
     bool valid = false;
     Vec2 l{0, 0}, delta{0, 0}, l_end{0, 0}; // point, its Newton correction (x_v), Phi(point) (force)
+    int events = 0;                         // law changes in its period
     Eigen::Matrix2d Jinv = Eigen::Matrix2d::Zero();
 };
 
@@ -53,6 +54,10 @@ struct SearchState {
     int since_best = 0;
     NewtonRef ref;
     double lambda = 1;
+    // Trials taken as the reference for their side of a law change (retreat_from_trial): twice at most, for
+    // the laws' sides can send Newton's steps round a cycle (zeta 0.144, theta 34 deg, rdisp 32, i 5: periods
+    // with 0, 2 and 4 law changes in turn).
+    int law_switches = 0;
     // The previous plane correction, for Aitken's acceleration.
     Vec2 prev_delta{0, 0};
     bool have_prev_delta = false;
@@ -306,11 +311,26 @@ bool snap_creep_to_circle(const SearchProblem& pb, SearchState& s, Phase start, 
 // The natural monotonicity test of the trial point (its residual F) against the reference point. Failed:
 // lambda is halved and the next trial point set (or, with lambda too small, a plain period); returns whether
 // it failed.
-bool retreat_from_trial(const SearchProblem& pb, SearchState& s, const Vec2& F) {
+bool retreat_from_trial(const SearchProblem& pb, SearchState& s, const PeriodResult& pr) {
     if (!s.ref.valid) return false;
+    const Vec2& F = pr.dL;
+    const Eigen::Matrix2d& E = pr.E;
     const Vec2 simplified = -s.ref.Jinv * F;
     if (simplified.norm() <= (1 - s.lambda / 4) * s.ref.delta.norm()) {
         s.lambda = std::min(1.0, 2 * s.lambda);
+        return false;
+    }
+    // Across a law change (the trial's period changes law a different number of times) the reference's
+    // derivative says little about the trial's side: where the trial's own Newton correction is shorter by
+    // the same margin, it becomes the reference (zeta 0.0095, theta 116 deg, rdisp 2800, i 10: the reference
+    // on a creep's side, where DPhi ~ I and the step is long, the trials on the other, where DPhi ~ 0.1 and
+    // the state is; lambda halved to 1/64 over and over, 255 -> 18 periods). Twice at most (law_switches).
+    const double det = E.determinant();
+    if (pr.events != s.ref.events && s.law_switches < 2 && std::isfinite(det) &&
+        std::abs(det) > 1e-13 * std::max(1.0, E.cwiseAbs().maxCoeff()) &&
+        Vec2(E.inverse() * F).norm() <= (1 - s.lambda / 4) * s.ref.delta.norm()) {
+        s.lambda = 1;
+        ++s.law_switches;
         return false;
     }
     s.lambda *= 0.5;
@@ -416,7 +436,7 @@ void move_in_plane(const SearchProblem& pb, SearchState& s, Vec2 dl) {
 // In the plane: damped Newton on F(L0) = L(2 pi) - L0 (x_v units) with F' = DPhi - I = E.
 After plane_step(const SearchProblem& pb, SearchState& s, const PeriodResult& pr) {
     const Vec2 F = pr.dL;
-    if (retreat_from_trial(pb, s, F)) return After::next_period;
+    if (retreat_from_trial(pb, s, pr)) return After::next_period;
     const Correction c = newton_correction(s, F, pr.E);
     const double q = aitken_rate(s, c.delta);
     s.out.dist = pb.r * c.delta.norm() / (1 - q);
@@ -435,6 +455,7 @@ After plane_step(const SearchProblem& pb, SearchState& s, const PeriodResult& pr
         (s.l0 + s.lambda * pb.r * c.delta).norm() < 1)
         s.ref.delta = c.delta;
     s.ref.l_end = pr.l_end;
+    s.ref.events = pr.events;
     s.ref.Jinv = c.Jinv;
     Vec2 dl = s.lambda * pb.r * s.ref.delta;
 #ifdef FV_SOLVER_TRACE
