@@ -34,6 +34,16 @@ void set_window_hints(const WindowOptions& /*o*/) {
     glfwWindowHint(GLFW_CLIENT_API, GLFW_OPENGL_ES_API); // WebGL 2 (link flags: app/render/CMakeLists.txt)
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 0);
+    // The canvas's WebGL context attributes (emscripten's GLFW reads them from these hints): no depth or
+    // stencil buffer (nothing tests depth or stencil), and an opaque canvas (alpha: false; every frame starts
+    // with an opaque clear and blending keeps alpha at 1, so no pixel changes). Emscripten's defaults ask for
+    // both buffers and an alpha channel: the browser then clears the depth and stencil buffers for every
+    // frame (the app clears colour only) and composites the canvas as translucent over the page. With
+    // SwiftShader (software WebGL) that cost the GPU process up to about 1.5 ms of CPU per frame
+    // (docs/web.md, Measured).
+    glfwWindowHint(GLFW_DEPTH_BITS, 0);
+    glfwWindowHint(GLFW_STENCIL_BITS, 0);
+    glfwWindowHint(GLFW_ALPHA_BITS, 0);
 }
 
 const char* window_kind() {
