@@ -116,10 +116,12 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
 #endif
         return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > floor * (1 + z.norm()) * d.norm();
     };
-    // x first, then from y outwards: where the test fails it mostly fails at x or next to y (a state on the
-    // circle whose chord samples lie inside it), so a failure costs few periods.
-    if (!towards(x)) return false;
-    for (int j = 1; j <= 15; ++j)
+    // x and the sample next to it first, then from y outwards: where the test fails it mostly fails next to
+    // x (another state close to the start: zeta 0.001, theta 90 deg, rdisp 1e-3, i 5 from rest, the circle's
+    // state tested, the state reached at |l| = 5e-4) or next to y (a state on the circle whose chord samples
+    // lie inside it), so a failure costs few periods.
+    if (!towards(x) || !towards(y + (15 / 16.0) * (x - y))) return false;
+    for (int j = 1; j <= 14; ++j)
         if (!towards(y + (j / 16.0) * (x - y))) return false;
     return true;
 }
