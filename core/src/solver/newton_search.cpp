@@ -240,10 +240,14 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
     // A period that leaves the circle only briefly ends just inside (for i >= 1 the state never gets back
     // exactly): the steady state may still be on the circle at an angle where v never turns negative.
     // Newton on the angle first (a few times), the plane after.
-    // Not where the angle's map is flat (|J| ~ 0 below: v ~ 0 all along, the angle does not move): a retry
-    // would repeat the same period (zeta 0, theta 30 deg, rdisp 1e-8, i 10 from sliding: 8 such periods).
-    const bool near_circle = pb.p.i > 0 && s.circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3 &&
-                             !(std::abs(circle_J(pr, l0)) <= 1e-12);
+    // The angle's map: |J| ~ 0 where the angle does not contract over this period (v ~ 0 all along).
+    const double J = circle_J(pr, l0);
+    const bool flat = !(std::abs(J) > 1e-12);
+    // Not where the angle's map is flat: a retry would repeat the same period (zeta 0, theta 30 deg, rdisp
+    // 1e-8, i 10 from sliding: 8 such periods). (A J that is not a number counts as flat for the step below
+    // but does not stop the retries.)
+    const bool near_circle =
+        pb.p.i > 0 && s.circle_retries < 8 && pr.l_end.norm() > 1 - 1e-3 && !(std::abs(J) <= 1e-12);
     if (pr.end != Phase::circle && near_circle) ++s.circle_retries;
     if (pr.end != Phase::circle && !near_circle) {
         // The period leaves the circle and ends inside: the steady state does not start on the circle.
@@ -258,10 +262,7 @@ After circle_step(const SearchProblem& pb, SearchState& s, const PeriodResult& p
     const Vec2 d = r * pr.dL; // l_end - l0
     const double dphi = std::atan2(l0.x() * d.y() - l0.y() * d.x(), 1 + l0.dot(d));
     const double arc = dphi / r;
-    const double J = circle_J(pr, l0);
-    // |J| ~ 0: the angle does not contract over this period (v ~ 0 all along): a plain step, which says
-    // nothing about the distance to the fixed point.
-    const bool flat = !(std::abs(J) > 1e-12);
+    // Flat: a plain step, which says nothing about the distance to the fixed point.
     double da = flat ? -arc : -arc / J;
     if (!std::isfinite(da)) da = -arc;
     double step = r * da; // radians = force units

@@ -477,10 +477,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     Orbit unstable_seen; // the closest fixed point found when nothing stable is reached
     bool have_unstable = prior.unstable != nullptr;
     if (prior.unstable) unstable_seen = *prior.unstable;
-    auto searched_before = [&](const Vec2& g) {
-        return std::any_of(prior.fruitless.begin(), prior.fruitless.end(),
-                           [&](const Vec2& q) { return (q - g).norm() < 1e-12; });
-    };
+    auto searched_before = [&](const Vec2& g) { return near_any(prior.fruitless, g, 1e-12); };
     Search closest;
 
     // The last stable state found that the motion was not (yet) shown to reach.
@@ -637,10 +634,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 if (!sr.converged && !tried_limits) {
                     tried_limits = true;
                     for (const Vec2& g : other_starts(m)) {
-                        if (searched_before(g) ||
-                            std::any_of(guesses.begin(), guesses.end(),
-                                        [&](const Vec2& q) { return (q - g).norm() < 1e-12; }))
-                            continue;
+                        if (searched_before(g) || near_any(guesses, g, 1e-12)) continue;
                         if (take_period1(search(g, budget), xs[n])) return out;
                     }
                 }

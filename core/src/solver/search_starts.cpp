@@ -3,6 +3,7 @@
 
 #include "closed_forms.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -66,6 +67,10 @@ std::optional<Vec2> prerolled_start(const LagModel& m, const PeriodRequest& rq) 
     const PeriodResult pr = solver::run_lag(m, Vec2(dp / dp.norm()), tau0, kTwoPi, state_only);
     if (!pr.ok || pr.start != Phase::circle || pr.end != Phase::circle || pr.events != 0) return std::nullopt;
     return Vec2(pr.l_end / pr.l_end.norm());
+}
+
+bool near_any(const std::vector<Vec2>& starts, const Vec2& l, double within) {
+    return std::any_of(starts.begin(), starts.end(), [&](const Vec2& x) { return (x - l).norm() < within; });
 }
 
 } // namespace fv::solver

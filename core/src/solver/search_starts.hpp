@@ -8,7 +8,9 @@
 
 namespace fv::solver {
 
-// Where the search starts, in order. First where the steady state is in a limit that is close by:
+// Where the search starts, in order. First the unstretched asperity where the vibration across the motion
+// turns the force more than the small-amplitude limit allows (search_starts.cpp). Then where the steady state
+// is in a limit that is close by:
 //   i = 0, rdisp <= 1, zeta < 1: the zeta -> 0 limit (lens_center), so no transient of stuck periods;
 //   i > 0, rdisp < 0.1: the small-amplitude limit;
 //   otherwise on the circle along P'(0) (the rigid model's direction), where the tip slips at once, and for
@@ -27,5 +29,9 @@ std::vector<Vec2> other_starts(const LagModel& m);
 // from a cold start that is O(1/rdisp^2) off (on the i = 1 map at rdisp = 10: 3.07 -> 2.2 periods per cell,
 // CPU -12%; at rdisp >= 1e3 the cold start is good enough already and T is tiny). Nothing otherwise.
 std::optional<Vec2> prerolled_start(const LagModel& m, const PeriodRequest& rq);
+
+// Whether l is closer than `within` (force units) to one of the starts: the same start, searched or listed
+// once.
+bool near_any(const std::vector<Vec2>& starts, const Vec2& l, double within);
 
 } // namespace fv::solver

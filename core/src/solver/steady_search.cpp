@@ -98,8 +98,7 @@ std::vector<Vec2> guesses_for(const LagModel& m, const OdeOptions& opt, const Ve
     auto add = [&](Vec2 l) {
         if (!l.allFinite()) return;
         if (l.norm() > 1) l /= l.norm();
-        if (std::none_of(g.begin(), g.end(), [&](const Vec2& x) { return (x - l).norm() < 1e-9; }))
-            g.push_back(l);
+        if (!solver::near_any(g, l, 1e-9)) g.push_back(l);
     };
     if (opt.initial_lag.squaredNorm() > 0 && opt.initial_lag.allFinite()) add(m.r * opt.initial_lag);
     // A settled circle start is within a hair of the state where the tip slips all along (rdisp >~ 5),
@@ -135,8 +134,7 @@ Orbit default_search(const ReachSetup& s, const OdeOptions& opt, int& periods, V
     }
     if (const auto pre = solver::prerolled_start(m, s.rq)) starts.push_back(*pre);
     for (const Vec2& l : solver::other_starts(m))
-        if (std::none_of(starts.begin(), starts.end(), [&](const Vec2& x) { return (x - l).norm() < 1e-9; }))
-            starts.push_back(l);
+        if (!solver::near_any(starts, l, 1e-9)) starts.push_back(l);
     solver::Search best;
     for (std::size_t k = 0; k < starts.size(); ++k) {
         const bool final_try = k + 1 == starts.size();
