@@ -156,6 +156,7 @@ class GuiLoop {
     struct FrameTimes {
         Clock::time_point start, ui, synced, sim, layout, gl;
         double slice_ms = 0; // the curves' slice, inside the panel's phase (without threads)
+        bool sliced = false; // a slice of the curves ran
     };
 
     static PlatformOptions platform_options(const GuiOptions& o) {
@@ -194,7 +195,8 @@ class GuiLoop {
         const auto slice_start = Clock::now();
         if (queued_.moves_curves()) last_curve_edit_ = slice_start;
         const bool dragging = ImGui::IsAnyItemActive() && slice_start - last_curve_edit_ < kSliceRest;
-        if (!queued_.moves_curves() && !dragging)
+        times_.sliced = !queued_.moves_curves() && !dragging;
+        if (times_.sliced)
             (app_.worker().busy() || !ui.session.compare ? app_.worker() : app_.worker_b())
                 .run_slice(std::chrono::milliseconds(6));
         times_.slice_ms = Ms(Clock::now() - slice_start).count();
@@ -289,6 +291,7 @@ class GuiLoop {
                                Ms(times_.synced - times_.ui).count(), Ms(times_.sim - times_.synced).count(),
                                Ms(times_.layout - times_.sim).count(),
                                Ms(times_.gl - times_.layout).count()});
+        platform_->work_pending(times_.sliced && (app_.worker().busy() || app_.worker_b().busy()));
         platform_->present();
         const double ms = Ms(Clock::now() - times_.start).count();
         if (o_.bench_frames > 0)

@@ -67,6 +67,10 @@ class Platform {
     virtual void present() = 0;
     // What the frame about to be shown cost (called before present()); only the web platform keeps it.
     virtual void frame_work(const FrameWork& work) { (void)work; }
+    // Whether the app has work of its own for the next frame (called before present()): true while the
+    // curves are computed in slices, one a frame. Without it and without input only the animation moves,
+    // and the web platform draws fewer frames (platform_web.cpp); the others draw every frame anyway.
+    virtual void work_pending(bool pending) { (void)pending; }
     // After a real-time frame that took frame_ms: without vsync (e.g. Xvfb) do not spin, about 60 frames per
     // second are plenty. The web platform paces its frames in present(), where it hands control back to the
     // browser, and does nothing here.

@@ -97,28 +97,62 @@ void web_set_clipboard(void* /*user*/, const char* text) {
     fv_web_copy_text(text);
 }
 
-// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's page), with the
-// work it took on the page's thread by phase (FrameWork, ms).
+// Tells the page a frame was drawn (Module.fvFrame, when the page has one: the benchmark's and the tests'
+// pages), with the work it took on the page's thread by phase (FrameWork, ms), why it was drawn when it was
+// (fv_web_next_animation_frame: "start", "input", "work", "idle" or "timeout"), how many animation frames
+// were passed over before it, and when it began (performance.now()).
 EM_JS(void, fv_web_frame_shown, (double ui, double slice, double sync, double sim, double paint, double gl), {
     if (Module["fvFrame"])
-        Module["fvFrame"]({ui: ui, slice: slice, sync: sync, sim: sim, paint: paint, gl: gl});
+        Module["fvFrame"]({ui: ui, slice: slice, sync: sync, sim: sim, paint: paint, gl: gl,
+                           cause: Module["fvCause"] || "start", skipped: Module["fvSkipped"] || 0,
+                           begun: Module["fvFrameBegun"] || 0});
+});
+// Marks Module.fvInput on any input the page gets (capturing, before emscripten's GLFW sees it): the next
+// frame is then drawn at the browser's next animation frame, whatever the pace of the animation.
+EM_JS(void, fv_web_watch_input, (), {
+    Module["fvInput"] = true;
+    var mark = function() { Module["fvInput"] = true; };
+    ["mousemove", "mousedown", "mouseup", "wheel", "keydown", "keyup", "touchstart", "touchmove", "touchend",
+     "touchcancel", "resize", "focus", "blur", "drop"].forEach(function(type) {
+        window.addEventListener(type, mark, true);
+    });
 });
 // Back to the browser until its next animation frame (requestAnimationFrame), at most timeout_ms: the
 // browser shows the frame drawn and delivers input meanwhile. A browser calls its animation frames no faster
 // than it can show them (the screen's rate, or slower when its GPU side lags behind), so a page drawing on
-// them never queues more frames than the browser can draw.
-EM_ASYNC_JS(void, fv_web_next_animation_frame, (double timeout_ms), {
+// them never queues more frames than the browser can draw. Unless `at_once` or input came, the first
+// animation frame at least idle_ms after the last frame began.
+EM_ASYNC_JS(void, fv_web_next_animation_frame, (double timeout_ms, double idle_ms, bool at_once), {
+    var begun = Module["fvFrameBegun"] || 0;
     await new Promise(function(resolve) {
         var done = false;
-        function go() {
+        var skipped = 0;
+        function begin(cause) {
             if (!done) {
                 done = true;
+                Module["fvCause"] = cause;
+                Module["fvSkipped"] = skipped;
                 resolve();
             }
         }
-        requestAnimationFrame(go);
-        setTimeout(go, timeout_ms);
+        function tick() {
+            if (done) return;
+            if (Module["fvInput"])
+                begin("input");
+            else if (at_once)
+                begin("work");
+            else if (performance.now() - begun >= idle_ms)
+                begin("idle");
+            else {
+                ++skipped;
+                requestAnimationFrame(tick);
+            }
+        }
+        requestAnimationFrame(tick);
+        setTimeout(function() { begin("timeout"); }, timeout_ms);
     });
+    Module["fvInput"] = false;
+    Module["fvFrameBegun"] = performance.now();
 });
 // clang-format on
 
@@ -130,6 +164,14 @@ constexpr double kMaxRatio = 3;
 // Chromium's virtual time (the tests) the page's timers move the clock. 0.1 s is the longest step the app's
 // simulation takes (GuiLoop::advance), so pictures after some seconds are the same either way.
 constexpr double kMaxFrameWaitMs = 100;
+
+// A frame where only the animation moves (no input, no work of the app's pending) begins at least this long
+// after the last one: every second animation frame at 60 Hz, every fourth at 120 Hz, 30 frames a second
+// (1000/30 ms less a few for the animation frames' jitter). The animation runs on the clock, so it keeps its
+// speed; 30 frames a second are smooth at its slow motion. What this buys is room on the browser's GPU side,
+// which in software (SwiftShader) needs 25-40 ms of CPU per frame: drawing every animation frame kept it
+// busy, and a slider's move then waited for the frames queued before it (docs/web.md, "Idle frames").
+constexpr double kIdleFrameMs = 29;
 
 // Framebuffer pixels per CSS pixel: as asked, else the screen's (window.devicePixelRatio: 2 on a HiDPI
 // screen, also with the browser's zoom), at most kMaxRatio. Fixed at start (the fonts are rasterised at it):
@@ -160,7 +202,9 @@ gfx::WindowOptions canvas_options(const PlatformOptions& o) {
 class WebPlatform final : public GlfwPlatform {
   public:
     explicit WebPlatform(const PlatformOptions& o)
-        : GlfwPlatform(canvas_options(o)), ratio_(canvas_ratio(o)), follow_(o.width <= 0 && o.height <= 0) {}
+        : GlfwPlatform(canvas_options(o)), ratio_(canvas_ratio(o)), follow_(o.width <= 0 && o.height <= 0) {
+        fv_web_watch_input();
+    }
 
     std::string_view name() const override { return "web"; }
     // The canvas follows its size on the page (the window's, with index.html's style): checked every frame,
@@ -195,8 +239,9 @@ class WebPlatform final : public GlfwPlatform {
         ctx_.present();
         fv_web_frame_shown(work_.ui_ms, work_.slice_ms, work_.sync_ms, work_.sim_ms, work_.paint_ms,
                            work_.gl_ms);
-        fv_web_next_animation_frame(kMaxFrameWaitMs);
+        fv_web_next_animation_frame(kMaxFrameWaitMs, kIdleFrameMs, work_pending_);
     }
+    void work_pending(bool pending) override { work_pending_ = pending; }
 
     void frame_work(const FrameWork& work) override { work_ = work; }
     void rest_after_frame(double /*frame_ms*/) override {} // present() paced the frame
@@ -209,8 +254,9 @@ class WebPlatform final : public GlfwPlatform {
 
   private:
     float ratio_;
-    bool follow_;    // the canvas follows its CSS size (no fixed size asked for)
-    FrameWork work_; // the frame's, for the page
+    bool follow_;               // the canvas follows its CSS size (no fixed size asked for)
+    FrameWork work_;            // the frame's, for the page
+    bool work_pending_ = false; // the app has work for the next frame: no idle pacing
 };
 
 } // namespace
