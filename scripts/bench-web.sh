@@ -12,23 +12,10 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh browser
 site=${1:-build-web/site}
 [ -f "$site/frictionviz.wasm" ] || { echo "bench-web: no site in $site (run scripts/build-web.sh)" >&2; exit 2; }
-tmp=$(mktemp -d)
-server="" browser=""
-cleanup() {
-  for p in $browser $server; do kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; done
-  # Chromium's helper processes may still be writing into the profile for a moment after it exits.
-  rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; } || true
-}
-trap cleanup EXIT
-mkdir "$tmp/site"
-cp "$site/frictionviz.js" "$site/frictionviz.wasm" bench/web/bench.html tests/web/page_input.js "$tmp/site/"
 source tests/web/serve.sh
-fv_serve "$tmp/site" "$tmp/server.log"
+fv_realtime_site "$site" bench/web/bench.html tests/web/page_input.js
 echo "load: $(uptime)"
-chromium --headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$tmp/profile" --no-first-run --window-size=1280,800 --enable-logging=stderr --v=0 \
-  "http://127.0.0.1:$port/bench.html${FV_BENCH_QUERY:-}" 2>"$tmp/chromium.log" &
-browser=$!
+fv_open_realtime "bench.html${FV_BENCH_QUERY:-}"
 # CPU time (ms, user + system) of the browser's processes of a kind (--type=gpu-process, renderer): the GPU
 # process draws the page's WebGL with SwiftShader, on the CPU. Per frame drawn, it depends far less on the
 # machine's load than wall times do.

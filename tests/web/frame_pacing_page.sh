@@ -10,21 +10,9 @@ set -euo pipefail
 site=$1 out=$2
 here=$(cd "$(dirname "$0")" && pwd)
 mkdir -p "$out"
-tmp=$(mktemp -d)
-server="" browser=""
-cleanup() {
-  for p in $browser $server; do kill "$p" 2>/dev/null || true; wait "$p" 2>/dev/null || true; done
-  rm -rf "$tmp" 2>/dev/null || { sleep 1; rm -rf "$tmp"; } || true
-}
-trap cleanup EXIT
-mkdir "$tmp/site"
-cp "$site/frictionviz.js" "$site/frictionviz.wasm" "$here/frame_pacing.html" "$here/page_input.js" "$tmp/site/"
 source "$here/serve.sh"
-fv_serve "$tmp/site" "$tmp/server.log"
-chromium --headless --no-sandbox --use-gl=angle --use-angle=swiftshader --enable-unsafe-swiftshader \
-  --user-data-dir="$tmp/profile" --no-first-run --window-size=1280,800 --enable-logging=stderr --v=0 \
-  "http://127.0.0.1:$port/frame_pacing.html" 2>"$tmp/chromium.log" &
-browser=$!
+fv_realtime_site "$site" "$here/frame_pacing.html" "$here/page_input.js"
+fv_open_realtime frame_pacing.html
 for _ in $(seq 1 900); do
   grep -aq 'fv-pace: done' "$tmp/chromium.log" && break
   kill -0 "$browser" 2>/dev/null || break
