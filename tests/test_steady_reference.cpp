@@ -35,6 +35,7 @@ struct RefRow {
     int k = 0;
     int periods = 0; // integrated until the section repeated
     double rx = 0, ry = 0, rx_err = 0, ry_err = 0;
+    double contraction = 0; // per period, near the state the reference ended in
 };
 
 std::vector<std::string> split(const std::string& line) {
@@ -70,7 +71,7 @@ std::vector<RefRow> reference_rows() {
             continue;
         }
         const std::vector<std::string> c = split(line);
-        REQUIRE(c.size() >= 14);
+        REQUIRE(c.size() >= 15);
         RefRow r;
         r.zeta = std::stod(c[0]), r.theta_deg = std::stod(c[1]), r.rdisp = std::stod(c[2]),
         r.i = std::stod(c[3]);
@@ -80,6 +81,7 @@ std::vector<RefRow> reference_rows() {
         r.periods = std::stoi(c[7]);
         r.rx = std::stod(c[8]), r.ry = std::stod(c[9]);
         r.rx_err = std::stod(c[10]), r.ry_err = std::stod(c[13]); // "inf" reads as infinity
+        r.contraction = std::stod(c[14]);
         rows.push_back(r);
     }
     return rows;
@@ -182,8 +184,10 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
     // at zeta 0.001, theta 30 deg, rdisp 1e-3, i = 2: 3751 periods of the reference; from sliding at 0.00422,
     // 90 deg, 0.01, 2: 13697; from sliding at 0.316, 60 deg, 1e-5, 10: 186345); a near miss that ended
     // not_converged at 1e-8 until the solver retried it 4x tighter (zeta 0.0274, theta 1.37 deg, rdisp 0.232,
-    // i 0.5 from rest)
-    REQUIRE(rows.size() == 150);
+    // i 0.5 from rest); next to an unstable period-1 state at zeta 0.45 and 0.448, theta 8.1 deg, rdisp 37,
+    // i 10 from rest, a period-4 orbit and an irregular motion (both once reported unsettled, with the
+    // unstable state's values)
+    REQUIRE(rows.size() == 152);
     int compared = 0, creeps = 0;
     double worst_ratio = 0;
     for (const RefRow& r : rows) {
@@ -192,11 +196,10 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
                 fv::status_word(s), s.rx, s.ry, s.error_estimate, s.detail);
         const bool ref_periodic = r.status.rfind("period_", 0) == 0 && std::isfinite(r.rx_err);
         if (r.status == "not_periodic") {
-            // No periodic motion over 20 000 periods: none may be claimed; the long-time mean, where the
-            // solver gives one, within three combined standard errors.
-            CHECK_FALSE(fv::ok(s.status));
-            if (s.status == fv::SteadyStatus::not_periodic)
-                CHECK(std::abs(s.rx - r.rx) <= 3 * std::hypot(s.mean_standard_error, r.rx_err));
+            // No periodic motion over 20 000 periods: none may be claimed, nor an unstable state's values
+            // given for the motion's; the long-time mean within three combined standard errors.
+            REQUIRE(s.status == fv::SteadyStatus::not_periodic);
+            CHECK(std::abs(s.rx - r.rx) <= 3 * std::hypot(s.mean_standard_error, r.rx_err));
             continue;
         }
         if (!ref_periodic) continue; // the reference did not settle: nothing to hold the solver to
@@ -207,11 +210,15 @@ TEST_CASE("The solver against the brute-force reference set: same state, error w
         ++compared;
         CHECK(s.period_k == r.k);
         // Where the solver projected a slow creep, its count of the creep's periods is the reference's count
-        // of periods to the steady state, less the few it takes to settle once the creep ends.
+        // of periods to the steady state, less those it takes to settle once the creep ends: from O(1) to the
+        // reference's 1e-11 at its contraction per period (34 of 14 137 at zeta 0.285, theta 90 deg, rdisp 2;
+        // 57 of 141 for the period-4 orbit at zeta 0.45, theta 8.1 deg, rdisp 37, after a creep of 84).
         if (s.creep_periods_skipped > 0) {
             ++creeps;
+            const double settle =
+                r.contraction > 0 && r.contraction < 1 ? std::log(1e-11) / std::log(r.contraction) : 0.0;
             CHECK(s.creep_periods_skipped <= r.periods);
-            CHECK(s.creep_periods_skipped >= 0.9 * r.periods);
+            CHECK(s.creep_periods_skipped >= 0.9 * (r.periods - settle));
         }
         const double dx = std::abs(s.rx - r.rx), dy = std::abs(s.ry - r.ry);
         CHECK(dx <= fv::kErrorSafety * s.error_estimate + r.rx_err);

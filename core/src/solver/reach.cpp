@@ -235,6 +235,24 @@ KSearch newton_k(const ReachSetup& s, Vec2 y, int k, int max_periods) {
     return out;
 }
 
+// Whether the motion's sections xs repeat far better after a multiple of k periods (up to kMaxPeriodK, as
+// far as xs reaches back) than the distance d they have after k.
+bool repeats_better(const std::vector<Vec2>& xs, int k, double d) {
+    const std::size_t n = xs.size() - 1;
+    for (std::size_t j = 2 * static_cast<std::size_t>(k); j <= kMaxPeriodK && 2 * j <= n; j *= 2)
+        if ((xs[n] - xs[n - j]).norm() < 0.1 * d) return true;
+    return false;
+}
+
+// Whether the k-periodic point y repeats after k/2 periods already (a state of a shorter period, which
+// Newton's method on the k-times map finds as well): not a period-k orbit. Costs k/2 periods.
+bool repeats_sooner(const ReachSetup& s, const Vec2& y, int k, int& periods) {
+    Vec2 half = y;
+    periods += k / 2;
+    if (!advance_k(s, half, k / 2, s.rq)) return false;
+    return (half - y).norm() <= std::max(1e3 * s.aim, 1e-9);
+}
+
 Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
     Orbit o;
     o.k = k;
@@ -614,11 +632,27 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             const double d = (xs[n] - xs[n - k]).norm(), dprev = (xs[n - k] - xs[n - 2 * k]).norm();
             // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
             if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || (k == 1 && d <= dprev)))) continue;
+            // Near an unstable period-1 state, not a k whose multiple repeats far better (the motion closing
+            // in on a period-4 orbit passes for period 2 as well, and Newton's method on the 2-times map
+            // would spend its periods first).
+            if (k > 1 && have_unstable && repeats_better(xs, k, d)) continue;
             // Just tried from near here: again once the motion has gone on for 16 k periods, and (a long
             // approach, still moving) as long again as before the last try.
             const double wait = d < 1e-7 ? 16.0 * k : std::max(16.0 * k, tried_at[k]);
-            if (followed - tried_at[k] < wait) break;
+            // Past an unstable period-1 state the motion hovers near it, so k = 1 qualifies over and over;
+            // a longer k that repeats is then looked at as well, not only the smallest (zeta 0.45, theta
+            // 8.1 deg, rdisp 37, i 10: a period-4 orbit within 3e-4 of the unstable state, which the motion
+            // reaches in about 140 periods, was never tried).
+            const bool longer_too = k == 1 && have_unstable;
+            if (followed - tried_at[k] < wait) {
+                if (longer_too) continue;
+                break;
+            }
             tried_at[k] = followed;
+#ifdef FV_SOLVER_TRACE
+            std::fprintf(stderr, "follow: k %d tried at %.0f periods followed (d %.3g, %d periods in all)\n",
+                         k, followed, d, out.periods);
+#endif
             if (k == 1 && candidate && (xs[n] - xs[n - 1]).dot(candidate->last_l0 - xs[n]) > 0) {
                 // Heading for the state found before: the evidence again from here, without a new search.
                 if (take_period1(*candidate, xs[n], true)) return out;
@@ -639,18 +673,22 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                     }
                 }
             } else {
-                const KSearch ks = newton_k(s, xs[n], k, 40 * k);
+                // A longer k looked at beside an unstable period-1 state (longer_too): a short try, its
+                // orbit may not be there yet (the motion is followed on, and k tried again from further on).
+                const KSearch ks = newton_k(s, xs[n], k, (have_unstable ? 8 : 40) * k);
                 out.periods += ks.periods;
                 if (!ks.converged) break;
                 cd mu[2];
                 eigen_multipliers(ks.M, mu);
                 if (!stable(mu)) break;
+                if (repeats_sooner(s, ks.y, k, out.periods)) break;
                 if (!reaches(s, xs[n], ks.y, ks.M, k, false, out.periods)) break;
                 Orbit o = verify_k(s, ks, k, out.periods);
                 o.reached = true;
                 st = std::move(o);
                 return out;
             }
+            if (longer_too) continue;
             break;
         }
         // A slow creep towards the circle (i > 1), where Newton's method from the chunk's end (above) found
@@ -700,7 +738,11 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     // and the window costs 15-30 % less (zeta 0.075, theta 30 deg, rdisp 100, i 10: 0.31 -> 0.26 s).
     const PeriodRequest rq_means{8 * s.rq.atol, 8 * s.rq.atol_force, false};
     PeriodResult pr;
+    // How far the motion's sections range within each batch: a motion that keeps moving over the sections
+    // as much at the window's end as at its start does not settle, however well its means agree.
+    std::vector<double> reach_of_batch(kWindowBatches, 0.0);
     for (int b = 0; b < kWindowBatches; ++b) {
+        const Vec2 x_b = x;
         for (int j = 0; j < per_batch; ++j) {
             if (!advance(s, x, rq_means, &pr)) {
                 st.status = SteadyStatus::integration_failed;
@@ -708,6 +750,8 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                 return out;
             }
             batch[static_cast<std::size_t>(b)] += pr.force_integral / kTwoPi;
+            reach_of_batch[static_cast<std::size_t>(b)] =
+                std::max(reach_of_batch[static_cast<std::size_t>(b)], (x - x_b).norm());
         }
         batch[static_cast<std::size_t>(b)] /= per_batch;
     }
@@ -773,7 +817,17 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         drifting =
             drifting || (first - second).cwiseAbs().maxCoeff() > 3 * std::sqrt(2.0) * se * std::sqrt(2.0);
     }
-    if (se <= 10 * s.tol || drifting) {
+#ifdef FV_SOLVER_TRACE
+    std::fprintf(stderr, "window: se %.3g drifting %d reach first %.3g last %.3g\n", se, drifting,
+                 reach_of_batch.front(), reach_of_batch.back());
+#endif
+    // Sections that range as far in the window's last batch as in its first (at least half as far), and far
+    // beyond the tolerance: the motion goes on moving (e.g. round an invariant curve of the map: zeta 0.448,
+    // theta 8.1 deg, rdisp 37, i 10, whose only period-1 state has mu = 1.51; the sections range over
+    // 4.5e-4 in every batch while the batch means agree to 1e-7), so its means are its steady values.
+    const bool moving = reach_of_batch.back() >= 0.5 * reach_of_batch.front() &&
+                        reach_of_batch.back() > kMovingSections * s.tol;
+    if ((se <= 10 * s.tol && !moving) || drifting) {
         // The motion hardly changes any more, yet no periodic state could be vouched for: a slow transient
         // or a state the searches could not pin down. Not a result; the window's means are shown.
         if (have_unstable) {
@@ -796,7 +850,8 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
     st.ry = mean.y();
     st.standard_error = se;
     st.window = kWindowPeriods;
-    st.error_estimate = se;
+    // Not below the means' integration error (the window's looser tolerance above).
+    st.error_estimate = std::max(se, 10 * s.tol);
     st.l0 = x;
     st.failure = "the motion does not repeat: long-time means over a window";
     if (have_unstable) {
