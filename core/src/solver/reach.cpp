@@ -631,7 +631,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             if (n < 2 * k) break;
             const double d = (xs[n] - xs[n - k]).norm(), dprev = (xs[n - k] - xs[n - 2 * k]).norm();
             // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
-            if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || (k == 1 && d <= dprev)))) continue;
+            if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || d <= dprev))) continue;
             // Near an unstable period-1 state, not a k whose multiple repeats far better (the motion closing
             // in on a period-4 orbit passes for period 2 as well, and Newton's method on the 2-times map
             // would spend its periods first).
