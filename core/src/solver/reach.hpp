@@ -60,7 +60,7 @@ inline constexpr int kWindowPeriods = 1000;
 inline constexpr int kWindowBatches = 20;
 // A motion whose sections still range over more than this many tolerances within the window's last batch
 // (and over at least half as far as in its first) keeps moving: not a slow transient (reach.cpp).
-inline constexpr double kMovingSections = 1000;
+inline constexpr double kMovingSections = 100;
 // Slow creeps skipped per start (each followed again from where its skip ends).
 inline constexpr int kMaxCreepSkips = 2;
 // A skip is tried after this many creep periods in a row, and taken when it projects at least kMinCreepSkip.
