@@ -245,12 +245,15 @@ bool repeats_better(const std::vector<Vec2>& xs, int k, double d) {
 }
 
 // Whether the k-periodic point y repeats after k/2 periods already (a state of a shorter period, which
-// Newton's method on the k-times map finds as well): not a period-k orbit. Costs k/2 periods.
+// Newton's method on the k-times map finds as well): not a period-k orbit. Newton's method stops within
+// 0.1 aim of its stable fixed point, so a shorter period's point comes back within about twice that; a true
+// k-orbit closer than 10 aim to itself after k/2 has means within the tolerance of that state's. Costs k/2
+// periods.
 bool repeats_sooner(const ReachSetup& s, const Vec2& y, int k, int& periods) {
     Vec2 half = y;
     periods += k / 2;
     if (!advance_k(s, half, k / 2, s.rq)) return false;
-    return (half - y).norm() <= std::max(1e3 * s.aim, 1e-9);
+    return (half - y).norm() <= 10 * s.aim;
 }
 
 Orbit verify_k(const ReachSetup& s, const KSearch& ks, int k, int& periods) {
@@ -630,8 +633,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         for (int k = 1; k <= kMaxPeriodK; k *= 2) {
             if (n < 2 * k) break;
             const double d = (xs[n] - xs[n - k]).norm(), dprev = (xs[n - k] - xs[n - 2 * k]).norm();
-            // Repeating, or closing in: geometrically, or (k = 1) monotonically, as a slow creep does.
-            if (!(d < 0.02 && (d < 1e-7 || d < 0.9 * dprev || d <= dprev))) continue;
+            // Repeating, or closing in (a slow creep for k = 1, a slow approach to a period-k orbit: zeta
+            // 0.244623, theta 62 deg, rdisp 2, i 10 closes in on a period-2 orbit at 0.992 a period).
+            if (!(d < 0.02 && (d < 1e-7 || d <= dprev))) continue;
             // Near an unstable period-1 state, not a k whose multiple repeats far better (the motion closing
             // in on a period-4 orbit passes for period 2 as well, and Newton's method on the 2-times map
             // would spend its periods first).
@@ -673,8 +677,9 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                     }
                 }
             } else {
-                // A longer k looked at beside an unstable period-1 state (longer_too): a short try, its
-                // orbit may not be there yet (the motion is followed on, and k tried again from further on).
+                // Beside an unstable period-1 state, where the motion hovers and every k that repeats is
+                // tried (longer_too): a short try, its orbit may not be there yet (the motion is followed on,
+                // and k tried again from further on).
                 const KSearch ks = newton_k(s, xs[n], k, (have_unstable ? 8 : 40) * k);
                 out.periods += ks.periods;
                 if (!ks.converged) break;
