@@ -71,7 +71,7 @@ Projection project(const Vec2& a, const Vec2& b, const Vec2& c, double noise, bo
     if (K < kMinJump) return pj;
     pj.K = K;
     pj.x = circle ? rotated(c, sum * d2.x()) : Vec2(c + sum * d2);
-    pj.step = circle ? Vec2(c.y() * -d2.x(), c.x() * d2.x()) : d2;
+    pj.step = circle ? Vec2(perp(c) * d2.x()) : d2;
     return pj;
 }
 

@@ -17,10 +17,6 @@
 namespace fv::solver {
 namespace {
 
-Vec2 perp(const Vec2& e) {
-    return {-e.y(), e.x()};
-}
-
 constexpr int kMaxIterations = 100;
 
 // What one search is asked, fixed while it runs.

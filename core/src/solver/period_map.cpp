@@ -10,6 +10,7 @@
 // Every event is located on the step's collocation polynomial, and the step is then retaken to end
 // exactly there, so the state at the event carries the method's full order.
 #include "period_map.hpp"
+#include "plane_angles.hpp"
 
 #include "radau_iia.hpp"
 
@@ -21,10 +22,6 @@
 
 namespace fv::solver {
 namespace {
-
-Vec2 perp(const Vec2& e) {
-    return {-e.y(), e.x()};
-}
 
 // An event function of the current phase: it must stay on the side `sign` (sign * g >= -noise); the event
 // is the first instant where it leaves.

@@ -1,5 +1,6 @@
 // Turning a force in the plane and the signed angle between two forces: one definition for the search on the
-// circle's angle, the evidence of reaching a state and the coasting along the circle.
+// circle's angle, the period map's sensitivities on the circle, the evidence of reaching a state and the
+// coasting along the circle.
 #pragma once
 
 #include "fv/vec2.hpp"
@@ -7,6 +8,11 @@
 #include <cmath>
 
 namespace fv::solver {
+
+// v turned by a quarter turn (counter-clockwise): the circle's tangent at the force v.
+inline Vec2 perp(const Vec2& v) {
+    return {-v.y(), v.x()};
+}
 
 // v turned by a radians (counter-clockwise).
 inline Vec2 rotated(const Vec2& v, double a) {
