@@ -82,6 +82,19 @@ FrameBox loop_frame(const Spec& spec, const Setup& s, double aspect) {
     return {mx + k * (b.x0 - mx), mx + k * (b.x1 - mx), my + k * (b.y0 - my), my + k * (b.y1 - my)};
 }
 
+// An x title wider than its panel (a narrow page: a printed column of `render --lesson --page column`)
+// keeps its first part, the axis's name, and drops the explanation after ": " or " (", which the painter
+// would otherwise cut off at the page's edges.
+void shorten_x_title(const gfx::Canvas& canvas, PanelData& p, float room) {
+    constexpr float kTickText = 13; // gfx::Plot::font_size, the x title's smallest size
+    if (canvas.measure_text(p.x_title, kTickText * p.text_scale).x <= room) return;
+    for (const char* cut : {": ", " ("})
+        if (const std::size_t k = p.x_title.find(cut); k != std::string::npos && k > 0) {
+            p.x_title.resize(k);
+            return;
+        }
+}
+
 } // namespace
 
 std::optional<Format> format_for_path(const std::string& path) {
@@ -266,6 +279,8 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
          14);
     const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
     PanelData top = top_view(a_, k, b_ ? "A" : nullptr);
+    const float room = top_view_area(page).width(); // B's top view is as wide as A's
+    shorten_x_title(canvas, top, room);
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
         return;
@@ -275,6 +290,7 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     CompareOverlay b;
     if (b_) {
         panels.top_view_b = top_view(*b_, k, "B");
+        shorten_x_title(canvas, *panels.top_view_b, room);
         b = {&b_->sim, b_->curves ? &*b_->curves : nullptr, false};
     }
     // The force plot's time axis counts back from now, so that it reads the same every period.

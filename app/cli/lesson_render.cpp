@@ -23,8 +23,10 @@ namespace fv::cli {
 namespace {
 
 // A printed column's page for the lesson's picture: its width times this tall, upright enough (more than 1.1)
-// that the dashboard stacks its three panels, each the column's width (figures/dashboard_painter.hpp).
-constexpr float kColumnPageAspect = 1.6f;
+// that the dashboard stacks its three panels, each the column's width (figures/dashboard_painter.hpp). In
+// compare mode taller, so that A's and B's top views (in the top view's 40 %) are one above the other, each
+// the column's width, rather than side by side at half of it, where their axis titles run into each other.
+constexpr float kColumnPageAspect = 1.6f, kColumnCompareAspect = 2.7f;
 
 } // namespace
 
@@ -63,7 +65,9 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     const float scale = static_cast<float>(output.scale);
     const gfx::Vec2 logical{static_cast<float>(size.w) / scale, static_cast<float>(size.h) / scale};
     app::PrintLayout layout = app::print_layout(paper, logical.x, logical.y, caption);
-    if (layout.column) layout.logical.y = layout.logical.x * kColumnPageAspect;
+    if (layout.column)
+        layout.logical.y =
+            layout.logical.x * (s.view == anim::View::compare ? kColumnCompareAspect : kColumnPageAspect);
     // A handout carries the step's explanation: its title and its plain-words text (the JSON's title and
     // caption).
     const std::string caption_text = caption ? s.title + ". " + step.text : "";
