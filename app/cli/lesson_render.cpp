@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 
 #ifndef FV_VERSION
@@ -27,6 +28,10 @@ namespace {
 // compare mode taller, so that A's and B's top views (in the top view's 40 %) are one above the other, each
 // the column's width, rather than side by side at half of it, where their axis titles run into each other.
 constexpr float kColumnPageAspect = 1.6f, kColumnCompareAspect = 2.7f;
+// On an A4 or Letter sheet the picture is at least this tall over its width (a figure's page: 3/4): the
+// dashboard has two rows, the top view and the plots under it, and at 3/4 the plots' data areas are some 90
+// pt tall.
+constexpr float kSheetAspect = 0.9f;
 
 } // namespace
 
@@ -68,6 +73,8 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     if (layout.column)
         layout.logical.y =
             layout.logical.x * (s.view == anim::View::compare ? kColumnCompareAspect : kColumnPageAspect);
+    else if (layout.logical.x > 0)
+        layout.logical.y = std::max(layout.logical.y, layout.logical.x * kSheetAspect);
     // A handout carries the step's explanation: its title and its plain-words text (the JSON's title and
     // caption).
     const std::string caption_text = caption ? s.title + ". " + step.text : "";
