@@ -80,7 +80,8 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     const std::string caption_text = caption ? s.title + ". " + step.text : "";
     anim::Still still;
     try {
-        still = anim::render_still(s, layout.logical);
+        const bool vectors = output.pictures().svg || output.pictures().pdf;
+        still = anim::render_still(s, vectors ? layout.logical : gfx::Vec2{0, 0});
     } catch (const std::exception& e) {
         throw RuntimeFailure(std::string("cannot render headless: ") + e.what());
     }
