@@ -48,11 +48,12 @@ RUN = [
                     "--out out/"),
     ("docs/cli.md", "frictionviz render --spec out/rx.json --format pdf --out out/"),
     ("docs/cli.md", "frictionviz render --lesson 3 --format png,pdf --out out/"),
+    ("docs/cli.md", "frictionviz render --lesson 5 --format pdf --page a4 --caption --out out/"),
     ("docs/teaching.md", "frictionviz animate --lesson 2 --out along.gif"),
     ("docs/teaching.md", "frictionviz animate --lesson 3 --view compare --out compare.gif"),
     ("docs/teaching.md", "frictionviz animate --lesson 3 --out across.gif"),
     ("docs/teaching.md", "mkdir -p handout"),
-    ("docs/teaching.md", "frictionviz render --lesson 5 --format png,pdf --out handout/"),
+    ("docs/teaching.md", "frictionviz render --lesson 5 --format png,pdf --page a4 --caption --out handout/"),
     ("docs/cli.md", "frictionviz render --figure fig4 --theta 0 --zeta 0.5 --format pdf --page a4 --caption "
                     "--out out/"),
     ("docs/cli.md", "frictionviz render --figure fig5 --format pdf,svg --page column --caption --out out/"),

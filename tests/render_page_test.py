@@ -4,7 +4,10 @@ type measured by pdftotext -bbox, the caption found in the PDF's text, the SVG's
 the column's panels one above another and a caption's overlong path broken inside it, and a bad --page refused
 with one line naming the allowed pages and nothing written.
 Usage: render_page_test.py FRICTIONVIZ SCRATCH_DIR"""
-import json, os, re, shutil, struct, subprocess, sys, zlib
+import json, os, re, shutil, subprocess, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from render_files import png_rows, words  # noqa: E402
 
 fv, scratch = sys.argv[1], sys.argv[2]
 shutil.rmtree(scratch, ignore_errors=True)
@@ -21,33 +24,6 @@ def render(out, *args):
     os.makedirs(out, exist_ok=True)
     return subprocess.run([fv, "render", "--figure", "fig5", "--out", out, *args], capture_output=True, text=True)
 
-
-def png_rows(path):
-    """The PNG's size and its rows as RGBA bytes (8-bit RGBA, non-interlaced: what render writes)."""
-    data = open(path, "rb").read()
-    w, h = struct.unpack(">II", data[16:24])
-    pos, idat = 8, b""
-    while pos < len(data):
-        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
-        if kind == b"IDAT":
-            idat += data[pos + 8:pos + 8 + n]
-        pos += 12 + n
-    raw, stride, rows, prev = zlib.decompress(idat), w * 4, [], bytearray(w * 4)
-    for y in range(h):
-        f, line = raw[y * (stride + 1)], bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
-        for i in range(stride):
-            a, b = line[i - 4] if i >= 4 else 0, prev[i]
-            c = prev[i - 4] if i >= 4 else 0
-            if f == 1: line[i] = (line[i] + a) & 255
-            elif f == 2: line[i] = (line[i] + b) & 255
-            elif f == 3: line[i] = (line[i] + (a + b) // 2) & 255
-            elif f == 4:
-                p = a + b - c
-                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
-                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
-        rows.append(line)
-        prev = line
-    return w, h, rows
 
 
 # Page sizes in points: A4 is 210 x 297 mm (595.276 x 841.89 pt), Letter 8.5 x 11 in (612 x 792 pt).
@@ -84,12 +60,6 @@ r = render(out, "--format", "pdf", "--page", "column")
 info = subprocess.run(["pdfinfo", os.path.join(out, "fig5.pdf")], capture_output=True, text=True).stdout
 check(re.search(r"Page size:\s+237.6 x", info) is not None, "--page column: the page is 3.3 in (237.6 pt) wide")
 
-
-def words(pdf):
-    """(xMin, yMin, xMax, yMax, word) of every word pdftotext finds on the page."""
-    bbox = subprocess.run(["pdftotext", "-bbox", pdf, "-"], capture_output=True, text=True).stdout
-    return [(float(a), float(b), float(c), float(d), t) for a, b, c, d, t in
-            re.findall(r'xMin="([\d.]+)" yMin="([\d.]+)" xMax="([\d.]+)" yMax="([\d.]+)">([^<]*)</word>', bbox)]
 
 
 # Two panels on the column: one above the other across its width (side by side they were 160 units each), the

@@ -96,6 +96,45 @@ TEST_CASE("animate GIF: the scene view and the default loop length", "[animate][
     check_loop(g.frames, 60, 0.02);
 }
 
+namespace {
+
+// The share of the image's pixels right of x0 and below y0 (fractions of its size) in the colour map's top
+// end (viridis' yellow, about (253, 231, 37)): the (zeta, theta) map's high r_x.
+double yellow_share(const fv::gfx::Image& img, double x0, double y0) {
+    std::size_t n = 0, hits = 0;
+    for (int y = static_cast<int>(y0 * img.height); y < img.height; ++y)
+        for (int x = static_cast<int>(x0 * img.width); x < img.width; ++x, ++n) {
+            const std::uint8_t* p = &img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4];
+            hits += p[0] > 200 && p[1] > 190 && p[2] < 100;
+        }
+    return n ? static_cast<double>(hits) / static_cast<double>(n) : 0;
+}
+
+} // namespace
+
+TEST_CASE("animate --lesson N: the step's lower panel (the map of step 7) unless --panel says another",
+          "[animate][gif][lessons]") {
+    const auto lessons = nlohmann::json::parse(slurp(FV_LESSONS_JSON));
+    int map_step = 0;
+    for (std::size_t k = 0; k < lessons["steps"].size(); ++k)
+        if (lessons["steps"][k]["setup"].value("panel", "curves") == "map")
+            map_step = static_cast<int>(k) + 1;
+    REQUIRE(map_step > 0);
+    const auto lower_right_yellow = [&](const std::string& more) {
+        const std::string out = root() + "/lesson-map.gif";
+        const Run r = animate("--lesson " + std::to_string(map_step) +
+                              " --periods 1 --fps 4 --speed 1 --size 640x400 " + more + " --out " + out);
+        INFO(r.err);
+        REQUIRE(r.code == 0);
+        const fv::test::DecodedGif g = fv::test::decode_gif(out);
+        REQUIRE(g.error.empty());
+        REQUIRE(g.image_count == 4);
+        return yellow_share(g.frames[0], 0.5, 0.62);
+    };
+    CHECK(lower_right_yellow("") > 0.05);                // the step's map
+    CHECK(lower_right_yellow("--panel curves") < 0.001); // asked for the curves instead
+}
+
 TEST_CASE("animate MP4: H.264 in yuv420p, odd sizes rounded up to even, seamless", "[animate][mp4]") {
     const std::string out = root() + "/loop.mp4";
     const Run r = animate(kModel + "--fps 10 --speed 1 --size 481x301 --out " + out);
@@ -136,6 +175,9 @@ TEST_CASE("animate: bad input exits 2 with one line naming what is allowed, noth
              Case{kModel + "--size 640x400 --scale 4", "x.gif", "320x240"},
              Case{kModel + "--scale 9", "x.gif", "[0.25, 8]"},
              Case{kModel + "--view side", "x.gif", "scene"},
+             Case{kModel + "--panel chart", "x.gif", "curves"},
+             Case{kModel + "--view scene --panel map", "x.gif", "not with --view scene"},
+             Case{"--lesson 7 --view scene --panel map", "x.gif", "not with --view scene"},
              Case{"--zeta 0.15 --theta 60 --rdisp 2", "x.gif", "--i"},
              Case{"--zeta 200 --theta 60 --rdisp 2 --i 1", "x.gif", "100"},
              Case{kModel, "missing-dir/x.gif", "does not exist"},
@@ -256,8 +298,8 @@ TEST_CASE("render --lesson N: the step's picture in every format, its JSON from 
              Case{"--lesson 3 --size 100x100 --out " + dir, "320"},
              Case{"--lesson 3 --out " + dir + "/missing", "does not exist"},
              Case{"--lesson 3", "--out"},
-             Case{"--lesson 3 --page a4 --format pdf --out " + dir, "not with --lesson"},
-             Case{"--lesson 3 --caption --out " + dir, "not with --lesson"},
+             Case{"--lesson 3 --page a3 --caption --format pdf --out " + dir, "a4, letter, column"},
+             Case{"--lesson 3 --spec " + dir + "/lesson-3.png --out " + dir, "--spec"},
          }) {
         const Run r = render(c.args);
         INFO(c.args << " -> " << r.err);

@@ -82,6 +82,19 @@ FrameBox loop_frame(const Spec& spec, const Setup& s, double aspect) {
     return {mx + k * (b.x0 - mx), mx + k * (b.x1 - mx), my + k * (b.y0 - my), my + k * (b.y1 - my)};
 }
 
+// An x title wider than its panel (a narrow page: a printed column of `render --lesson --page column`)
+// keeps its first part, the axis's name, and drops the explanation after ": " or " (", which the painter
+// would otherwise cut off at the page's edges.
+void shorten_x_title(const gfx::Canvas& canvas, PanelData& p, float room) {
+    constexpr float kTickText = 13; // gfx::Plot::font_size, the x title's smallest size
+    if (canvas.measure_text(p.x_title, kTickText * p.text_scale).x <= room) return;
+    for (const char* cut : {": ", " ("})
+        if (const std::size_t k = p.x_title.find(cut); k != std::string::npos && k > 0) {
+            p.x_title.resize(k);
+            return;
+        }
+}
+
 } // namespace
 
 std::optional<Format> format_for_path(const std::string& path) {
@@ -128,14 +141,15 @@ std::string check_spec(const Spec& s) {
     return {};
 }
 
-SetupLoop::SetupLoop(const Spec& spec, const Setup& s, bool with_curves)
+SetupLoop::SetupLoop(const Spec& spec, const Setup& s, bool with_curves, bool with_map)
     : setup(s), start(s.model, s.params), sim(s.model, s.params) {
     SteadyOptions opt = spec.steady;
     opt.start = s.start;
     const SteadyResult steady = steady_ratio(s.model, s.params, opt);
     rx = steady.rx;
+    // The map only where it is shown (A's lower panel; it takes a few seconds), as the app asks for it.
     if (with_curves)
-        curves = compute_ratio_curves({s.model, s.params, false, ratio_zeta_max(nullptr), s.start});
+        curves = compute_ratio_curves({s.model, s.params, with_map, ratio_zeta_max(nullptr), s.start});
     // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
     // stepping settle on its fixed point, a whole number of periods at a time.
     Vec2 lag = Vec2::Zero();
@@ -175,9 +189,10 @@ const LiveSim& SetupLoop::at_frame(int k, int count, int periods) {
 
 Frames::Frames(const Spec& spec)
     : spec_(spec), count_(frame_count(spec)),
-      a_(spec, {spec.model, spec.params, spec.steady.start}, spec.view != View::scene) {
+      a_(spec, {spec.model, spec.params, spec.steady.start}, spec.view != View::scene,
+         spec.view != View::scene && spec.panel == LowerPanel::map) {
     if (spec.view == View::compare) {
-        b_.emplace(spec, spec.b, true);
+        b_.emplace(spec, spec.b, true, false);
         // One time base: each settled for as many periods as it needed; the one behind runs on by whole
         // periods (its steady state repeats), so that both loops start at the same tau up to a step.
         const long ahead = std::lround((a_.start.tau() - b_->start.tau()) / (2 * kPi));
@@ -251,16 +266,21 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     gfx::TextStyle ts;
     ts.size = 14;
     ts.halign = gfx::HAlign::Center;
-    if (!spec_.title.empty()) {
-        gfx::TextStyle title = ts;
-        title.size = 17;
-        canvas.text({page.x / 2, 4}, spec_.title, title);
-    }
-    canvas.text({page.x / 2, top_ - 19},
-                b_ ? compare_caption_of(a_.setup, a_.rx, b_->setup, b_->rx) : caption_of(a_.setup, a_.rx),
-                ts);
+    // Each line at its size where it fits the page's width, else smaller (a narrow page: a printed column,
+    // the smallest --size): cut off at the edges it would say less than it does smaller.
+    const auto line = [&](float y, const std::string& text, float size) {
+        gfx::TextStyle style = ts;
+        const float w = canvas.measure_text(text, size).x, room = page.x - 8;
+        style.size = w > room ? size * room / w : size;
+        canvas.text({page.x / 2, y}, text, style);
+    };
+    if (!spec_.title.empty()) line(4, spec_.title, 17);
+    line(top_ - 19, b_ ? compare_caption_of(a_.setup, a_.rx, b_->setup, b_->rx) : caption_of(a_.setup, a_.rx),
+         14);
     const gfx::Rect area{4, top_, page.x - 4, page.y - 4};
     PanelData top = top_view(a_, k, b_ ? "A" : nullptr);
+    const float room = top_view_area(page).width(); // B's top view is as wide as A's
+    shorten_x_title(canvas, top, room);
     if (spec_.view == View::scene) {
         app::paint_panel(canvas, top, area);
         return;
@@ -270,6 +290,7 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     CompareOverlay b;
     if (b_) {
         panels.top_view_b = top_view(*b_, k, "B");
+        shorten_x_title(canvas, *panels.top_view_b, room);
         b = {&b_->sim, b_->curves ? &*b_->curves : nullptr, false};
     }
     // The force plot's time axis counts back from now, so that it reads the same every period.
@@ -280,7 +301,7 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     overlay.b = b;
     panels.top_view = std::move(top);
     panels.force = std::move(force);
-    panels.lower = ratio_panel_live(a_.curves, false, overlay);
+    panels.lower = lower_panel_live(spec_.panel, sim, a_.curves, false, overlay, mechanism_);
     app::paint_dashboard(canvas, area, panels);
 }
 
@@ -314,11 +335,23 @@ struct Stage {
 
 } // namespace
 
-Still render_still(const Spec& spec) {
+Still render_still(const Spec& spec, gfx::Vec2 vector_page) {
     Stage stage(spec);
     stage.draw(stage.frames.still_frame());
     Still still{stage.session.context().read_pixels(), stage.session.canvas().display_list()};
     stage.session.context().present();
+    if (vector_page.x > 0 && vector_page.y > 0) {
+        // The same frame laid out again on the printed page: its top view fitted to the area it gets there
+        // (and, in the ground frame, the still frame chosen for that box), recorded without drawing.
+        gfx::Canvas& canvas = stage.session.canvas();
+        const float ratio = stage.session.pixel_ratio();
+        stage.frames.fit(canvas, vector_page, ratio);
+        const int k = stage.frames.still_frame();
+        canvas.begin(vector_page, ratio, gfx::colors::white);
+        stage.frames.paint(canvas, vector_page, k);
+        canvas.end_recording();
+        still.list = canvas.display_list();
+    }
     return still;
 }
 

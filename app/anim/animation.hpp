@@ -7,6 +7,7 @@
 #include "figures/animation_spec.hpp"
 
 #include "fv/gfx/canvas.hpp"
+#include "fv/live_panels.hpp"
 #include "fv/live_sim.hpp"
 #include "fv/ratio_curves.hpp"
 #include "fv/setup.hpp"
@@ -45,7 +46,8 @@ std::string check_spec(const Spec& spec);
 // fixed point, then the animation's own stepping), the simulation at the frame drawn, its steady r_x, its
 // r_x(zeta) curves (for the dashboard views) and the top view's frame held over the loop.
 struct SetupLoop {
-    SetupLoop(const Spec& spec, const Setup& setup, bool with_curves);
+    // with_map: the curves with the (zeta, theta) map too (the map panel; Dahl only).
+    SetupLoop(const Spec& spec, const Setup& setup, bool with_curves, bool with_map = false);
     // The simulation at frame k of `count` in a loop of `periods` periods: floor(k N / count) steps into it
     // (N = periods x steps per period), so that frame `count` is the loop's start again.
     const LiveSim& at_frame(int k, int count, int periods);
@@ -89,6 +91,7 @@ class Frames {
     int count_ = 0;
     SetupLoop a_;
     std::optional<SetupLoop> b_; // the compare view's setup B
+    MechanismBase mechanism_;    // the why panel's base (for A's zeta and theta: computed once, kept)
     float top_ = 24;             // the panels' top: below the caption, and the title where there is one
     double aspect_ = 0;
     gfx::Rect top_view_area(gfx::Vec2 page) const;
@@ -99,14 +102,16 @@ struct Progress {
     const std::atomic<bool>* cancel = nullptr;       // set: stop, write nothing, return "cancelled"
 };
 
-// Frame 0 of the loop as one picture: its pixels (for a PNG) and its display list (for SVG and PDF), at the
-// spec's size and scale; `render --lesson` draws a lesson step's picture with it. Throws std::runtime_error
-// when no headless GL context can be made.
+// The still frame of the loop (Frames::still_frame) as one picture: its pixels (for a PNG) and its display
+// list (for SVG and PDF), at the spec's size and scale; `render --lesson` draws a lesson step's picture with
+// it. `vector_page` > 0: the display list laid out on that logical page instead (render --lesson --page: a
+// printed page's, whose full-size text prints at 8-9 pt). Throws std::runtime_error when no headless GL
+// context can be made.
 struct Still {
     gfx::Image image;
     gfx::DisplayList list;
 };
-Still render_still(const Spec& spec);
+Still render_still(const Spec& spec, gfx::Vec2 vector_page = {0, 0});
 
 // Renders the frames and writes `path` through fv::write_file_atomic. The spec must have passed check_spec()
 // and its format match the path. Returns "" or a one-line error (nothing written then). Throws

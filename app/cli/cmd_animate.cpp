@@ -2,12 +2,12 @@
 // (anim/animation.hpp), rendered headless. Every flag is checked before anything is computed or written.
 #include "commands.hpp"
 #include "errors.hpp"
+#include "lesson_render.hpp"
 #include "model_options.hpp"
 #include "output.hpp"
 #include "render_output.hpp"
 
 #include "anim/animation.hpp"
-#include "gui/lessons.hpp"
 
 #include "fv/units.hpp"
 
@@ -33,7 +33,7 @@ void draw_progress(int done, int total) {
 Command add_animate_command(CLI::App& root) {
     struct Args {
         ModelArgs model;
-        std::string out, view = "dashboard", size = "960x600", frame = "body";
+        std::string out, view = "dashboard", size = "960x600", frame = "body", panel = "curves";
         int periods = 2, lesson = 0;
         double fps = 30, speed = 0.5, scale = 1;
         // --view compare's setup B: each flag as A's; left out, compare_default's (A's, the other angle).
@@ -99,6 +99,13 @@ Command add_animate_command(CLI::App& root) {
                     "through and wraps round at the edges)")
         ->check(CLI::IsMember({"body", "ground"}))
         ->capture_default_str();
+    cmd->add_option(
+           "--panel", a->panel,
+           "the dashboard's lower-right panel, as the app's: curves (r_x(zeta)), map (the (zeta, theta) "
+           "map of r_x, Dahl model; a few seconds more), loop (the asperity's hysteresis) or why (the "
+           "mechanism, the paper's Fig. 4); not with --view scene")
+        ->check(CLI::IsMember({"curves", "map", "loop", "why"}))
+        ->capture_default_str();
     return {
         cmd, [a, cmd] {
             const std::optional<anim::Format> format = anim::format_for_path(a->out);
@@ -110,12 +117,13 @@ Command add_animate_command(CLI::App& root) {
             if (a->lesson == 0 && cmd->get_option("--theta")->count() == 0)
                 throw UsageError("--theta is required (or --lesson N: a lesson step's setup)");
             s.steady = steady_options(a->model);
-            const app::LessonSetup* lesson =
-                a->lesson > 0 ? &app::lesson_steps()[static_cast<std::size_t>(a->lesson - 1)].setup : nullptr;
+            // A lesson step's setup as the app shows it; each flag given replaces its part.
+            const std::optional<anim::Spec> lesson =
+                a->lesson > 0 ? std::optional<anim::Spec>(lesson_spec(a->lesson)) : std::nullopt;
             if (lesson) {
                 s.model = lesson->model;
                 s.params = lesson->params;
-                s.steady.start = lesson->start;
+                s.steady.start = lesson->steady.start;
             } else {
                 s.model = model_of(a->model);
                 s.params = to_params(a->model);
@@ -147,9 +155,17 @@ Command add_animate_command(CLI::App& root) {
             if (cmd->get_option("--b-start")->count()) parse_start(a->b_start, s.b.start);
             s.frame = parse_frame(a->frame).value_or(FrameChoice::body);
             if (lesson && cmd->get_option("--frame")->count() == 0) s.frame = lesson->frame; // unless asked
+            s.panel = panel_from_name(a->panel).value_or(LowerPanel::curves);
+            if (lesson && cmd->get_option("--panel")->count() == 0) s.panel = lesson->panel;
             // A lesson step with compare mode shows it, unless another view is asked for.
-            if (lesson && lesson->b && cmd->get_option("--view")->count() == 0 && !b_given)
-                s.view = anim::View::compare, s.b = *lesson->b;
+            if (lesson && lesson->view == anim::View::compare && cmd->get_option("--view")->count() == 0 &&
+                !b_given)
+                s.view = anim::View::compare, s.b = lesson->b;
+            if (s.view == anim::View::scene && cmd->get_option("--panel")->count() > 0)
+                throw UsageError(
+                    "--panel " + a->panel +
+                    ": not with --view scene (the top view alone); allowed with --view dashboard "
+                    "or compare");
             const PixelSize sz = parse_size(a->size);
             s.width = sz.w;
             s.height = sz.h;

@@ -221,14 +221,17 @@ Command add_render_command(CLI::App& root) {
             "a4|letter|column"));
     cmd->add_flag(
         "--caption", a->caption,
-        "put the figure's caption (as in its ID.json) under it, wrapped to its width, in the PNG, SVG "
-        "and PDF");
+        "put the figure's caption (as in its ID.json; --lesson: the step's title and text) under it, wrapped "
+        "to its width, in the PNG, SVG and PDF");
     add_render_flags(*cmd, a->flags);
     // After the figure flags: --lesson excludes them (its setup stands for them).
     CLI::Option* lesson = add_lesson_option(
         *cmd, a->lesson,
         "draw guided lesson step N as lesson-N.png (.svg, .pdf by --format) with lesson-N.json (the step's "
-        "title, text and link): a frame of animate --lesson N, under the step's title");
+        "title, text, link and panel): a frame of animate --lesson N (the step's lower panel, frame and "
+        "compare "
+        "mode, as the app shows it), under the step's title; --page and --caption (the step's title and "
+        "text) as for figures");
     lesson->excludes("--figure")->excludes("--spec")->excludes("--list")->excludes("--data");
     return {
         cmd, [a, cmd] {
@@ -240,13 +243,10 @@ Command add_render_command(CLI::App& root) {
             if (a->lesson > 0) {
                 if (a->out.empty())
                     throw UsageError("--out is required: the directory to write the picture into");
-                // Not silently dropped: the lesson's still is a frame of its animation, laid out at --size.
-                if (!a->page.empty() || a->caption)
-                    throw UsageError(std::string(a->caption ? "--caption" : "--page") +
-                                     ": not with --lesson (its still is an animation frame at --size, with "
-                                     "the step's text in lesson-N.json); allowed with --lesson: --out, "
-                                     "--size, --scale, --format");
-                render_lesson(a->lesson, a->out, parse_size(a->size), a->output);
+                bool page_ok = true; // checked by --page's validator
+                render_lesson(a->lesson, a->out, parse_size(a->size), a->output,
+                              a->page.empty() ? app::PaperPage::none : app::paper_page(a->page, page_ok),
+                              a->caption);
                 return;
             }
             const bool from_spec = cmd->get_option("--spec")->count() > 0;

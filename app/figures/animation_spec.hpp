@@ -3,6 +3,7 @@
 // (ranges, frame count) and renders it.
 #pragma once
 
+#include "fv/lower_panel.hpp"
 #include "fv/params.hpp"
 #include "fv/setup.hpp"
 #include "fv/steady_state.hpp"
@@ -32,6 +33,7 @@ struct AnimationSpec {
     float scale = 1;               // pixels per logical unit
     AnimationView view = AnimationView::dashboard;
     FrameChoice frame = FrameChoice::body; // what stands still in the top view: the body or the ground
+    LowerPanel panel = LowerPanel::curves; // the dashboard's lower-right panel (the app's, a lesson step's)
     AnimationFormat format = AnimationFormat::gif;
     SteadyOptions steady; // the solver behind the caption's r_x and the loop's starting point (its start: the
                           // history that picks between coexisting steady states)

@@ -121,7 +121,7 @@ std::optional<AnimationRequest> draw_export_dialog(ExportDialog& d, double speed
         set_ext(".gif");
     if (ImGui::RadioButton("MP4, H.264 (smaller; set it to loop in the slide)", f == AnimationFormat::mp4))
         set_ext(".mp4");
-    ImGui::RadioButton("dashboard (top view, force, r_x)", &d.view, 0);
+    ImGui::RadioButton("dashboard (top view, force, lower panel)", &d.view, 0);
     ImGui::SameLine();
     ImGui::RadioButton("top view alone", &d.view, 1);
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);

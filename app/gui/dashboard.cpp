@@ -15,25 +15,9 @@ DashboardPanels dashboard_panels(const LiveSim& sim, const ViewState& view,
     }
     panels.top_view = top_view_panel(sim, view, b ? "A" : nullptr);
     panels.force = force_panel_live(sim, curves, view.rewind, on_plots);
-    switch (lower) {
-    case LowerPanel::map:
-        panels.lower = map_panel_live(sim, curves, busy);
-        break;
-    case LowerPanel::loop:
-        panels.lower = loop_panel_live(sim, view.rewind);
-        break;
-    case LowerPanel::why:
-        panels.lower = mechanism_panel_live(sim, mechanism ? *mechanism : once, view.rewind);
-        break;
-    case LowerPanel::curves: {
-        RatioOverlay o = overlay;
-        o.b = on_plots;
-        panels.lower = ratio_panel_live(curves, busy, o);
-        break;
-    }
-    }
-    // The panels that show A alone say so beside B.
-    if (b && lower != LowerPanel::curves) panels.lower.title = "A: " + panels.lower.title;
+    RatioOverlay o = overlay;
+    o.b = on_plots;
+    panels.lower = lower_panel_live(lower, sim, curves, busy, o, mechanism ? *mechanism : once, view.rewind);
     return panels;
 }
 

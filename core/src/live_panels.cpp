@@ -710,4 +710,25 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
     return panel;
 }
 
+PanelData lower_panel_live(LowerPanel which, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                           bool busy, const RatioOverlay& overlay, MechanismBase& mechanism, double rewind) {
+    PanelData p;
+    switch (which) {
+    case LowerPanel::map:
+        p = map_panel_live(sim, curves, busy);
+        break;
+    case LowerPanel::loop:
+        p = loop_panel_live(sim, rewind);
+        break;
+    case LowerPanel::why:
+        p = mechanism_panel_live(sim, mechanism, rewind);
+        break;
+    case LowerPanel::curves:
+        return ratio_panel_live(curves, busy, overlay);
+    }
+    // The panels that show A alone say so beside B.
+    if (overlay.b.sim) p.title = "A: " + p.title;
+    return p;
+}
+
 } // namespace fv

@@ -93,7 +93,7 @@ bool RatioJob::step() {
 }
 
 RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated) {
-    RatioJob job(req, false);
+    RatioJob job(req, true);
     while (job.step())
         if (outdated && outdated()) break;
     return std::move(job.result());

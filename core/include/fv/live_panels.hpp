@@ -7,6 +7,7 @@
 
 #include "fv/figure_data.hpp"
 #include "fv/live_sim.hpp"
+#include "fv/lower_panel.hpp"
 #include "fv/measurements.hpp"
 #include "fv/pinned_curve.hpp"
 #include "fv/ratio_curves.hpp"
@@ -107,5 +108,13 @@ class MechanismBase {
 // The mechanism (the paper's Fig. 4) live: the velocity and the friction on the body at the shown instant
 // over the base.
 PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double rewind = 0);
+
+// The lower-right panel `which` at the view's moment: the one switch behind the app's dashboard and the
+// animation export (`animate`, `render --lesson`), so that both show a lesson step's panel alike. With
+// overlay.b (compare mode) the curves show B's curve and point beside A's; the map, loop and why panels are
+// A's and say so ("A: ..." in their title).
+PanelData lower_panel_live(LowerPanel which, const LiveSim& sim, const std::optional<RatioCurves>& curves,
+                           bool busy, const RatioOverlay& overlay, MechanismBase& mechanism,
+                           double rewind = 0);
 
 } // namespace fv

@@ -102,8 +102,9 @@ int state_of_motion(const std::vector<SteadyState>& states, double mean_fx, doub
 // mean differs from the solver's r_x by a few 1e-3 (docs/app.md).
 inline constexpr double kMotionStateTolerance = 1e-2;
 
-// The curves and the steady state at req.params (not the map), on the calling thread. `outdated` (may be
-// empty) is asked between the steps; when it says true the rest is skipped and the result is incomplete.
+// The curves and the steady state at req.params (and the map when req.map asks for it: the animation of a
+// lesson step with the map panel), on the calling thread. `outdated` (may be empty) is asked between the
+// steps; when it says true the rest is skipped and the result is incomplete.
 RatioCurves compute_ratio_curves(const RatioRequest& req, const std::function<bool()>& outdated = {});
 
 } // namespace fv
