@@ -17,19 +17,59 @@ std::string link_base_error(const std::string& base) {
     return "";
 }
 
+namespace {
+
+// What a link with lesson=N sets up before its own keys (the step's setup and compare mode, lessons.json);
+// the link of a state in a lesson says what differs from this.
+void set_up_lesson(int step, SessionState& s) {
+    const LessonSetup& u = lesson_steps()[static_cast<std::size_t>(step - 1)].setup;
+    s.model = u.model, s.params = u.params, s.start = u.start;
+    s.panel = u.panel, s.speed = u.speed, s.view.frame = u.frame;
+    s.lesson = step;
+    s.compare = u.b.has_value(); // compare mode as the step has it
+    if (u.b) s.b = *u.b;
+}
+
+} // namespace
+
 std::string session_link(const SessionState& s) {
-    const SessionState defaults;
+    // What the link's reader starts from: the app's defaults, or a lesson step's setup over them.
+    SessionState base;
+    if (s.lesson != 0) set_up_lesson(s.lesson, base);
     ShareLink view;
-    if (s.panel != defaults.panel) view.panel = s.panel;
-    if (s.presentation != defaults.presentation) view.presentation = s.presentation;
-    if (s.speed != defaults.speed) view.speed = s.speed;
+    // Each field that differs from the base (a default setup's link stays the five keys).
+    const auto differs = [](auto& slot, const auto& value, const auto& base_value) {
+        if (value != base_value) slot = value;
+    };
+    differs(view.amplitude_um, s.amplitude_um, base.amplitude_um);
+    differs(view.frequency_khz, s.frequency_khz, base.frequency_khz);
+    differs(view.panel, s.panel, base.panel);
+    differs(view.presentation, s.presentation, base.presentation);
+    differs(view.speed, s.speed, base.speed);
+    differs(view.playing, s.playing, base.playing);
+    differs(view.trail_periods, s.view.trail_periods, base.view.trail_periods);
+    differs(view.zoom, s.view.zoom, base.view.zoom);
+    if (s.view.pan != base.view.pan) view.pan = std::array<double, 2>{s.view.pan.x(), s.view.pan.y()};
+    differs(view.follow, s.view.follow, base.view.follow);
     std::vector<PinSource> pins;
     for (const PinnedCurve& p : s.pins)
         if (p.source) pins.push_back(*p.source);
     if (!pins.empty()) view.pins = std::move(pins);
     if (s.lesson != 0) view.lesson = s.lesson;
-    return share_link(s.model, s.params, s.start, s.view.frame) +
-           (s.compare ? compare_link_keys(s.b.model, s.b.params, s.b.start) : "") + view_link_keys(view);
+    // share_link writes the start and the frame only when they are not the defaults (rest, body); a lesson
+    // step may have the other one, and compare mode's B starts from A's start (compare_default) or the
+    // step's B: say the default where the reader would otherwise take another.
+    std::string link = share_link(s.model, s.params, s.start, s.view.frame);
+    if (s.start != base.start && s.start == Start::rest) link += "&start=rest";
+    if (s.view.frame != base.view.frame && s.view.frame == FrameChoice::body) link += "&frame=body";
+    if (s.compare) {
+        link += compare_link_keys(s.b.model, s.b.params, s.b.start);
+        const Start b_start = base.compare ? base.b.start : s.start;
+        if (s.b.start != b_start && s.b.start == Start::rest) link += "&b.start=rest";
+    } else if (base.compare) {
+        link += "&compare=0"; // the step's compare mode turned off
+    }
+    return link + view_link_keys(view);
 }
 
 std::string share_address(const ShareAddress& where, const SessionState& s) {
@@ -47,25 +87,29 @@ ShareLink parse_link(std::string_view text) {
 }
 
 void apply_link(const ShareLink& link, Session& s) {
-    if (link.lesson) {
-        const LessonSetup& u = lesson_steps()[static_cast<std::size_t>(*link.lesson - 1)].setup;
-        s.model = u.model, s.params = u.params, s.start = u.start;
-        s.panel = u.panel, s.speed = u.speed, s.view.frame = u.frame;
-        s.lesson = *link.lesson;
-        s.compare = u.b.has_value(); // compare mode as the step has it
-        if (u.b) s.b = *u.b;
-    }
+    if (link.lesson) set_up_lesson(*link.lesson, s);
     apply_share_link(link, s.model, s.params, s.start, s.view.frame);
-    // Any of B's keys: compare mode, B's keys over the step's B, or over A (as the link left it) at the other
-    // angle.
-    if (link.b.any()) {
+    // compare=0: compare mode off (a lesson step's). Any of B's keys (or compare=1): compare mode, B's keys
+    // over the step's B, or over A (as the link left it) at the other angle.
+    if (link.compare == false) s.compare = false;
+    if (link.b.any() || link.compare == true) {
         if (!s.compare) s.b = compare_default(s.a());
         s.compare = true;
         apply_share_link(link.b, s.b.model, s.b.params, s.b.start);
     }
-    if (link.panel) s.panel = *link.panel;
-    if (link.presentation) s.presentation = *link.presentation;
-    if (link.speed) s.speed = *link.speed;
+    const auto given = [](auto& field, const auto& slot) {
+        if (slot) field = *slot;
+    };
+    given(s.amplitude_um, link.amplitude_um);
+    given(s.frequency_khz, link.frequency_khz);
+    given(s.panel, link.panel);
+    given(s.presentation, link.presentation);
+    given(s.speed, link.speed);
+    given(s.playing, link.playing);
+    given(s.view.trail_periods, link.trail_periods);
+    given(s.view.zoom, link.zoom);
+    if (link.pan) s.view.pan = Vec2((*link.pan)[0], (*link.pan)[1]);
+    given(s.view.follow, link.follow);
     if (link.pins) {
         s.pins.clear();
         for (const PinSource& p : *link.pins) s.pins.push_back(compute_pin(p, ratio_zeta_max(nullptr)));
