@@ -72,7 +72,7 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
                 if (value) {
                     if (*flag)
                         throw UsageError(std::string("--") + key + " and --link's " + key +
-                                         "= both set it; give one of them");
+                                         "= both set the " + key + "; give one of them");
                     given += (given.empty() ? "--link " : " ") + (key + ("=" + shortest_decimal(*value)));
                 }
             app::apply_link(link, s);
