@@ -34,23 +34,29 @@ void set_up_lesson(int step, SessionState& s) {
 
 std::string session_link(const SessionState& s) {
     // What the link's reader starts from: the app's defaults, or a lesson step's setup over them.
-    SessionState base;
+    const SessionState defaults;
+    SessionState base = defaults;
     if (s.lesson != 0) set_up_lesson(s.lesson, base);
     ShareLink view;
-    // Each field that differs from the base (a default setup's link stays the five keys).
-    const auto differs = [](auto& slot, const auto& value, const auto& base_value) {
-        if (value != base_value) slot = value;
+    // A field is written where it differs from the app's default (so a default setup's link stays the five
+    // keys, and a lesson's link states its view whatever lessons.json says another day) or from what the
+    // reader starts from (a lesson step's value, where the state has the default).
+    const auto written = [&](const auto& get) { return get(s) != get(defaults) || get(s) != get(base); };
+    const auto differs = [&](auto& slot, const auto& get) {
+        if (written(get)) slot = get(s);
     };
-    differs(view.amplitude_um, s.amplitude_um, base.amplitude_um);
-    differs(view.frequency_khz, s.frequency_khz, base.frequency_khz);
-    differs(view.panel, s.panel, base.panel);
-    differs(view.presentation, s.presentation, base.presentation);
-    differs(view.speed, s.speed, base.speed);
-    differs(view.playing, s.playing, base.playing);
-    differs(view.trail_periods, s.view.trail_periods, base.view.trail_periods);
-    differs(view.zoom, s.view.zoom, base.view.zoom);
-    if (s.view.pan != base.view.pan) view.pan = std::array<double, 2>{s.view.pan.x(), s.view.pan.y()};
-    differs(view.follow, s.view.follow, base.view.follow);
+    using S = const SessionState&;
+    differs(view.amplitude_um, [](S t) { return t.amplitude_um; });
+    differs(view.frequency_khz, [](S t) { return t.frequency_khz; });
+    differs(view.panel, [](S t) { return t.panel; });
+    differs(view.presentation, [](S t) { return t.presentation; });
+    differs(view.speed, [](S t) { return t.speed; });
+    differs(view.playing, [](S t) { return t.playing; });
+    differs(view.trail_periods, [](S t) { return t.view.trail_periods; });
+    differs(view.zoom, [](S t) { return t.view.zoom; });
+    differs(view.follow, [](S t) { return t.view.follow; });
+    if (written([](S t) { return std::array<double, 2>{t.view.pan.x(), t.view.pan.y()}; }))
+        view.pan = std::array<double, 2>{s.view.pan.x(), s.view.pan.y()};
     std::vector<PinSource> pins;
     for (const PinnedCurve& p : s.pins)
         if (p.source) pins.push_back(*p.source);
