@@ -15,8 +15,8 @@
 //   &amplitude=1            the vibration amplitude A in um (kAmplitudeRange)
 //   &frequency=40           its frequency f in kHz (kFrequencyRange)
 //
-// The app's view may follow (each written only when it is not the app's default, so the link of a default
-// view is the five keys above, as before these were added):
+// The app's view may follow (each written only when it is not the app's default or, in a lesson, the step's,
+// so the link of a default view is the five keys above, as before these were added):
 //
 //   &panel=map              the lower-right panel: curves | map | loop | why
 //   &present=1              presentation mode (1 | 0)
@@ -24,7 +24,7 @@
 //   &play=0                 the animation paused (1 | 0: running, the default)
 //   &trail=3                the trail behind P and T in vibration periods (kTrailRange)
 //   &zoom=2                 the top view's zoom factor (kZoomRange)
-//   &pan=0.5,-1             the top view's pan X,Y in the model's length unit (each in kPanRange)
+//   &pan=0.5,-1             the top view's pan X,Y in units of x_v, its axes' (each in kPanRange)
 //   &follow=0               the camera stays where it was put rather than following the body (1 | 0)
 //   &pins=dahl:60:2:1,rigid:30,dahl:90:0.1:5:sliding
 //                           pinned r_x(zeta) curves by what they were computed at (at most kMaxPins, ','
