@@ -161,6 +161,21 @@ TEST_CASE("gui --session/--link: a bad file or link exits 2 with one line naming
              Case{"--link '?zeta=0.3&zeta=0.4'", "--link: column 11: 'zeta' is given twice"},
              Case{"--link ''", "--link: column 1: no parameters"},
              Case{"--link zeta=1 --theta 20", "excludes"},
+             // The vibration: refused as --amplitude and --frequency refuse it, and not from two places.
+             Case{"--link '?zeta=0.3&amplitude=0'",
+                  "--link: column 21: amplitude = 0 is out of range; allowed: amplitude in (0, 1e+06]"},
+             Case{"--link '?zeta=0.3&amplitude=2e6'",
+                  "--link: column 21: amplitude = 2e6 is out of range; allowed: amplitude in (0, 1e+06]"},
+             Case{"--link '?zeta=0.3&frequency=-40'",
+                  "--link: column 21: frequency = -40 is out of range; allowed: frequency in (0, 1e+06]"},
+             Case{"--link '?zeta=0.3&frequency=fast'",
+                  "--link: column 21: frequency = 'fast' is not a decimal number; allowed: frequency in"},
+             Case{"--amplitude 2 --link '?zeta=0.3&amplitude=1'",
+                  "--amplitude and --link's amplitude= both set the amplitude; give one of them"},
+             Case{"--link '?zeta=0.3&rdisp=1e-9&amplitude=1000'",
+                  "--link amplitude=1000: rdisp = 1e-09 with amplitude 1000 um gives z_ss"},
+             Case{"--link '?compare=yes'", "--link: column 10: compare = 'yes'; allowed: 1, 0"},
+             Case{"--link '?compare=0&b.theta=0'", "--link: column 2: compare=0 turns compare mode off, yet"},
              Case{"--script bad-save.txt", "bad-save.txt:1: save-session "},
          }) {
         const fv::test::Run r = run_gui("--headless --frames 3 --screenshot never.png " + c.args);
@@ -170,4 +185,50 @@ TEST_CASE("gui --session/--link: a bad file or link exits 2 with one line naming
         CHECK(r.err.find(c.says) != std::string::npos);
         CHECK_FALSE(exists(in_scratch("never.png")));
     }
+}
+
+TEST_CASE("gui --link: the units and the view through a link, as the app's state and as flags show them",
+          "[gui][link]") {
+    const std::string frames = "--headless --frames 4 --screenshot ";
+    // The app opened on a link with every new key saves a session that holds them (the app's own state).
+    write("save.txt", "2 save-session linked.json\n");
+    REQUIRE(run_gui(frames +
+                    "all.png --script save.txt --link '?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl&amplitude=1"
+                    "&frequency=40&play=0&trail=3&zoom=2&pan=0.5,-1&follow=0'")
+                .code == 0);
+    const std::string saved = read(in_scratch("linked.json"));
+    INFO(saved);
+    for (const char* kv : {"\"amplitude_um\": 1.0", "\"frequency_khz\": 40.0", "\"playing\": false",
+                           "\"zoom\": 2.0", "\"pan\": [0.5, -1.0]", "\"follow\": false",
+                           "\"trail_periods\": 3.0", "\"zeta\": 0.3", "\"theta\": 60.0"})
+        CHECK(saved.find(kv) != std::string::npos);
+    // The units from the link show as the flags' do (the panel's A, f, v_v, v_b, z_ss), and not as the
+    // defaults.
+    REQUIRE(
+        run_gui(frames + "units-link.png --link '?zeta=0.3&theta=60&rdisp=5&i=1&amplitude=1&frequency=40'")
+            .code == 0);
+    REQUIRE(run_gui(frames + "units-flags.png --link '?zeta=0.3&theta=60&rdisp=5&i=1' --amplitude 1 "
+                             "--frequency 40")
+                .code == 0);
+    REQUIRE(run_gui(frames + "units-default.png --link '?zeta=0.3&theta=60&rdisp=5&i=1'").code == 0);
+    CHECK(same_pixels(in_scratch("units-link.png"), in_scratch("units-flags.png")));
+    CHECK_FALSE(same_pixels(in_scratch("units-link.png"), in_scratch("units-default.png")));
+    // play=0: paused, so more frames show the same picture; running (the default), they do not.
+    for (const char* n : {"3", "9"}) {
+        REQUIRE(run_gui(std::string("--headless --frames ") + n + " --screenshot paused-" + n +
+                        ".png --link '?zeta=0.3&play=0'")
+                    .code == 0);
+        REQUIRE(run_gui(std::string("--headless --frames ") + n + " --screenshot running-" + n +
+                        ".png --link '?zeta=0.3'")
+                    .code == 0);
+    }
+    CHECK(same_pixels(in_scratch("paused-3.png"), in_scratch("paused-9.png")));
+    CHECK_FALSE(same_pixels(in_scratch("running-3.png"), in_scratch("running-9.png")));
+    // A view value out of its range: the link still opens, the value ignored with one notice naming the key
+    // and its range (as speed=100 is).
+    const fv::test::Run r = run_gui(frames + "zoom.png --link '?zeta=0.3&zoom=100'");
+    INFO(r.err);
+    CHECK(r.code == 0);
+    CHECK(r.err == "frictionviz: --link: column 16: zoom = 100 is out of range; allowed: zoom in [0.05, 20]; "
+                   "ignored\n");
 }

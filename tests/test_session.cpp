@@ -8,11 +8,14 @@
 #include "gui/session.hpp"
 #include "gui/session_link.hpp"
 
+#include "fv/live_panels.hpp" // ratio_zeta_max
 #include "fv/param_ranges.hpp"
+#include "fv/pinned_curve.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <functional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -584,6 +587,103 @@ TEST_CASE(
     for (const char* bad :
          {"example.org/fv/", "ftp://x/", "https://x/?a=1", "https://x/#top", "https://x/a b", "https://x/\n"})
         CHECK_FALSE(link_base_error(bad).empty());
+}
+
+TEST_CASE("share link of a session: every field but the data file goes through a link and back, in and out "
+          "of a lesson, and a default field stays out of the link",
+          "[gui][session][link]") {
+    // A session's fields are what its file holds: two sessions are the same when their files are.
+    const auto same_file = [](Session a, Session b) {
+        a.data_file.clear();
+        b.data_file.clear();
+        return session_json(a) == session_json(b);
+    };
+    const auto through_link = [](const Session& s) {
+        Session back;
+        const ShareLink l = parse_link(session_link(s));
+        CHECK(l.notices.empty());
+        apply_link(l, back);
+        return back;
+    };
+    // Every field away from its default (unusual(): units, speed, paused, panel, zoom, pan, follow, trail,
+    // ground frame, presentation, the sliding start, lesson 4), pins as the app computes them (the link
+    // carries their sources and the reader computes them again), compare mode with a B that starts from rest
+    // while A starts sliding (compare_default would give B A's start).
+    Session s = unusual();
+    const double zmax = ratio_zeta_max(nullptr);
+    s.pins = {compute_pin(PinSource{Model::dahl, kPi / 3, 2, 0, Start::sliding}, zmax),
+              compute_pin(PinSource{Model::rigid, kPi / 2, 1, 1, Start::rest}, zmax)};
+    s.compare = true;
+    s.b = Setup{Model::dahl, Params{0.2, 10 * kPi / 180, 3, 2}, Start::rest};
+    const int steps = static_cast<int>(lesson_steps().size());
+    for (int lesson = 0; lesson <= steps; ++lesson)
+        for (const bool compare : {true, false}) {
+            s.lesson = lesson;
+            s.compare = compare;
+            INFO("lesson " << lesson << ", compare " << compare << ": " << session_link(s));
+            const Session back = through_link(s);
+            CHECK(same_file(s, back));
+            check_same(back, [&] {
+                Session t = s;
+                t.data_file.clear();
+                return t;
+            }()); // field by field, to say which one
+            // From a session file, the same: file -> session -> link -> session.
+            CHECK(same_file(s, through_link(parse_session(session_json(s), "s.json"))));
+            // In a lesson, a field left at the app's default where the step has another value (why panel,
+            // ground frame, compare mode on): the link says the default, so the step's value does not
+            // come back in its place.
+            Session plain;
+            plain.lesson = lesson;
+            plain.compare = compare;
+            INFO("plain: " << session_link(plain));
+            CHECK(same_file(plain, through_link(plain)));
+        }
+    // A sliding A with a B from rest outside a lesson, and the other way round.
+    Session ab;
+    ab.start = Start::sliding;
+    ab.compare = true;
+    ab.b.start = Start::rest;
+    CHECK(session_link(ab).find("&b.start=rest") != std::string::npos);
+    CHECK(same_file(ab, through_link(ab)));
+    ab.start = Start::rest;
+    ab.b.start = Start::sliding;
+    CHECK(same_file(ab, through_link(ab)));
+
+    // The defaults stay out of the link; each field changed alone adds its own key and no other.
+    const Session d;
+    const std::string five = share_link(d.model, d.params, d.start);
+    CHECK(session_link(d) == five);
+    struct One {
+        std::function<void(Session&)> set;
+        std::string keys;
+    };
+    for (const One& o : {
+             One{[](Session& t) { t.amplitude_um = 1; }, "&amplitude=1"},
+             One{[](Session& t) { t.frequency_khz = 40; }, "&frequency=40"},
+             One{[](Session& t) { t.playing = false; }, "&play=0"},
+             One{[](Session& t) { t.view.trail_periods = 3; }, "&trail=3"},
+             One{[](Session& t) { t.view.zoom = 2; }, "&zoom=2"},
+             One{[](Session& t) { t.view.pan = Vec2(0.5, -1); }, "&pan=0.5,-1"},
+             One{[](Session& t) { t.view.pan = Vec2(0, 0.25); }, "&pan=0,0.25"},
+             One{[](Session& t) { t.view.follow = false; }, "&follow=0"},
+             One{[](Session& t) { t.speed = 1.5; }, "&speed=1.5"},
+             One{[](Session& t) { t.presentation = true; }, "&present=1"},
+             One{[](Session& t) { t.panel = LowerPanel::why; }, "&panel=why"},
+             One{[](Session& t) { t.view.frame = FrameChoice::ground; }, "&frame=ground"},
+             One{[](Session& t) { t.start = Start::sliding; }, "&start=sliding"},
+         }) {
+        Session t;
+        o.set(t);
+        INFO(o.keys);
+        CHECK(session_link(t) == five + o.keys);
+        CHECK(same_file(t, through_link(t)));
+    }
+    // The link of the unusual session is still short enough to paste into a chat or a slide (pins are
+    // the longest part).
+    s.lesson = 0;
+    INFO(session_link(s));
+    CHECK(session_link(s).size() < 300);
 }
 
 TEST_CASE("a link opens a lesson step: its setup, the link's own keys over it, the step in sessions",

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -68,7 +69,8 @@ TEST_CASE("share link: unknown key, bad number, out of range, duplicate key and 
     for (const Case& c : {
              Case{"?zeta=0.3&thetta=60",
                   "column 11: unknown key 'thetta'; allowed: zeta, theta, rdisp, i, model, start, frame, "
-                  "panel, present, speed, pins"},
+                  "amplitude, frequency, panel, present, speed, play, trail, zoom, pan, follow, pins, "
+                  "lesson, compare"},
              Case{"?zeta=abc", "column 7: zeta = 'abc' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=0x10", "column 7: zeta = '0x10' is not a decimal number; allowed: zeta in [0, 100]"},
              Case{"?zeta=inf", "column 7: zeta = 'inf' is not a decimal number; allowed: zeta in [0, 100]"},
@@ -428,4 +430,143 @@ TEST_CASE("share link: lesson=N within the reader's steps, else ignored with a n
         CHECK(r.notices[0] == c.notice);
     }
     CHECK(refusal("?lesson=2&lesson=3") == "column 11: 'lesson' is given twice; each key at most once");
+}
+
+TEST_CASE(
+    "share link: the vibration (amplitude, frequency) and the rest of the view (play, trail, zoom, pan, "
+    "follow) read back as written",
+    "[link]") {
+    ShareLink v;
+    v.amplitude_um = 1;
+    v.frequency_khz = 40;
+    v.playing = false;
+    v.trail_periods = 3;
+    v.zoom = 2;
+    v.pan = std::array<double, 2>{0.5, -1};
+    v.follow = false;
+    // The order of share_link.hpp, each key once; short enough to paste.
+    CHECK(view_link_keys(v) == "&amplitude=1&frequency=40&play=0&trail=3&zoom=2&pan=0.5,-1&follow=0");
+    const ShareLink l = parse_share_link("?zeta=0.3" + view_link_keys(v));
+    CHECK(l.notices.empty());
+    CHECK(l.zeta == 0.3);
+    CHECK(l.amplitude_um == 1.0);
+    CHECK(l.frequency_khz == 40.0);
+    CHECK(l.playing == false);
+    CHECK(l.trail_periods == 3.0);
+    CHECK(l.zoom == 2.0);
+    REQUIRE(l.pan);
+    CHECK((*l.pan)[0] == 0.5);
+    CHECK((*l.pan)[1] == -1.0);
+    CHECK(l.follow == false);
+    // The other value of each flag, and the ends of each range (the shared table's), as a user types them.
+    const ShareLink on = parse_share_link("?play=1&follow=1");
+    CHECK(on.playing == true);
+    CHECK(on.follow == true);
+    const ShareLink ends = parse_share_link("?amplitude=1e6&frequency=1e-3&trail=0.1&zoom=20&pan=-1e6,1e6");
+    CHECK(ends.notices.empty());
+    CHECK(ends.amplitude_um == kAmplitudeRange.hi);
+    CHECK(ends.trail_periods == kTrailRange.lo);
+    CHECK(ends.zoom == kZoomRange.hi);
+    CHECK((*ends.pan)[0] == kPanRange.lo);
+    CHECK((*ends.pan)[1] == kPanRange.hi);
+    // Random values inside the ranges come back bit for bit.
+    std::mt19937_64 rng(2323);
+    std::uniform_real_distribution<double> loga(-3, 6), trail(kTrailRange.lo, kTrailRange.hi),
+        zoom(kZoomRange.lo, kZoomRange.hi), pan(-50, 50);
+    for (int k = 0; k < 2000; ++k) {
+        ShareLink w;
+        w.amplitude_um = std::pow(10.0, loga(rng));
+        w.frequency_khz = std::pow(10.0, loga(rng));
+        w.trail_periods = trail(rng);
+        w.zoom = zoom(rng);
+        w.pan = std::array<double, 2>{pan(rng), pan(rng)};
+        w.playing = k % 2 == 0;
+        w.follow = k % 3 == 0;
+        const std::string keys = view_link_keys(w);
+        INFO(keys);
+        const ShareLink r = parse_share_link("?model=dahl" + keys);
+        REQUIRE(r.notices.empty());
+        REQUIRE(r.amplitude_um == w.amplitude_um);
+        REQUIRE(r.frequency_khz == w.frequency_khz);
+        REQUIRE(r.trail_periods == w.trail_periods);
+        REQUIRE(r.zoom == w.zoom);
+        REQUIRE(r.pan == w.pan);
+        REQUIRE(r.playing == w.playing);
+        REQUIRE(r.follow == w.follow);
+    }
+    // Old links have none of them.
+    const ShareLink old = parse_share_link("?zeta=0.3&theta=60&rdisp=5&i=1&model=dahl");
+    CHECK_FALSE(old.amplitude_um);
+    CHECK_FALSE(old.frequency_khz);
+    CHECK_FALSE(old.playing);
+    CHECK_FALSE(old.trail_periods);
+    CHECK_FALSE(old.zoom);
+    CHECK_FALSE(old.pan);
+    CHECK_FALSE(old.follow);
+}
+
+TEST_CASE("share link: a bad amplitude or frequency is refused naming the key and its range (as --amplitude "
+          "and --frequency), a bad view value is ignored with a notice naming them",
+          "[link]") {
+    // The vibration is the setup's (what v_b and z_ss are, how measured data convert): an error.
+    const std::string a = describe(kAmplitudeRange), f = describe(kFrequencyRange);
+    struct Refused {
+        std::string text, message;
+    };
+    for (const Refused& c : {
+             Refused{"?zeta=0.3&amplitude=0",
+                     "column 21: amplitude = 0 is out of range; allowed: amplitude in " + a},
+             Refused{"?zeta=0.3&amplitude=-1",
+                     "column 21: amplitude = -1 is out of range; allowed: amplitude in " + a},
+             Refused{"?zeta=0.3&amplitude=2e6",
+                     "column 21: amplitude = 2e6 is out of range; allowed: amplitude in " + a},
+             Refused{"?zeta=0.3&frequency=0",
+                     "column 21: frequency = 0 is out of range; allowed: frequency in " + f},
+             Refused{"?zeta=0.3&frequency=fast",
+                     "column 21: frequency = 'fast' is not a decimal number; allowed: frequency in " + f},
+             Refused{"?amplitude=1&amplitude=2",
+                     "column 14: 'amplitude' is given twice; each key at most once"},
+             Refused{"?b.amplitude=1", "column 2: unknown key 'b.amplitude'; allowed:"},
+             Refused{"?zoom=2&zoom=3", "column 9: 'zoom' is given twice; each key at most once"},
+         }) {
+        INFO(c.text);
+        const std::string why = refusal(c.text);
+        CHECK(why.rfind(c.message, 0) == 0);
+        CHECK(why.find('\n') == std::string::npos);
+    }
+    // The view's values: how the setup is shown, so the link still opens (as speed=100 does).
+    struct Noted {
+        std::string text, notice;
+    };
+    for (const Noted& c : {
+             Noted{"?zeta=0.4&play=2", "column 16: play = '2'; allowed: 1, 0; ignored"},
+             Noted{"?zeta=0.4&follow=yes", "column 18: follow = 'yes'; allowed: 1, 0; ignored"},
+             Noted{"?zeta=0.4&trail=20", "column 17: trail = 20 is out of range; allowed: trail in " +
+                                             describe(kTrailRange) + "; ignored"},
+             Noted{"?zeta=0.4&zoom=0", "column 16: zoom = 0 is out of range; allowed: zoom in " +
+                                           describe(kZoomRange) + "; ignored"},
+             Noted{"?zeta=0.4&zoom=big",
+                   "column 16: zoom = 'big' is not a decimal number; allowed: zoom in " +
+                       describe(kZoomRange) + "; ignored"},
+             Noted{"?zeta=0.4&pan=1",
+                   "column 15: pan = '1'; expected X,Y (two numbers joined by ','); ignored"},
+             Noted{"?zeta=0.4&pan=1,2,3",
+                   "column 15: pan = '1,2,3'; expected X,Y (two numbers joined by ','); ignored"},
+             Noted{"?zeta=0.4&pan=0,2e6", "column 15: pan y = 2e6 is out of range; allowed: pan y in " +
+                                              describe(kPanRange) + "; ignored"},
+             Noted{"?zeta=0.4&pan=x,0", "column 15: pan x = 'x' is not a decimal number; allowed: pan x in " +
+                                            describe(kPanRange) + "; ignored"},
+         }) {
+        INFO(c.text);
+        ShareLink l;
+        REQUIRE_NOTHROW(l = parse_share_link(c.text));
+        CHECK(l.zeta == 0.4);
+        REQUIRE(l.notices.size() == 1);
+        CHECK(l.notices[0] == c.notice);
+        CHECK_FALSE(l.playing);
+        CHECK_FALSE(l.follow);
+        CHECK_FALSE(l.trail_periods);
+        CHECK_FALSE(l.zoom);
+        CHECK_FALSE(l.pan);
+    }
 }

@@ -2,11 +2,12 @@
 // canvas, WebGL 2). The page is web/index.html.
 //
 // The page's address is a share link (fv/share_link.hpp, what `frictionviz gui --link` reads): its query sets
-// the model, parameters, start and view (panel, presentation, speed, pins, lesson step) at start, and as the
-// state changes the address follows (history.replaceState), so a copied address reopens the same setup; Copy
-// link copies it. A link that does not read shows the defaults and says why on the page, never a blank page;
-// a view value that does not read is ignored with a notice. Every frame the page's layout goes to
-// Module.fvLayout (and the body's data-fv-layout attribute) for the tests (tests/web/page_fits.sh).
+// the model, parameters, start, vibration (amplitude, frequency) and view (panel, presentation, speed,
+// playing, trail, zoom, pan, follow, pins, lesson step) at start, and as the state changes the address
+// follows (history.replaceState), so a copied address reopens the same setup; Copy link copies it. A link
+// that does not read shows the defaults and says why on the page, never a blank page; a view value that does
+// not read is ignored with a notice. Every frame the page's layout goes to Module.fvLayout (and the body's
+// data-fv-layout attribute) for the tests (tests/web/page_fits.sh).
 #include "gui/gui_app.hpp"
 #include "gui/session_link.hpp"
 
@@ -93,6 +94,17 @@ std::string layout_json(const fv::app::ShownLayout& l) {
            (l.panels.top_view_b.width() > 0 ? ",\"top_view_b\":" + rect_json(l.panels.top_view_b) : "") + "}";
 }
 
+// Which of the vibration's values a link left at the page's default, for a message about the physical view:
+// " (the app's default amplitude and frequency)", " (the app's default frequency)", ..., or "".
+std::string default_vibration(const fv::ShareLink& link) {
+    if (link.amplitude_um && link.frequency_khz) return "";
+    return std::string(" (the app's default ") +
+           (link.amplitude_um    ? "frequency"
+            : link.frequency_khz ? "amplitude"
+                                 : "amplitude and frequency") +
+           ")";
+}
+
 } // namespace
 
 int main() {
@@ -113,17 +125,18 @@ int main() {
                 for (const std::string& n : link.notices)
                     o.start_notice += (o.start_notice.empty() ? "link: " : "; ") + n;
                 if (!o.start_notice.empty()) fv_show_page_message(o.start_notice.c_str(), 0);
-                // As gui --link does: the physical view (with the page's default A and f) must be finite.
+                // As gui --link does: the physical view (with the link's A and f, else the page's default)
+                // must be finite.
+                const std::string defaults = default_vibration(link);
                 if (const std::string why = fv::units::physical_view_error(
                         o.start.params, o.start.amplitude_um, o.start.frequency_khz);
                     !why.empty())
-                    throw fv::LinkError(why + " (the app's default amplitude and frequency)");
+                    throw fv::LinkError(why + defaults);
                 if (o.start.compare)
                     if (const std::string why = fv::units::physical_view_error(
                             o.start.b.params, o.start.amplitude_um, o.start.frequency_khz);
                         !why.empty())
-                        throw fv::LinkError("setup B: " + why +
-                                            " (the app's default amplitude and frequency)");
+                        throw fv::LinkError("setup B: " + why + defaults);
             } catch (const fv::LinkError& e) {
                 o.start = fv::app::Session{}; // the defaults, whatever the link had set before its error
                 o.start_notice.clear();

@@ -21,6 +21,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <tuple>
 
 namespace fv::cli {
 namespace {
@@ -59,9 +60,21 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     if (cmd.get_option("--i")->count()) s.params.i = a.model.i;
     if (cmd.get_option("--model")->count()) s.model = model_of(a.model);
     if (const auto start = given_start(cmd, a.model.solver.start)) s.start = *start;
+    // The amplitude and frequency each from a flag or from the link (its amplitude= and frequency=), not
+    // both: the two would contradict each other.
+    std::string given; // the vibration as given, for a message about the physical view
     if (cmd.get_option("--link")->count() > 0) {
         try {
             const ShareLink link = app::parse_link(a.link);
+            for (const auto& [flag, key, value] :
+                 {std::tuple{u.amplitude_opt, "amplitude", link.amplitude_um},
+                  std::tuple{u.frequency_opt, "frequency", link.frequency_khz}})
+                if (value) {
+                    if (*flag)
+                        throw UsageError(std::string("--") + key + " and --link's " + key +
+                                         "= both set the " + key + "; give one of them");
+                    given += (given.empty() ? "--link " : " ") + (key + ("=" + shortest_decimal(*value)));
+                }
             app::apply_link(link, s);
             // A view value that did not read is ignored (share_link.hpp): said on stderr and in the app.
             for (const std::string& n : link.notices) {
@@ -78,12 +91,13 @@ template <class Args> void start_from_flags(const Args& a, CLI::App& cmd, app::G
     // names the values as they are (a default the user never typed is not blamed on a flag).
     if (const std::string why = units::physical_view_error(s.params, s.amplitude_um, s.frequency_khz);
         !why.empty()) {
-        std::string given;
-        if (*u.amplitude_opt) given += "--amplitude " + shortest_decimal(u.amplitude);
+        if (*u.amplitude_opt)
+            given += (given.empty() ? "" : " ") + ("--amplitude " + shortest_decimal(u.amplitude));
         if (*u.frequency_opt)
             given += (given.empty() ? "" : " ") + ("--frequency " + shortest_decimal(u.frequency));
+        const bool default_amplitude = !*u.amplitude_opt && given.find("amplitude=") == std::string::npos;
         throw UsageError((given.empty() ? "" : given + ": ") + why +
-                         (*u.amplitude_opt ? "" : " (the app's default amplitude; --amplitude sets it)"));
+                         (default_amplitude ? " (the app's default amplitude; --amplitude sets it)" : ""));
     }
     // Compare mode's B (a link's b.* keys) likewise.
     if (s.compare)

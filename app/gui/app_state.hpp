@@ -18,13 +18,11 @@
 
 namespace fv::app {
 
-// App-only ranges (not model parameters): animation speed in vibration periods per second (in the shared
-// table, fv/param_ranges.hpp, since share links carry it), trail length in periods. The panel's sliders span
-// a part of them.
-using fv::kSpeedRange;
+// The app's own ranges (not model parameters), animation speed and trail length in periods, are in the
+// shared table (fv/param_ranges.hpp: kSpeedRange, kTrailRange) since share links carry them. The panel's
+// sliders span a part of them.
 // How much of the past the app keeps to rewind through, in vibration periods (at least the trail).
 inline constexpr double kHistoryPeriods = 6;
-inline constexpr ParamRange kTrailRange{0.1, 10};
 
 class AppState {
   public:

@@ -13,9 +13,8 @@
 
 namespace fv::app {
 
-// What the mouse can set (and a session file may hold): zoom factor, each pan coordinate.
-inline constexpr ParamRange kZoomRange{0.05, 20};
-inline constexpr ParamRange kPanRange{-1e6, 1e6};
+// What the mouse can set (and a session file and a share link may hold), zoom factor and each pan
+// coordinate: kZoomRange and kPanRange of the shared table (fv/param_ranges.hpp).
 
 // Compare mode's setup B as the dashboard draws it: its simulation, its view (A's, with B's frame), its
 // curves.

@@ -1,8 +1,9 @@
-// The share link of the app's whole state and back (fv/share_link.hpp has the format): the setup's keys and
-// the view's (panel, presentation, speed, pins, lesson step) where the view differs from the app's defaults,
-// and the address a student clicks (the site's address with the link as its query). The desktop's Copy link,
-// `gui
-// --link` and the browser page all go through here, so the three agree.
+// The share link of the app's whole state and back (fv/share_link.hpp has the format): the setup's keys, and
+// the vibration's (amplitude, frequency) and the view's (panel, presentation, speed, playing, trail, zoom,
+// pan, follow, pins, lesson step) where they differ from the app's defaults, so that a session goes through a
+// link and back whole but for its data file; and the address a student clicks (the site's address with the
+// link as its query). The desktop's Copy link, `gui --link` and the browser page all go through here, so the
+// three agree.
 #pragma once
 
 #include "session.hpp"
@@ -29,9 +30,9 @@ struct ShareAddress {
 std::string link_base_error(const std::string& base);
 
 // The link of the state: share_link() of the setup (A's), compare_link_keys() of B in compare mode, then
-// view_link_keys() of what differs from a default
-// SessionState (the link of a default view is the setup's keys alone, as before the view keys existed).
-// Pins whose source is not known (an older session file) are left out.
+// view_link_keys() of what differs from a default SessionState (the link of a default view is the setup's
+// keys alone, as before the view keys existed). Pins whose source is not known (an older session file) are
+// left out.
 std::string session_link(const SessionState& s);
 // base + link ("http://host/frictionviz/?zeta=...").
 std::string share_address(const ShareAddress& where, const SessionState& s);

@@ -54,6 +54,12 @@ double number(const std::string& key, const std::string& v, std::size_t offset, 
     return x;
 }
 
+// The entry of `table` for `key`, or null.
+template <class T, std::size_t N> const T* find_key(const T (&table)[N], const std::string& key) {
+    const T* it = std::find_if(std::begin(table), std::end(table), [&](const T& t) { return key == t.key; });
+    return it == std::end(table) ? nullptr : it;
+}
+
 // The numeric keys: where each goes and its range in the shared table.
 struct NumberKey {
     const char* key;
@@ -72,9 +78,7 @@ bool read_setup_key(SetupKeys& s, const std::string& key, const std::string& nam
     const auto once = [&](bool given) {
         if (given) fail(at, quoted_text(name) + " is given twice; each key at most once");
     };
-    const NumberKey* nk = std::find_if(std::begin(kNumberKeys), std::end(kNumberKeys),
-                                       [&](const NumberKey& n) { return key == n.key; });
-    if (nk != std::end(kNumberKeys)) {
+    if (const NumberKey* nk = find_key(kNumberKeys, key)) {
         once((s.*nk->slot).has_value());
         s.*nk->slot = number(name, value, vat, nk->range);
     } else if (key == "model") {
@@ -93,6 +97,22 @@ bool read_setup_key(SetupKeys& s, const std::string& key, const std::string& nam
     return true;
 }
 
+// The view's numbers and flags (1 | 0): where each goes and, for a number, its range in the shared table.
+struct ViewNumber {
+    const char* key;
+    std::optional<double> ShareLink::*slot;
+    ParamRange range;
+};
+constexpr ViewNumber kViewNumbers[] = {{"speed", &ShareLink::speed, kSpeedRange},
+                                       {"trail", &ShareLink::trail_periods, kTrailRange},
+                                       {"zoom", &ShareLink::zoom, kZoomRange}};
+struct ViewFlag {
+    const char* key;
+    std::optional<bool> ShareLink::*slot;
+};
+constexpr ViewFlag kViewFlags[] = {
+    {"present", &ShareLink::presentation}, {"play", &ShareLink::playing}, {"follow", &ShareLink::follow}};
+
 // A view value that does not read: noted and ignored (share_link.hpp).
 void notice(ShareLink& link, std::size_t offset, const std::string& what) {
     link.notices.push_back("column " + std::to_string(offset + 1) + ": " + what + "; ignored");
@@ -106,6 +126,17 @@ std::vector<std::string_view> split(std::string_view s, char sep) {
         if (end == std::string_view::npos) return out;
         at = end + 1;
     }
+}
+
+// The pan value "X,Y": "" or why it does not read (the whole value is then ignored).
+std::string read_pan(std::string_view value, std::array<double, 2>& pan) {
+    const std::vector<std::string_view> xy = split(value, ',');
+    if (xy.size() != 2)
+        return "pan = " + quoted_text(std::string(value)) + "; expected X,Y (two numbers joined by ',')";
+    for (std::size_t k = 0; k < 2; ++k)
+        if (std::string why = read_number(k ? "pan y" : "pan x", xy[k], kPanRange, pan[k]); !why.empty())
+            return why;
+    return "";
 }
 
 // The pins value: "" or why it does not read (the whole value is then ignored).
@@ -143,6 +174,7 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
                        std::string(kLinkKeys) + ")");
     ShareLink link;
     std::set<std::string> seen_view; // the view's keys given so far (a value ignored leaves no trace in link)
+    std::size_t compare_at = 0;      // where compare= is, for a message
     for (std::size_t at = from; at <= to;) {
         std::size_t end = text.find('&', at);
         if (end == std::string_view::npos || end > to) end = to;
@@ -163,23 +195,41 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
             once(link.frame.has_value());
             link.frame = parse_frame(value);
             if (!link.frame) fail(vat, "frame = " + quoted_text(value) + "; allowed: body, ground");
+        } else if (key == "amplitude" || key == "frequency") {
+            const bool amplitude = key == "amplitude";
+            std::optional<double>& slot = amplitude ? link.amplitude_um : link.frequency_khz;
+            once(slot.has_value());
+            slot = number(key, value, vat, amplitude ? kAmplitudeRange : kFrequencyRange);
+        } else if (key == "compare") {
+            once(link.compare.has_value());
+            if (value != "1" && value != "0")
+                fail(vat, "compare = " + quoted_text(value) + "; allowed: 1, 0");
+            link.compare = value == "1";
+            compare_at = at;
+        } else if (const ViewFlag* flag = find_key(kViewFlags, key)) {
+            once(!seen_view.insert(key).second);
+            if (value == "1" || value == "0")
+                link.*flag->slot = value == "1";
+            else
+                notice(link, vat, key + " = " + quoted_text(value) + "; allowed: 1, 0");
+        } else if (const ViewNumber* vn = find_key(kViewNumbers, key)) {
+            once(!seen_view.insert(key).second);
+            double x = 0;
+            if (std::string why = read_number(key, value, vn->range, x); why.empty())
+                link.*vn->slot = x;
+            else
+                notice(link, vat, why);
         } else if (key == "panel") {
             once(!seen_view.insert(key).second);
             if (const auto panel = panel_from_name(value))
                 link.panel = *panel;
             else
                 notice(link, vat, "panel = " + quoted_text(value) + "; allowed: curves, map, loop, why");
-        } else if (key == "present") {
+        } else if (key == "pan") {
             once(!seen_view.insert(key).second);
-            if (value == "1" || value == "0")
-                link.presentation = value == "1";
-            else
-                notice(link, vat, "present = " + quoted_text(value) + "; allowed: 1, 0");
-        } else if (key == "speed") {
-            once(!seen_view.insert(key).second);
-            double x = 0;
-            if (std::string why = read_number(key, value, kSpeedRange, x); why.empty())
-                link.speed = x;
+            std::array<double, 2> pan{};
+            if (const std::string why = read_pan(value, pan); why.empty())
+                link.pan = pan;
             else
                 notice(link, vat, why);
         } else if (key == "pins") {
@@ -203,6 +253,9 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
         }
         at = end + 1;
     }
+    if (link.compare == false && link.b.any())
+        fail(compare_at,
+             "compare=0 turns compare mode off, yet setup B's keys (b.*) are given; give one of them");
     return link;
 }
 
@@ -259,9 +312,22 @@ std::string compare_link_keys(Model model, const Params& p, Start start) {
 
 std::string view_link_keys(const ShareLink& link) {
     std::string s;
+    const auto number = [&s](const char* key, const std::optional<double>& v) {
+        if (v) s += std::string("&") + key + "=" + shortest_decimal(*v);
+    };
+    const auto flag = [&s](const char* key, const std::optional<bool>& v) {
+        if (v) s += std::string("&") + key + (*v ? "=1" : "=0");
+    };
+    number("amplitude", link.amplitude_um);
+    number("frequency", link.frequency_khz);
     if (link.panel) s += std::string("&panel=") + panel_name(*link.panel);
-    if (link.presentation) s += *link.presentation ? "&present=1" : "&present=0";
-    if (link.speed) s += "&speed=" + shortest_decimal(*link.speed);
+    flag("present", link.presentation);
+    number("speed", link.speed);
+    flag("play", link.playing);
+    number("trail", link.trail_periods);
+    number("zoom", link.zoom);
+    if (link.pan) s += "&pan=" + shortest_decimal((*link.pan)[0]) + "," + shortest_decimal((*link.pan)[1]);
+    flag("follow", link.follow);
     if (link.pins && !link.pins->empty()) {
         s += "&pins=";
         for (std::size_t k = 0; k < link.pins->size(); ++k)

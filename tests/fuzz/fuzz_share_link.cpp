@@ -46,6 +46,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     for (const std::string& n : l.notices) one_line(n, "a notice is one line 'column N: ...'");
     if (l.speed) check(fv::inside(*l.speed, fv::kSpeedRange), "speed in range");
+    if (l.amplitude_um) check(fv::inside(*l.amplitude_um, fv::kAmplitudeRange), "amplitude in range");
+    if (l.frequency_khz) check(fv::inside(*l.frequency_khz, fv::kFrequencyRange), "frequency in range");
+    if (l.trail_periods) check(fv::inside(*l.trail_periods, fv::kTrailRange), "trail in range");
+    if (l.zoom) check(fv::inside(*l.zoom, fv::kZoomRange), "zoom in range");
+    if (l.pan)
+        check(fv::inside((*l.pan)[0], fv::kPanRange) && fv::inside((*l.pan)[1], fv::kPanRange),
+              "pan in range");
     if (l.lesson) check(*l.lesson >= 1 && *l.lesson <= kSteps, "lesson within the steps");
     if (l.pins) {
         check(!l.pins->empty() && l.pins->size() <= fv::kMaxPins, "1 to kMaxPins pins");
@@ -61,6 +68,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     view.speed = l.speed;
     view.pins = l.pins;
     view.lesson = l.lesson;
+    view.amplitude_um = l.amplitude_um;
+    view.frequency_khz = l.frequency_khz;
+    view.playing = l.playing;
+    view.trail_periods = l.trail_periods;
+    view.zoom = l.zoom;
+    view.pan = l.pan;
+    view.follow = l.follow;
     const fv::ShareLink again = fv::parse_share_link("?model=dahl" + fv::view_link_keys(view), kSteps);
     check(again.notices.empty(), "the view written back reads without notices");
     check(again.panel == l.panel && again.presentation == l.presentation && again.speed == l.speed,
@@ -68,5 +82,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     check(again.pins.has_value() == l.pins.has_value() && (!l.pins || again.pins->size() == l.pins->size()),
           "the pins read back");
     check(again.lesson == l.lesson, "the lesson step reads back");
+    check(again.amplitude_um == l.amplitude_um && again.frequency_khz == l.frequency_khz,
+          "amplitude and frequency read back");
+    check(again.playing == l.playing && again.trail_periods == l.trail_periods && again.zoom == l.zoom &&
+              again.pan == l.pan && again.follow == l.follow,
+          "play, trail, zoom, pan and follow read back");
     return 0;
 }

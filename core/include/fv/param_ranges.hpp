@@ -38,8 +38,14 @@ inline constexpr ParamRange kZssRange{0, 1e6, true};
 inline constexpr ParamRange kRxDataRange{-0.5, 1.5};
 inline constexpr ParamRange kSigmaRange{1e-6, 10};
 
-// The app's animation speed in vibration periods per second (sessions, share links, the panel's slider).
+// The app's view, in the shared table because sessions and share links carry it and the link's parser is in
+// core: the animation speed in vibration periods per second (the panel's slider spans part of it), the trail
+// behind P and T in vibration periods, the top view's zoom factor (the mouse wheel) and each coordinate of
+// its pan in the model's length unit (a drag).
 inline constexpr ParamRange kSpeedRange{0.05, 10};
+inline constexpr ParamRange kTrailRange{0.1, 10};
+inline constexpr ParamRange kZoomRange{0.05, 20};
+inline constexpr ParamRange kPanRange{-1e6, 1e6};
 
 // The part of each range the app's sliders span (values beyond them are typed, scripted or given on the
 // command line); each lies inside the range above.

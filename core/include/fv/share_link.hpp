@@ -8,12 +8,24 @@
 // it, and the browser build reads the same keys from its page address; so this parser has no GUI in it and
 // lives in core, which both builds compile.
 //
-// The app's view may follow (each written only when it is not the app's default, so the link of a default
-// view is the five keys above, as before these were added):
+// The vibration behind the physical units may follow, each written only when it is not the app's default
+// (0.7 um at 60 kHz, the paper's Fig. 19), read and checked as the command line's --amplitude and --frequency
+// (an error, not a notice: they change the v_b and z_ss shown and how measured data convert):
+//
+//   &amplitude=1            the vibration amplitude A in um (kAmplitudeRange)
+//   &frequency=40           its frequency f in kHz (kFrequencyRange)
+//
+// The app's view may follow (each written only when it is not the app's default or, in a lesson, the step's,
+// so the link of a default view is the five keys above, as before these were added):
 //
 //   &panel=map              the lower-right panel: curves | map | loop | why
 //   &present=1              presentation mode (1 | 0)
 //   &speed=1.5              animation speed, vibration periods per second (kSpeedRange)
+//   &play=0                 the animation paused (1 | 0: running, the default)
+//   &trail=3                the trail behind P and T in vibration periods (kTrailRange)
+//   &zoom=2                 the top view's zoom factor (kZoomRange)
+//   &pan=0.5,-1             the top view's pan X,Y in units of x_v, its axes' (each in kPanRange)
+//   &follow=0               the camera stays where it was put rather than following the body (1 | 0)
 //   &pins=dahl:60:2:1,rigid:30,dahl:90:0.1:5:sliding
 //                           pinned r_x(zeta) curves by what they were computed at (at most kMaxPins, ','
 //                           between them): MODEL:THETA_DEG[:RDISP:I[:START]] (the Dahl model needs r_disp
@@ -27,6 +39,11 @@
 //
 //   &b.zeta=0.15&b.theta=0&b.rdisp=2&b.i=1&b.model=dahl&b.start=sliding
 //
+// and `compare=0` turns compare mode off where a lesson step turns it on (`compare=1`: on with the default B;
+// compare=0 with B's keys is an error). The app writes start=rest, frame=body, b.start=rest and compare=0
+// only where the reader would otherwise take the other value (a lesson step's, or B's start from A's), so
+// that a link reopens the state it was written from.
+//
 // A view value that does not read is ignored with a notice (ShareLink::notices: "column N: what; allowed:
 // ...; ignored"), never an error: it changes how the setup is shown, not the setup, so the link still opens.
 //
@@ -36,8 +53,9 @@
 // value); values are numbers read by the shared reader (read_number.hpp, as on the command line) inside the
 // shared range table (param_ranges.hpp), dahl|rigid, rest|sliding or body|ground; %XX escapes are decoded
 // ('+' stays a plus sign, so "1e+3" is a number). Anything else is a LinkError naming the column, what was
-// wrong and what is allowed, except the app's view values (panel, present, speed, pins), which are ignored
-// with a notice (lesson too: the steps are the app's data, so the reader says how many there are).
+// wrong and what is allowed, except the app's view values (panel, present, speed, play, trail, zoom, pan,
+// follow, pins), which are ignored with a notice (lesson too: the steps are the app's data, so the reader
+// says how many there are).
 #pragma once
 
 #include "fv/lower_panel.hpp"
@@ -47,6 +65,7 @@
 #include "fv/steady_state.hpp"   // Start
 #include "fv/top_view_frame.hpp" // FrameChoice
 
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -55,9 +74,9 @@
 
 namespace fv {
 
-inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame, panel, present, speed, "
-                                         "pins, lesson, b.zeta, b.theta, b.rdisp, "
-                                         "b.i, b.model, b.start";
+inline constexpr const char* kLinkKeys = "zeta, theta, rdisp, i, model, start, frame, amplitude, frequency, "
+                                         "panel, present, speed, play, trail, zoom, pan, follow, pins, "
+                                         "lesson, compare, b.zeta, b.theta, b.rdisp, b.i, b.model, b.start";
 // A pins value longer than this is ignored (kMaxPins pins of shortest decimals fit with room to spare).
 inline constexpr std::size_t kMaxPinsText = 600;
 
@@ -72,13 +91,20 @@ struct SetupKeys {
 // A's keys are the link's own (link.zeta, ...); B's are link.b.
 struct ShareLink : SetupKeys {
     std::optional<FrameChoice> frame; // what stands still in the app's top view
+    // The vibration (A's and B's): amplitude in um, frequency in kHz.
+    std::optional<double> amplitude_um, frequency_khz;
     // The app's view.
     std::optional<LowerPanel> panel;
     std::optional<bool> presentation;
     std::optional<double> speed;
+    std::optional<bool> playing;
+    std::optional<double> trail_periods, zoom;
+    std::optional<std::array<double, 2>> pan;
+    std::optional<bool> follow;
     std::optional<std::vector<PinSource>> pins;
-    std::optional<int> lesson; // a guided lesson's step, 1-based
-    SetupKeys b;               // compare mode's setup B (any key given: compare on)
+    std::optional<int> lesson;   // a guided lesson's step, 1-based
+    SetupKeys b;                 // compare mode's setup B (any key given: compare on)
+    std::optional<bool> compare; // compare mode on (with the default B) or off
     // View values that did not read and were ignored, each "column N: what; allowed: ...; ignored".
     std::vector<std::string> notices;
 };
@@ -109,8 +135,9 @@ std::string share_link(Model model, const Params& params, Start start = Start::r
 // keys, numbers as share_link() writes them; appended by the app in compare mode.
 std::string compare_link_keys(Model model, const Params& params, Start start = Start::rest);
 
-// The view's keys for the view fields `link` sets, in the order above ("&panel=map&present=1&speed=1.5&
-// pins=dahl:60:2:1&lesson=3"), or "": appended to share_link() by the app for what differs from its defaults.
+// The vibration's and the view's keys for the fields `link` sets, in the order above ("&amplitude=1&
+// frequency=40&panel=map&present=1&speed=1.5&play=0&trail=3&zoom=2&pan=0.5,-1&follow=0&pins=dahl:60:2:1&
+// lesson=3"), or "": appended to share_link() by the app for what differs from its defaults.
 std::string view_link_keys(const ShareLink& link);
 
 // One pin as the link writes it ("dahl:60:2:1", "dahl:90:0.1:5:sliding", "rigid:30"), numbers that read
