@@ -174,7 +174,15 @@ class LabelPlacer {
         if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
         for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
             const auto& cmd = cmds[k];
-            if (own(cmd) || !gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
+            // What the label names it may touch, but its glyphs (the box less 2 units each side: the
+            // leading) not lie on it (P's label on P's dot, where P's marker grew in presentation mode).
+            if (own(cmd)) {
+                if (std::holds_alternative<gfx::dl::Marker>(cmd) &&
+                    gfx::command_touches(cmd, b.inset(2), canvas_.fonts(), 0.0f))
+                    score += 100;
+                continue;
+            }
+            if (!gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
             const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
                                std::holds_alternative<gfx::dl::Marker>(cmd) ||
                                std::holds_alternative<gfx::dl::Arrow>(cmd);
@@ -293,7 +301,7 @@ void draw_bands(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& p
 // markers are drawn over the arrows: one that starts in a marker (v and −F at P) starts at its edge instead,
 // and is at least kMinArrow x the text scale long beyond it (in presentation mode P's dot was larger than a
 // short v, which hid under it); one whose tip would end under another marker (−F pointing at T) ends at
-// that marker's edge, or, too short for that, past it.
+// that marker's nearer edge (the far one where the near one would leave it too short).
 constexpr float kMinArrow = 10;
 std::optional<std::pair<gfx::Vec2, gfx::Vec2>> arrow_pixels(const gfx::PlotTransform& tf,
                                                             const PanelData& panel, const ArrowData& a) {
@@ -325,10 +333,15 @@ std::optional<std::pair<gfx::Vec2, gfx::Vec2>> arrow_pixels(const gfx::PlotTrans
         if (inside(discs[k], from)) own[k] = true, start = std::max(start, crossing(discs[k], from).second);
     const float min_len = kMinArrow * std::max(1.0f, panel.text_scale);
     float end = std::max(len, start + min_len);
-    for (std::size_t k = 0; k < discs.size(); ++k) {
+    // Again while a move put the tip under another marker (P and T close together), a few times at most.
+    for (std::size_t k = 0, moves = 0; k < discs.size(); ++k) {
         if (own[k] || !inside(discs[k], from + u * end)) continue;
+        if (++moves > 2 * discs.size()) break;
         const auto [t_in, t_out] = crossing(discs[k], from);
-        end = t_in >= start + min_len ? t_in : std::max(end, t_out + min_len);
+        // Back to the marker's near edge where the tip is nearer it (and the arrow stays long enough),
+        // else on past its far edge (the head seen beyond it).
+        end = t_in >= start + min_len && end - t_in <= t_out - end ? t_in : t_out + 0.5f * min_len;
+        k = static_cast<std::size_t>(-1); // from the first marker again
     }
     to = from + u * end;
     from = from + u * start;
