@@ -78,17 +78,27 @@ std::string label_on_shape(const DisplayList& list, const gfx::FontSet& fonts, b
 }
 
 std::string arrow_on_arrow(const DisplayList& list) {
+    // Each arrow with the data region it is drawn (and clipped) in: arrows of two panels never meet on
+    // screen, though the ground frame's copies run on beyond their axes in the list.
     std::vector<const gfx::dl::Arrow*> arrows;
-    for (const auto& c : list.commands)
-        if (const auto* a = std::get_if<gfx::dl::Arrow>(&c)) arrows.push_back(a);
+    std::vector<std::size_t> region;
+    for (std::size_t k = 0; k < list.commands.size(); ++k)
+        if (const auto* a = std::get_if<gfx::dl::Arrow>(&list.commands[k])) {
+            arrows.push_back(a);
+            region.push_back(list.regions.size());
+            for (std::size_t r = 0; r < list.regions.size(); ++r)
+                if (list.regions[r].role == "data" && list.regions[r].first <= k && k < list.regions[r].last)
+                    region.back() = r;
+        }
     auto distance = [](Vec2 p, Vec2 a, Vec2 b) {
         const float dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
         const float t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.f, 1.f) : 0.f;
         return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
     };
-    for (const auto* a : arrows)
-        for (const auto* b : arrows) {
-            if (a == b) continue;
+    for (std::size_t i = 0; i < arrows.size(); ++i)
+        for (std::size_t j = 0; j < arrows.size(); ++j) {
+            const auto *a = arrows[i], *b = arrows[j];
+            if (i == j || region[i] != region[j]) continue;
             const float reach = 0.5f * (a->style.shaft.width + b->style.shaft.width) + 1;
             int near = 0;
             constexpr int kN = 24;
@@ -109,8 +119,13 @@ std::string hidden_arrow(const DisplayList& list, float min_visible) {
     for (std::size_t k = 0; k < list.commands.size(); ++k) {
         const auto* a = std::get_if<gfx::dl::Arrow>(&list.commands[k]);
         if (!a) continue;
+        // The markers drawn after it in its panel's data region (another panel's cover only what its clip
+        // left out: the ground frame's copies run on beyond their axes).
+        std::size_t last = list.commands.size();
+        for (const gfx::Region& r : list.regions)
+            if (r.role == "data" && r.first <= k && k < r.last) last = r.last;
         std::vector<const gfx::dl::Marker*> above;
-        for (std::size_t j = k + 1; j < list.commands.size(); ++j)
+        for (std::size_t j = k + 1; j < last; ++j)
             if (const auto* m = std::get_if<gfx::dl::Marker>(&list.commands[j])) above.push_back(m);
         auto hidden = [&](Vec2 p) {
             return std::any_of(above.begin(), above.end(), [&](const auto* m) { return covers(*m, p); });

@@ -23,8 +23,8 @@ std::string label_on_shape(const gfx::DisplayList& list, const gfx::FontSet& fon
 // within the two shafts' half widths plus a pixel of the other's): one would hide the other.
 std::string arrow_on_arrow(const gfx::DisplayList& list);
 
-// The first arrow in `list` hidden under the markers drawn after it: less than `min_visible` units of it
-// outside them, or its head's tip under one.
+// The first arrow in `list` hidden under the markers drawn after it in its data region: less than
+// `min_visible` units of it outside them, or its head's tip under one.
 std::string hidden_arrow(const gfx::DisplayList& list, float min_visible);
 
 // The first text among commands [first, last) of `list` whose box leaves `bounds` by more than 1 unit.

@@ -328,14 +328,13 @@ std::optional<std::pair<gfx::Vec2, gfx::Vec2>> arrow_pixels(const gfx::PlotTrans
     };
     auto inside = [](const Disc& d, gfx::Vec2 p) { return std::hypot(p.x - d.c.x, p.y - d.c.y) < d.r; };
     float start = 0;
-    std::vector<bool> own(discs.size(), false);
-    for (std::size_t k = 0; k < discs.size(); ++k)
-        if (inside(discs[k], from)) own[k] = true, start = std::max(start, crossing(discs[k], from).second);
+    for (const Disc& d : discs)
+        if (inside(d, from)) start = std::max(start, crossing(d, from).second);
     const float min_len = kMinArrow * std::max(1.0f, panel.text_scale);
     float end = std::max(len, start + min_len);
     // Again while a move put the tip under another marker (P and T close together), a few times at most.
     for (std::size_t k = 0, moves = 0; k < discs.size(); ++k) {
-        if (own[k] || !inside(discs[k], from + u * end)) continue;
+        if (!inside(discs[k], from + u * end)) continue;
         if (++moves > 2 * discs.size()) break;
         const auto [t_in, t_out] = crossing(discs[k], from);
         // Back to the marker's near edge where the tip is nearer it (and the arrow stays long enough),

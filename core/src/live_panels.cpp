@@ -691,7 +691,11 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
         va.label_dy = v.y() > 0 ? -1 : 1;
         fa.label_dy = f.y() > 0 ? -1 : 1;
     }
-    if (!mechanism_parallel(sim.params().theta) && (runs_along(fa, va, panel) || runs_along(va, fa, panel))) {
+    // Looser than a faded arrow's (5 % of the span): in presentation mode the panel is smaller and its
+    // arrows wider, and two live arrows within 3 % met on screen.
+    constexpr double kLiveMeet = 0.05;
+    if (!mechanism_parallel(sim.params().theta) &&
+        (runs_along(fa, va, panel, kLiveMeet) || runs_along(va, fa, panel, kLiveMeet))) {
         // In the plane both start at the body: where the friction lies along the velocity (the Dahl
         // friction has not turned yet, or v is so short that it is all tail), the friction is drawn beside
         // it, shifted across its own line by 4 % of the axes' span, away from v.
