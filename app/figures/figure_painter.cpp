@@ -175,9 +175,11 @@ class LabelPlacer {
         for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
             const auto& cmd = cmds[k];
             // What the label names it may touch, but its glyphs (the box less 2 units each side: the
-            // leading) not lie on it (P's label on P's dot, where P's marker grew in presentation mode).
+            // leading) not lie on it (P's label on P's dot where the dot grew in presentation mode, −F's on
+            // its arrow).
             if (own(cmd)) {
-                if (std::holds_alternative<gfx::dl::Marker>(cmd) &&
+                if ((std::holds_alternative<gfx::dl::Marker>(cmd) ||
+                     std::holds_alternative<gfx::dl::Arrow>(cmd)) &&
                     gfx::command_touches(cmd, b.inset(2), canvas_.fonts(), 0.0f))
                     score += 100;
                 continue;
