@@ -76,8 +76,9 @@ TEST_CASE("The app's picture reads in presentation and compare mode at every ang
                 for (const double zeta : {0.15, 0.5})
                     for (const double theta : {0.0, 30.0, 90.0, 150.0})
                         for (const fv::FrameChoice frame : {fv::FrameChoice::body, fv::FrameChoice::ground}) {
-                            // B at the next angle (theta = 0 beside 150, where A's arrows lie on one line
-                            // beside B's across).
+                            // B at the next angle round (0 beside A's 150): each angle is drawn as A and as
+                            // B. The panels are painted as paint_dashboard paints them, one at a time so
+                            // that each one's commands are known.
                             const double theta_b =
                                 theta == 0 ? 30 : (theta == 30 ? 90 : (theta == 90 ? 150 : 0));
                             auto a = steady_sim(model, zeta, theta);
