@@ -26,6 +26,8 @@
 #include "fv/ode_solver.hpp"
 #include "tools/figure_examples.hpp"
 
+#include "layout_checks.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -44,6 +46,9 @@ namespace {
 using fv::gfx::DisplayList;
 using fv::gfx::Rect;
 using fv::gfx::Vec2;
+using fv::test::arrow_on_arrow;
+using fv::test::label_on_shape;
+using fv::test::overlapping_texts;
 
 // Every registered figure with its example inputs (fig19 with the synthetic example data), and the scene at
 // θ = 90° where r_y is zero up to round-off (it printed "r_y = -0.0000" in the title); computed once.
@@ -358,22 +363,6 @@ TEST_CASE("Small multiples: one legend names every line and mark of any map once
     CHECK(legend_texts.size() == 3);
 }
 
-// The first pair of texts in `list` whose boxes overlap by more than `slack` units each way, or "".
-std::string overlapping_texts(const DisplayList& list, const fv::gfx::FontSet& fonts, float slack) {
-    std::vector<std::pair<Rect, const fv::gfx::dl::Text*>> boxes;
-    for (const auto& c : list.commands)
-        if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c))
-            boxes.push_back({fv::gfx::text_bounds(*t, fonts), t});
-    for (std::size_t a = 0; a < boxes.size(); ++a)
-        for (std::size_t b = a + 1; b < boxes.size(); ++b) {
-            const Rect &p = boxes[a].first, &q = boxes[b].first;
-            if (std::min(p.x1, q.x1) - std::max(p.x0, q.x0) > slack &&
-                std::min(p.y1, q.y1) - std::max(p.y0, q.y0) > slack)
-                return "\"" + boxes[a].second->text + "\" and \"" + boxes[b].second->text + "\"";
-        }
-    return "";
-}
-
 TEST_CASE("No two texts of a figure overlap", "[layout][labels]") {
     for (const Vec2 page : kPages) {
         fv::app::RenderSession& s = session(static_cast<int>(page.x), static_cast<int>(page.y));
@@ -391,32 +380,6 @@ TEST_CASE("No two texts of a figure overlap", "[layout][labels]") {
     copy.anchor.x += 3, copy.anchor.y += 3;
     list.commands.push_back(copy);
     CHECK(overlapping_texts(list, session().fonts(), 1.0f) != "");
-}
-
-// The first label in a data region of `list` (a point's, an arrow's or a segment's name) that lies on an
-// arrow or a marker drawn there (its own included: labels sit beside what they name), as a description, or
-// "".
-std::string label_on_shape(const DisplayList& list, const fv::gfx::FontSet& fonts) {
-    for (const fv::gfx::Region& data : list.regions) {
-        if (data.role != "data") continue;
-        for (std::size_t k = data.first; k < data.last; ++k) {
-            const auto* t = std::get_if<fv::gfx::dl::Text>(&list.commands[k]);
-            if (!t) continue;
-            // The glyphs' box: the text's line box less 2 units each side (its leading, the gaps in glyphs);
-            // a label beside its marker may touch the marker's halo.
-            const Rect l = fv::gfx::text_bounds(*t, fonts);
-            const Rect b{l.x0 + 2, l.y0 + 2, l.x1 - 2, l.y1 - 2};
-            for (std::size_t j = data.first; j < data.last; ++j) {
-                const auto& c = list.commands[j];
-                const bool solid = std::holds_alternative<fv::gfx::dl::Arrow>(c) ||
-                                   std::holds_alternative<fv::gfx::dl::Marker>(c);
-                if (solid && fv::gfx::command_touches(c, b, fonts, 0.0f))
-                    return "\"" + t->text + "\" on " +
-                           (std::holds_alternative<fv::gfx::dl::Arrow>(c) ? "an arrow" : "a marker");
-            }
-        }
-    }
-    return "";
 }
 
 TEST_CASE("No label of a figure lies on an arrow or a marker", "[layout][labels]") {
@@ -465,42 +428,6 @@ TEST_CASE("format_number: a value that rounds to zero has no sign", "[layout][mi
     CHECK(fv::format_number("%.0e", 1e-8) == "1e-08");
     CHECK(fv::format_number("%g", -2.5) == "-2.5");
 }
-
-namespace {
-
-// The first pair of arrows in `list` of which one runs along the other (more than a third of its shaft
-// within the two shafts' half widths plus a pixel of the other's), as a description, or "": one would hide
-// the other.
-std::string arrow_on_arrow(const DisplayList& list) {
-    std::vector<const fv::gfx::dl::Arrow*> arrows;
-    for (const auto& c : list.commands)
-        if (const auto* a = std::get_if<fv::gfx::dl::Arrow>(&c)) arrows.push_back(a);
-    auto distance = [](Vec2 p, Vec2 a, Vec2 b) {
-        const float dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
-        const float t = l2 > 0 ? std::clamp(((p.x - a.x) * dx + (p.y - a.y) * dy) / l2, 0.f, 1.f) : 0.f;
-        return std::hypot(p.x - a.x - t * dx, p.y - a.y - t * dy);
-    };
-    for (const auto* a : arrows)
-        for (const auto* b : arrows) {
-            if (a == b) continue;
-            const float reach = 0.5f * (a->style.shaft.width + b->style.shaft.width) + 1;
-            int near = 0;
-            constexpr int kN = 24;
-            for (int k = 0; k <= kN; ++k) {
-                const float t = static_cast<float>(k) / kN;
-                const Vec2 p{a->from.x + t * (a->to.x - a->from.x), a->from.y + t * (a->to.y - a->from.y)};
-                near += distance(p, b->from, b->to) <= reach;
-            }
-            if (near * 3 > kN + 1)
-                return "arrow (" + std::to_string(a->from.x) + ", " + std::to_string(a->from.y) + ") -> (" +
-                       std::to_string(a->to.x) + ", " + std::to_string(a->to.y) + ") along the arrow (" +
-                       std::to_string(b->from.x) + ", " + std::to_string(b->from.y) + ") -> (" +
-                       std::to_string(b->to.x) + ", " + std::to_string(b->to.y) + ")";
-        }
-    return "";
-}
-
-} // namespace
 
 TEST_CASE("The live top view reads at every angle: no text on text, label on a shape or arrow on arrow",
           "[layout][labels][live]") {

@@ -94,7 +94,9 @@ struct LabelCandidate {
 // shapes, markers) and of the labels placed before them, inside the data area when possible.
 class LabelPlacer {
   public:
-    LabelPlacer(gfx::Canvas& c, const gfx::PlotTransform& tf) : canvas_(c), tf_(tf) {}
+    // `walls`: lines no label may touch (as solid as a marker), though drawn as lines.
+    LabelPlacer(gfx::Canvas& c, const gfx::PlotTransform& tf, std::vector<gfx::dl::Command> walls = {})
+        : canvas_(c), tf_(tf), walls_(std::move(walls)) {}
 
     // `own`: the shape the label names (its marker, arrow or segment), which it may touch. `leader_to`: the
     // point it names; where every candidate lies on a solid shape (text, marker, arrow), the label goes to
@@ -157,6 +159,7 @@ class LabelPlacer {
   private:
     gfx::Canvas& canvas_;
     const gfx::PlotTransform& tf_;
+    std::vector<gfx::dl::Command> walls_;
     std::vector<gfx::Rect> placed_;
     std::vector<gfx::dl::Text> pending_;
     std::vector<std::pair<gfx::Vec2, gfx::Vec2>> leaders_;
@@ -171,7 +174,17 @@ class LabelPlacer {
         if (b.x0 < A.x0 || b.x1 > A.x1 || b.y0 < A.y0 || b.y1 > A.y1) score += 1000;
         for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k) {
             const auto& cmd = cmds[k];
-            if (own(cmd) || !gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
+            // What the label names it may touch, but its glyphs (the box less 2 units each side: the
+            // leading) not lie on it (P's label on P's dot where the dot grew in presentation mode, −F's on
+            // its arrow).
+            if (own(cmd)) {
+                if ((std::holds_alternative<gfx::dl::Marker>(cmd) ||
+                     std::holds_alternative<gfx::dl::Arrow>(cmd)) &&
+                    gfx::command_touches(cmd, b.inset(2), canvas_.fonts(), 0.0f))
+                    score += 100;
+                continue;
+            }
+            if (!gfx::command_touches(cmd, b, canvas_.fonts(), 1.5f)) continue;
             const bool solid = std::holds_alternative<gfx::dl::Text>(cmd) ||
                                std::holds_alternative<gfx::dl::Marker>(cmd) ||
                                std::holds_alternative<gfx::dl::Arrow>(cmd);
@@ -179,6 +192,8 @@ class LabelPlacer {
         }
         for (const gfx::Rect& r : placed_)
             if (r.overlaps(b)) score += 100;
+        for (const gfx::dl::Command& w : walls_)
+            if (gfx::command_touches(w, b, canvas_.fonts(), 1.5f)) score += 100;
         return score;
     }
 };
@@ -187,16 +202,17 @@ bool same(gfx::Vec2 a, gfx::Vec2 b) {
     return std::fabs(a.x - b.x) < 1e-3f && std::fabs(a.y - b.y) < 1e-3f;
 }
 
-// The eight places around a point, at `r` from it, starting with direction (dx, dy) and turning away from it.
-// Crowded (every place near lies on text, a marker or an arrow): the same eight places twice as far out.
-std::vector<LabelCandidate> around(gfx::Vec2 at, float dx, float dy, float size, gfx::Color color) {
+// The eight places around a point, `r` from it (r ~ 9 units, 8 up or down, at text scale 1: past a marker
+// of the same scale), starting with direction (dx, dy) and turning away from it. Crowded (every place near
+// lies on text, a marker or an arrow): the same eight places twice as far out.
+std::vector<LabelCandidate> around(gfx::Vec2 at, float dx, float dy, float size, gfx::Color color, float r0) {
     const float a0 = std::atan2(dy, dx);
     std::vector<LabelCandidate> out;
-    for (float r : {1.0f, 2.0f})
+    for (float r : {r0, 2 * r0})
         for (int k : {0, 1, -1, 2, -2, 3, -3, 4}) {
             const float a = a0 + static_cast<float>(k) * 0.25f * static_cast<float>(kPi);
             const float ux = std::cos(a), uy = std::sin(a);
-            out.push_back({{at.x + 9 * r * ux, at.y + 8 * r * uy}, label_style(size, color, ux, uy), r > 1});
+            out.push_back({{at.x + 9 * r * ux, at.y + 8 * r * uy}, label_style(size, color, ux, uy), r > r0});
         }
     return out;
 }
@@ -237,6 +253,7 @@ namespace {
 void set_axes(gfx::Plot& plot, const PanelData& panel) {
     plot.title = panel.title;
     plot.x_axis.title = panel.x_title;
+    plot.x_axis.short_title = panel.x_title_short;
     plot.y_axis.title = panel.y_title;
     plot.x_axis.min = panel.x_min;
     plot.x_axis.max = panel.x_max;
@@ -282,17 +299,96 @@ void draw_bands(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& p
     }
 }
 
-// Circles, segments and arrows (those shorter than 2 pixels left out).
+// The pixels an arrow of the panel is drawn between; none for one shorter than 2 pixels. The points'
+// markers are drawn over the arrows: one that starts in a marker (v and −F at P) starts at its edge instead,
+// and is at least kMinArrow x the text scale long beyond it (in presentation mode P's dot was larger than a
+// short v, which hid under it); one whose tip would end under another marker (−F pointing at T) ends at
+// that marker's nearer edge (the far one where the near one would leave it too short).
+constexpr float kMinArrow = 10;
+std::optional<std::pair<gfx::Vec2, gfx::Vec2>> arrow_pixels(const gfx::PlotTransform& tf,
+                                                            const PanelData& panel, const ArrowData& a) {
+    gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+    const float len = std::hypot(to.x - from.x, to.y - from.y);
+    if (!(len >= 2)) return std::nullopt;
+    const gfx::Vec2 u{(to.x - from.x) / len, (to.y - from.y) / len};
+    // Each marker as a disc around its shape (a square's corners included), its edge and a pixel of gap.
+    struct Disc {
+        gfx::Vec2 c;
+        float r;
+    };
+    std::vector<Disc> discs;
+    for (const PointData& p : panel.points)
+        if (p.mark != Mark::none)
+            discs.push_back(
+                {to_px(tf, p.at), 0.5f * p.size * (p.mark == Mark::circle ? 1.0f : 1.42f) + 2.5f});
+    // Where the line from + t u enters and leaves a disc (t_in > t_out: it misses the disc).
+    auto crossing = [&](const Disc& d, gfx::Vec2 o) {
+        const float b = u.x * (o.x - d.c.x) + u.y * (o.y - d.c.y);
+        const float q = b * b - ((o.x - d.c.x) * (o.x - d.c.x) + (o.y - d.c.y) * (o.y - d.c.y) - d.r * d.r);
+        const float w = q > 0 ? std::sqrt(q) : -1;
+        return std::pair{-b - w, -b + w};
+    };
+    auto inside = [](const Disc& d, gfx::Vec2 p) { return std::hypot(p.x - d.c.x, p.y - d.c.y) < d.r; };
+    float start = 0;
+    for (const Disc& d : discs)
+        if (inside(d, from)) start = std::max(start, crossing(d, from).second);
+    const float min_len = kMinArrow * std::max(1.0f, panel.text_scale);
+    float end = std::max(len, start + min_len);
+    // Again while a move put the tip under another marker (P and T close together), a few times at most.
+    for (std::size_t k = 0, moves = 0; k < discs.size(); ++k) {
+        if (!inside(discs[k], from + u * end)) continue;
+        if (++moves > 2 * discs.size()) break;
+        const auto [t_in, t_out] = crossing(discs[k], from);
+        // Back to the marker's near edge where the tip is nearer it (and the arrow stays long enough),
+        // else on past its far edge (the head seen beyond it).
+        end = t_in >= start + min_len && end - t_in <= t_out - end ? t_in : t_out + 0.5f * min_len;
+        k = static_cast<std::size_t>(-1); // from the first marker again
+    }
+    to = from + u * end;
+    from = from + u * start;
+    return std::pair{from, to};
+}
+
+// Whether the drawn arrow a runs along the drawn arrow b: a third of a's shaft within the two shafts' half
+// widths and a pixel of b's, where one hides the other.
+bool runs_along_px(std::pair<gfx::Vec2, gfx::Vec2> a, std::pair<gfx::Vec2, gfx::Vec2> b, float reach) {
+    const gfx::Vec2 d = b.second - b.first;
+    const float l2 = d.x * d.x + d.y * d.y;
+    int near = 0;
+    constexpr int kN = 24;
+    for (int k = 0; k <= kN; ++k) {
+        const gfx::Vec2 p = a.first + (a.second - a.first) * (static_cast<float>(k) / kN);
+        const float t =
+            l2 > 0 ? std::clamp(((p.x - b.first.x) * d.x + (p.y - b.first.y) * d.y) / l2, 0.f, 1.f) : 0.f;
+        near += std::hypot(p.x - b.first.x - t * d.x, p.y - b.first.y - t * d.y) <= reach;
+    }
+    return near * 3 > kN + 1;
+}
+
+// Circles, segments and arrows (those shorter than 2 pixels left out). A faded arrow (the why panel's
+// instants behind the live ones) that runs along a later arrow on screen is left out: on a small panel in
+// presentation mode instants apart in the data met in pixels, and the later one stands in for it.
 void draw_shapes(gfx::Canvas& c, const gfx::PlotTransform& tf, const PanelData& panel) {
     for (const CircleData& ci : panel.circles)
         c.circle(to_px(tf, ci.center), static_cast<float>(ci.radius) * tf.pixels_per_unit_x(),
                  {ink_color(ci.ink, 0), ci.width, line_style(ci.dash)});
     for (const SegmentData& s : panel.segments)
         c.line(to_px(tf, s.a), to_px(tf, s.b), {ink_color(s.ink, 0), s.width, line_style(s.dash)});
-    for (const ArrowData& a : panel.arrows) {
-        const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
+    std::vector<std::optional<std::pair<gfx::Vec2, gfx::Vec2>>> pixels;
+    for (const ArrowData& a : panel.arrows) pixels.push_back(arrow_pixels(tf, panel, a));
+    for (std::size_t i = 0; i < panel.arrows.size(); ++i) {
+        const ArrowData& a = panel.arrows[i];
+        const auto& drawn = pixels[i];
+        if (!drawn) continue;
+        bool hidden = false;
+        for (std::size_t j = i + 1; j < panel.arrows.size() && a.opacity < 1 && !hidden; ++j) {
+            const float reach = 0.5f * (a.width + panel.arrows[j].width) + 1.5f;
+            hidden = pixels[j] &&
+                     (runs_along_px(*drawn, *pixels[j], reach) || runs_along_px(*pixels[j], *drawn, reach));
+        }
+        if (hidden) continue;
+        const gfx::Vec2 from = drawn->first, to = drawn->second;
         const float len = std::hypot(to.x - from.x, to.y - from.y);
-        if (len < 2) continue;
         gfx::Color color = ink_color(a.ink, 0);
         color.a *= a.opacity;
         c.arrow(from, to,
@@ -329,7 +425,8 @@ void place_point_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const
         const float dy = p.label_dy != 0 ? static_cast<float>(p.label_dy) : at.y - centre.y;
         placer.place(
             p.label,
-            around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * panel.text_scale, gfx::colors::text),
+            around(at, dx >= 0 ? 1.f : -1.f, dy >= 0 ? 1.f : -1.f, 15 * panel.text_scale, gfx::colors::text,
+                   std::max(1.0f, panel.text_scale)),
             [&](const gfx::dl::Command& cmd) {
                 const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
                 return m && same(m->center, at);
@@ -345,14 +442,15 @@ std::vector<LabelCandidate> arrow_label_places(const ArrowData& a, gfx::Vec2 fro
     const float len = std::hypot(to.x - from.x, to.y - from.y);
     const float ux = (to.x - from.x) / len, uy = (to.y - from.y) / len;
     const gfx::Color color = ink_color(a.ink, 0);
+    const float k = std::max(1.0f, size / 14); // the offsets grow with the text (presentation mode)
     std::vector<LabelCandidate> cands;
     if (a.label_dy != 0)
-        cands.push_back({{to.x, to.y + (a.label_dy < 0 ? -9.f : 9.f)},
+        cands.push_back({{to.x, to.y + (a.label_dy < 0 ? -9 * k : 9 * k)},
                          label_style(size, color, 0, static_cast<float>(a.label_dy))});
-    cands.push_back({{to.x + ux * 6, to.y + uy * 6}, label_style(size, color, ux, uy)});
+    cands.push_back({{to.x + ux * 6 * k, to.y + uy * 6 * k}, label_style(size, color, ux, uy)});
     // Beside the shaft; further off it where the label is asked above or below (the why panel's live arrows
     // slope every way: 9 units off a sloping shaft a label's corner may touch it).
-    const float off = a.label_dy != 0 ? 13.f : 9.f;
+    const float off = k * (a.label_dy != 0 ? 13.f : 9.f);
     for (float along : {0.85f, 0.5f})
         for (float side : {1.f, -1.f}) {
             const float nx = -uy * side, ny = ux * side;
@@ -360,19 +458,19 @@ std::vector<LabelCandidate> arrow_label_places(const ArrowData& a, gfx::Vec2 fro
             cands.push_back({{m.x + nx * off, m.y + ny * off}, label_style(size, color, nx, ny)});
         }
     // Crowded (a short arrow among other labels): the same places further out.
-    cands.push_back({{to.x + ux * 20, to.y + uy * 20}, label_style(size, color, ux, uy)});
+    cands.push_back({{to.x + ux * 20 * k, to.y + uy * 20 * k}, label_style(size, color, ux, uy)});
     for (float side : {1.f, -1.f})
-        cands.push_back({{to.x - uy * side * 22, to.y + ux * side * 22},
+        cands.push_back({{to.x - uy * side * 22 * k, to.y + ux * side * 22 * k},
                          label_style(size, color, -uy * side, ux * side)});
-    cands.push_back({{to.x + ux * 36, to.y + uy * 36}, label_style(size, color, ux, uy), true});
+    cands.push_back({{to.x + ux * 36 * k, to.y + uy * 36 * k}, label_style(size, color, ux, uy), true});
     return cands;
 }
 
 void place_arrow_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const PanelData& panel) {
     for (const ArrowData& a : panel.arrows) {
-        const gfx::Vec2 from = to_px(tf, a.from), to = to_px(tf, a.to);
-        const float len = std::hypot(to.x - from.x, to.y - from.y);
-        if (len < 2 || a.label.empty()) continue;
+        const auto drawn = arrow_pixels(tf, panel, a);
+        if (!drawn || a.label.empty()) continue;
+        const gfx::Vec2 from = drawn->first, to = drawn->second;
         placer.place(
             a.label, arrow_label_places(a, from, to, 14 * panel.text_scale),
             [&](const gfx::dl::Command& cmd) {
@@ -423,7 +521,15 @@ void draw_marks_and_labels(gfx::Canvas& c, const gfx::PlotTransform& tf, const P
     const gfx::Rect inside = tf.area.inset(-1);
     draw_point_markers(c, tf, panel, inside);
     const gfx::Vec2 centre = points_centre(tf, panel);
-    LabelPlacer placer(c, tf);
+    std::vector<gfx::dl::Command> walls;
+    for (const SeriesData& s : panel.series)
+        if (s.labels_off && s.x.size() == s.y.size()) {
+            gfx::dl::Polyline pl;
+            pl.stroke.width = s.width;
+            for (std::size_t k = 0; k < s.x.size(); ++k) pl.points.push_back(tf.to_pixel(s.x[k], s.y[k]));
+            walls.emplace_back(std::move(pl));
+        }
+    LabelPlacer placer(c, tf, std::move(walls));
     place_point_labels(placer, tf, panel, inside, centre);
     place_arrow_labels(placer, tf, panel);
     place_segment_labels(placer, tf, panel, centre);

@@ -25,8 +25,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 using Ms = std::chrono::duration<double, std::milli>;
-// Presentation mode: type, lines and markers this much larger (the panel's font 22 px instead of 15).
-constexpr float kPresentationScale = 1.4f;
 // Without threads (the browser), how long a control held still keeps the curves' slices waiting.
 constexpr std::chrono::milliseconds kSliceRest(200);
 

@@ -12,6 +12,9 @@ namespace fv::app {
 
 // The panel's width in logical pixels (presentation mode's is wider: its type is larger).
 inline constexpr float kPanelWidth = 340, kPresentationPanelWidth = 450;
+// Presentation mode: the pictures' type, lines and markers this much larger (the panel's font 22 px instead
+// of 15).
+inline constexpr float kPresentationScale = 1.4f;
 // The pictures need at least this much width beside the panel; less and the panel goes on top.
 inline constexpr float kMinPicturesWidth = 380;
 

@@ -61,6 +61,7 @@ SeriesData box_series(const Vec2& c, double hw, double hh, const std::string& la
     s.width = 1.4f;
     s.x = {c.x() - hw, c.x() + hw, c.x() + hw, c.x() - hw, c.x() - hw};
     s.y = {c.y() - hh, c.y() - hh, c.y() + hh, c.y() + hh, c.y() - hh};
+    s.labels_off = true; // a label across the dashed outline read as struck through
     return s;
 }
 
@@ -111,6 +112,7 @@ void place_frame(PanelData& panel, const FrameBox& box, const Vec2& C, const Vie
         return;
     }
     panel.x_title = "x / x_{v} on the floor (it stands still; the body wraps round at the edges)";
+    panel.x_title_short = "x / x_{v} on the floor (the body wraps round)";
     const double w = box.width(), left = box.x0 + view.pan.x();
     panel.x_min = left, panel.x_max = left + w;
     panel.y_min = C.y() + box.y0 + view.pan.y(), panel.y_max = C.y() + box.y1 + view.pan.y();
@@ -689,7 +691,11 @@ PanelData mechanism_panel_live(const LiveSim& sim, MechanismBase& base, double r
         va.label_dy = v.y() > 0 ? -1 : 1;
         fa.label_dy = f.y() > 0 ? -1 : 1;
     }
-    if (!mechanism_parallel(sim.params().theta) && (runs_along(fa, va, panel) || runs_along(va, fa, panel))) {
+    // Looser than a faded arrow's (5 % of the span): in presentation mode the panel is smaller and its
+    // arrows wider, and two live arrows within 3 % met on screen.
+    constexpr double kLiveMeet = 0.05;
+    if (!mechanism_parallel(sim.params().theta) &&
+        (runs_along(fa, va, panel, kLiveMeet) || runs_along(va, fa, panel, kLiveMeet))) {
         // In the plane both start at the body: where the friction lies along the velocity (the Dahl
         // friction has not turned yet, or v is so short that it is all tail), the friction is drawn beside
         // it, shifted across its own line by 4 % of the axes' span, away from v.

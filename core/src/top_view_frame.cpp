@@ -16,7 +16,12 @@ std::optional<FrameChoice> parse_frame(const std::string& s) {
 }
 
 BodyOutline body_outline(Model model, const Params& p) {
-    if (model == Model::rigid) return {0.3, 0.22};
+    // Rigid: a block holding P's arrows (v scaled by 0.4, |v| <= 1 + zeta by Eq. (1); the friction 0.5 long),
+    // so that v_b along its top edge meets none of them (a small block's edge crossed them).
+    if (model == Model::rigid) {
+        const double reach = std::max(0.5, 0.4 * (1 + p.zeta)) + 0.1;
+        return {reach, reach};
+    }
     return {1.15 * p.zss() + 0.25, 1.15 * p.zss() + 0.18};
 }
 

@@ -653,15 +653,24 @@ float centred(float c, float w, float lo, float hi) {
     return w >= hi - lo ? 0.5f * (lo + hi) : std::clamp(c, lo + 0.5f * w, hi - 0.5f * w);
 }
 
+// The x title within the plot's width: the title, else its short form, else the shorter of them made as
+// small as fits (two plots side by side: a title wider than its plot overlapped its neighbour's and was cut
+// off at the window's edges).
 void draw_x_title(Canvas& canvas, const Plot& plot, const Frame& fr) {
     const Rect& A = fr.layout.tf.area;
-    const FittedText f =
-        fit_text(canvas, plot.x_axis.title, plot.font_size + 1, plot.font_size, fr.bounds.width(), false);
+    const float avail = fr.bounds.width() - 4;
+    std::string title = plot.x_axis.title;
+    FittedText f = fit_text(canvas, title, plot.font_size + 1, plot.font_size, avail, false);
+    if (f.width > avail && !plot.x_axis.short_title.empty()) {
+        title = plot.x_axis.short_title;
+        f = fit_text(canvas, title, plot.font_size + 1, plot.font_size, avail, false);
+    }
+    if (f.width > avail) f.size *= avail / f.width, f.width = avail;
     TextStyle tt;
     tt.size = f.size, tt.halign = HAlign::Center, tt.valign = VAlign::Bottom;
     canvas.text(
         {centred(0.5f * (A.x0 + A.x1), f.width, fr.bounds.x0, fr.bounds.x1), fr.bounds.y1 - fr.below - 4},
-        plot.x_axis.title, tt);
+        title, tt);
 }
 
 void draw_y_title(Canvas& canvas, const Plot& plot, const Frame& fr) {

@@ -31,6 +31,7 @@ struct SeriesData {
     std::vector<double> y_err; // symmetric error bars (measured data); width 0 draws markers only
     int palette = -1;          // Ink::automatic: this palette entry (-1: the series' index)
     float mark_size = 0;       // 0: the renderer's default (the map's cell marks are smaller, to fit a cell)
+    bool labels_off = false;   // no label may touch the line (the top view's body outline, small round P)
 };
 
 struct SegmentData {
@@ -101,6 +102,7 @@ enum class Legend {
 
 struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
+    std::string x_title_short; // drawn where x_title does not fit the panel's width (empty: x_title, smaller)
     bool equal_aspect = false;
     bool log_x = false; // a logarithmic x axis (x_min > 0)
     std::optional<double> x_min, x_max, y_min, y_max;

@@ -27,7 +27,8 @@ struct FrameBox {
     bool operator!=(const FrameBox& o) const { return !(*this == o); }
 };
 
-// The half sizes of the body's outline drawn around P (rigid: a small block; Dahl: around the z_ss circle).
+// The half sizes of the body's outline drawn around P (rigid: around P's arrows; Dahl: around the z_ss
+// circle).
 struct BodyOutline {
     double half_w = 0, half_h = 0;
 };

@@ -17,7 +17,10 @@ Color palette(std::size_t index);
 
 struct Axis {
     std::string title; ///< Markup allowed, e.g. "friction ratio r_{x}".
-    bool log = false;  ///< Log10 scale; non-positive values are skipped.
+    /// Drawn instead of `title` where that does not fit the plot's width (x axis): the same meaning, fewer
+    /// words. Empty: the title, smaller.
+    std::string short_title;
+    bool log = false; ///< Log10 scale; non-positive values are skipped.
     bool grid = true;
     std::optional<double> min, max; ///< Fixed ends; unset ends are auto-fitted with a little padding.
     void set_range(double lo, double hi) { min = lo, max = hi; }
