@@ -46,8 +46,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
             check(frame >= 0, "negative frame");
             const fv::app::UiEdits e = fv::app::script_edits(s, frame, ui);
             if (e.params) check(fv::range_error(*e.params).empty(), "parameters outside the range table");
-            if (e.speed) check(fv::inside(*e.speed, fv::app::kSpeedRange), "speed");
-            if (e.trail_periods) check(fv::inside(*e.trail_periods, fv::app::kTrailRange), "trail");
+            if (e.speed) check(fv::inside(*e.speed, fv::kSpeedRange), "speed");
+            if (e.trail_periods) check(fv::inside(*e.trail_periods, fv::kTrailRange), "trail");
             if (e.amplitude_um) check(fv::inside(*e.amplitude_um, fv::kAmplitudeRange), "amplitude");
             if (e.frequency_khz) check(fv::inside(*e.frequency_khz, fv::kFrequencyRange), "frequency");
             if (e.vb_m_s) check(fv::inside(*e.vb_m_s, fv::kVbRange), "vb");

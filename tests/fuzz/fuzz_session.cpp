@@ -34,8 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const fv::app::Session s = fv::app::parse_session(text, "s.json");
         check(fv::range_error(s.params).empty(), "parameters outside the range table");
         check(in(s.amplitude_um, fv::kAmplitudeRange) && in(s.frequency_khz, fv::kFrequencyRange), "A or f");
-        check(in(s.speed, fv::app::kSpeedRange), "speed");
-        check(in(s.view.zoom, fv::app::kZoomRange) && in(s.view.trail_periods, fv::app::kTrailRange), "view");
+        check(in(s.speed, fv::kSpeedRange), "speed");
+        check(in(s.view.zoom, fv::kZoomRange) && in(s.view.trail_periods, fv::kTrailRange), "view");
         check(std::isfinite(s.view.pan.x()) && std::isfinite(s.view.pan.y()), "pan");
         check(s.pins.size() <= fv::kMaxPins, "pins");
         for (const fv::PinnedCurve& p : s.pins) {
