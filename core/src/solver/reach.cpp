@@ -636,10 +636,11 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             // Repeating, or closing in (a slow creep for k = 1, a slow approach to a period-k orbit: zeta
             // 0.244623, theta 62 deg, rdisp 2, i 10 closes in on a period-2 orbit at 0.992 a period).
             if (!(d < 0.02 && (d < 1e-7 || d <= dprev))) continue;
-            // Near an unstable period-1 state, not a k whose multiple repeats far better (the motion closing
-            // in on a period-4 orbit passes for period 2 as well, and Newton's method on the 2-times map
-            // would spend its periods first).
-            if (k > 1 && have_unstable && repeats_better(xs, k, d)) continue;
+            // Not a k whose multiple repeats far better: on or near a period-4 orbit the distance after 2
+            // periods holds steady and passes for closing in, and Newton's method on the 2-times map would
+            // spend its periods first, again and again (zeta 0.448, theta 8.1 deg, rdisp 37, i 10 from
+            // sliding: 130 -> 508 periods until this held for every k, not only beside an unstable state).
+            if (k > 1 && repeats_better(xs, k, d)) continue;
             // Just tried from near here: again once the motion has gone on for 16 k periods, and (a long
             // approach, still moving) as long again as before the last try.
             const double wait = d < 1e-7 ? 16.0 * k : std::max(16.0 * k, tried_at[k]);
