@@ -14,20 +14,11 @@ Usage: render_lesson_test.py FRICTIONVIZ LESSONS_JSON SCRATCH_DIR"""
 import json, os, re, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from render_files import png_rows, words  # noqa: E402
+from render_files import check, failures, png_rows, words  # noqa: E402
 
 fv, lessons_json, scratch = sys.argv[1], sys.argv[2], sys.argv[3]
 shutil.rmtree(scratch, ignore_errors=True)
 steps = json.load(open(lessons_json, encoding="utf-8"))["steps"]
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
 def render(out, *args):
     os.makedirs(out, exist_ok=True)
     return subprocess.run([fv, "render", *args, "--out", out], capture_output=True, text=True)

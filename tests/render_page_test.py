@@ -7,19 +7,10 @@ Usage: render_page_test.py FRICTIONVIZ SCRATCH_DIR"""
 import json, os, re, shutil, subprocess, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from render_files import png_rows, words  # noqa: E402
+from render_files import check, failures, png_rows, words  # noqa: E402
 
 fv, scratch = sys.argv[1], sys.argv[2]
 shutil.rmtree(scratch, ignore_errors=True)
-failures = []
-
-
-def check(ok, what):
-    print(("ok   " if ok else "FAIL ") + what)
-    if not ok:
-        failures.append(what)
-
-
 def render(out, *args):
     os.makedirs(out, exist_ok=True)
     return subprocess.run([fv, "render", "--figure", "fig5", "--out", out, *args], capture_output=True, text=True)
