@@ -34,6 +34,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <random>
 #include <regex>
 #include <string>
 #include <tuple>
@@ -397,6 +398,74 @@ TEST_CASE("No label of a figure lies on an arrow or a marker", "[layout][labels]
         }
     }
     CHECK(labels > 50);
+}
+
+TEST_CASE("command_bounds holds all a command can touch: the labels' quick test skips nothing they cover",
+          "[layout][labels]") {
+    // The label placer skips a command whose box stays away from a label's; were the box too small, a label
+    // would be placed on what it should avoid. Random commands of every kind against random rectangles:
+    // whatever touches a rectangle (within pad) has a box that reaches it.
+    namespace dl = fv::gfx::dl;
+    const fv::gfx::FontSet& fonts = session().fonts();
+    std::mt19937 rng(20061);
+    std::uniform_real_distribution<float> at(-50, 150), len(0, 40), width(0, 6);
+    const auto point = [&] { return Vec2{at(rng), at(rng)}; };
+    const auto stroke = [&] { return fv::gfx::Stroke{fv::gfx::colors::black, width(rng)}; };
+    int touching = 0;
+    for (int n = 0; n < 4000; ++n) {
+        dl::Command c;
+        switch (n % 8) {
+        case 0: {
+            dl::Polyline p{{point(), point(), point()}, stroke(), n % 16 == 0};
+            if (n % 24 == 0) p.points[1] = {NAN, NAN}; // a break in the line
+            c = p;
+            break;
+        }
+        case 1: {
+            dl::Marker m{point(), {}};
+            m.style.size = len(rng), m.style.edge_width = width(rng);
+            c = m;
+            break;
+        }
+        case 2:
+            c = dl::Circle{point(), len(rng), stroke()};
+            break;
+        case 3:
+            c = dl::FillCircle{point(), len(rng), fv::gfx::colors::black};
+            break;
+        case 4: {
+            dl::Arrow a{point(), point(), {}};
+            a.style.shaft = stroke(), a.style.head_width = len(rng);
+            c = a;
+            break;
+        }
+        case 5:
+            c = dl::FillTriangle{point(), point(), point(), fv::gfx::colors::black};
+            break;
+        case 6: {
+            dl::Text t{point(), "r_x = 0.25", {}, {}};
+            t.style.size = 8 + len(rng) / 2;
+            c = t;
+            break;
+        }
+        default: {
+            const Vec2 a = point();
+            c = dl::StrokeRect{{a.x, a.y, a.x + len(rng), a.y + len(rng)}, stroke()};
+        }
+        }
+        const Vec2 a = point();
+        const Rect r{a.x, a.y, a.x + len(rng), a.y + len(rng)};
+        const float pad = n % 3 == 0 ? 0.0f : 1.5f;
+        if (!fv::gfx::command_touches(c, r, fonts, pad)) continue;
+        ++touching;
+        const Rect box = fv::gfx::command_bounds(c, fonts);
+        INFO("command " << n << " (kind " << n % 8 << ")");
+        CHECK(box.x0 <= r.x1 + pad);
+        CHECK(box.x1 >= r.x0 - pad);
+        CHECK(box.y0 <= r.y1 + pad);
+        CHECK(box.y1 >= r.y0 - pad);
+    }
+    CHECK(touching > 200); // the rectangles met enough commands of every kind to say something
 }
 
 TEST_CASE("Every force plot states its sign convention on the figure and in its caption", "[layout][force]") {

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <type_traits>
+#include <vector>
 
 namespace fv::gfx {
 
@@ -57,6 +58,22 @@ bool ring_meets(Vec2 c, float radius, float half_width, const Rect& r) {
     return nearest(c, r) <= radius + half_width && farthest(c, r) >= radius - half_width;
 }
 
+constexpr Rect kNoBox{1, 1, 0, 0}; // empty: overlaps nothing
+
+// The box around the finite points, grown by d; non-finite points are skipped, as segment_meets skips
+// their segments.
+Rect points_box(const std::vector<Vec2>& ps, float d) {
+    Rect r = kNoBox;
+    bool any = false;
+    for (const Vec2& p : ps) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+        r = any ? Rect{std::min(r.x0, p.x), std::min(r.y0, p.y), std::max(r.x1, p.x), std::max(r.y1, p.y)}
+                : Rect{p.x, p.y, p.x, p.y};
+        any = true;
+    }
+    return any ? grow(r, d) : kNoBox;
+}
+
 } // namespace
 
 bool command_touches(const dl::Command& cmd, const Rect& r0, const FontSet& fonts, float pad) {
@@ -95,6 +112,33 @@ bool command_touches(const dl::Command& cmd, const Rect& r0, const FontSet& font
                        segment_meets(e, a, r);
             } else {
                 return false; // fills (backgrounds), images, clips
+            }
+        },
+        cmd);
+}
+
+Rect command_bounds(const dl::Command& cmd, const FontSet& fonts) {
+    return std::visit(
+        [&](const auto& c) -> Rect {
+            using T = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<T, dl::Polyline>) {
+                return points_box(c.points, 0.5f * c.stroke.width);
+            } else if constexpr (std::is_same_v<T, dl::Marker>) {
+                return points_box({c.center}, 0.5f * c.style.size + c.style.edge_width);
+            } else if constexpr (std::is_same_v<T, dl::Circle>) {
+                return points_box({c.center}, c.radius + 0.5f * c.stroke.width);
+            } else if constexpr (std::is_same_v<T, dl::FillCircle>) {
+                return points_box({c.center}, c.radius);
+            } else if constexpr (std::is_same_v<T, dl::Arrow>) {
+                return points_box({c.from, c.to}, 0.5f * std::max(c.style.shaft.width, c.style.head_width));
+            } else if constexpr (std::is_same_v<T, dl::FillTriangle>) {
+                return points_box({c.a, c.b, c.c}, 0);
+            } else if constexpr (std::is_same_v<T, dl::Text>) {
+                return text_bounds(c, fonts);
+            } else if constexpr (std::is_same_v<T, dl::StrokeRect>) {
+                return grow(c.rect, 0.5f * c.stroke.width);
+            } else {
+                return kNoBox;
             }
         },
         cmd);

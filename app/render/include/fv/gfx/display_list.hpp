@@ -152,6 +152,10 @@ struct DisplayList {
 /// within `pad` of the rectangle `r`; clips, images and page-sized fills never do. Text boxes use the
 /// FontSet's metrics.
 bool command_touches(const dl::Command& c, const Rect& r, const FontSet& fonts, float pad = 0);
+/// A box around everything command_touches can meet (stroke widths and text boxes included): a command
+/// whose box stays more than `pad` away from `r` does not touch it. Commands that touch nothing (fills,
+/// images, clips) get an empty box (x0 > x1).
+Rect command_bounds(const dl::Command& c, const FontSet& fonts);
 /// Clips segment a-b to the rectangle [x0, x1] x [y0, y1] (Liang–Barsky); false when it misses it.
 bool clip_segment(double& ax, double& ay, double& bx, double& by, double x0, double y0, double x1, double y1);
 /// The box a text occupies (its runs, rotated with it), in logical units.
