@@ -4,7 +4,9 @@
 #include "gui/app_state.hpp"
 #include "gui/lessons.hpp"
 #include "gui/script.hpp"
+#include "gui/session.hpp"
 
+#include "fv/measurements.hpp"
 #include "fv/param_ranges.hpp"
 
 #include <catch2/catch.hpp>
@@ -224,4 +226,78 @@ TEST_CASE("lessons: the mean step shows compare mode, A across and B along: both
     next.lesson = n + 1;
     a.sync(next);
     CHECK_FALSE(a.ui().session.compare);
+}
+
+TEST_CASE(
+    "lessons: the measurements step brings the synthetic file's points as an example and the user's data win",
+    "[gui][lessons][data]") {
+    const LessonStep* m = find_lesson_step("measurements");
+    REQUIRE(m);
+    REQUIRE(m->setup.data);
+    // The points are tests/data's synthetic set (fitted in test_gui_data.cpp: r_disp 3, i 0), called
+    // synthetic, and the step's own curve is not theirs (Fit has something to do).
+    const MeasurementSet file = read_measurements(FV_TEST_DATA_DIR "/synthetic_theta90_rdisp3_i0.csv");
+    const MeasurementSet& ex = *m->setup.data;
+    CHECK(ex.synthetic);
+    REQUIRE(ex.points.size() == file.points.size());
+    for (std::size_t k = 0; k < ex.points.size(); ++k) {
+        CHECK(ex.points[k].zeta == file.points[k].zeta);
+        CHECK(ex.points[k].rx == file.points[k].rx);
+        CHECK(ex.points[k].sigma == file.points[k].sigma);
+        CHECK(ex.points[k].theta_deg == file.points[k].theta_deg);
+    }
+    CHECK((m->setup.params.rdisp != 3 || m->setup.params.i != 0));
+
+    const int step = static_cast<int>(m - lesson_steps().data()) + 1;
+    AppState a(Model::dahl, Params{0.15, kPi / 2, 2, 1}, 0.7, 60);
+    UiEdits go;
+    go.lesson = step;
+    a.sync(go);
+    REQUIRE(a.ui().data);
+    CHECK(a.ui().data->points.size() == ex.points.size());
+    CHECK(a.ui().data_is_example);
+    CHECK(session_of(a.ui()).data_file.empty()); // no file behind them to save
+    // A session or a link during the step brings them back.
+    AppState reopened(session_of(a.ui()), std::nullopt);
+    REQUIRE(reopened.ui().data);
+    CHECK(reopened.ui().data_is_example);
+
+    // Back: a step without example points takes them away.
+    UiEdits back;
+    back.lesson = step - 1;
+    a.sync(back);
+    CHECK_FALSE(a.ui().data);
+
+    // Data the user opened stay over the step's example and are what a session saves.
+    UiEdits load;
+    load.load_data = FV_TEST_DATA_DIR "/synthetic_theta0_rdisp1_i1_vb.csv";
+    a.sync(load);
+    REQUIRE(a.ui().data);
+    const std::size_t n = a.ui().data->points.size();
+    a.sync(go);
+    REQUIRE(a.ui().data);
+    CHECK_FALSE(a.ui().data_is_example);
+    CHECK(a.ui().data->points.size() == n);
+    CHECK(a.ui().data->from_vb);
+    a.sync(back);
+    CHECK(a.ui().data);
+    CHECK_FALSE(session_of(a.ui()).data_file.empty());
+}
+
+TEST_CASE("lessons: a step's bad example data are refused with the step and the file's line",
+          "[gui][lessons][data]") {
+    const std::string setup = R"({"model": "dahl", "zeta": 0.3, "theta": 90, "rdisp": 2, "i": 1, "data": )";
+    CHECK(parse_lessons(step_json(setup + R"({"name": "x", "lines": ["zeta,r_x", "0.1,0.3"]}})"))
+              .front()
+              .setup.data->points.size() == 1);
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "lines": ["zeta,r_x", "0.1,7"]}})")),
+                      Catch::StartsWith("lessons: step 1 (a): data: x:2:"));
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "lines": ["zeta,r_x"]}})")),
+                      Catch::StartsWith("lessons: step 1 (a): data: x:2:1: no data rows"));
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "lines": []}})")),
+                      Catch::StartsWith("lessons: step 1 (a): data: x:"));
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"("x.csv"})")),
+                      Catch::StartsWith("lessons: step 1 (a): \"data\" is not an object"));
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "rows": []}})")),
+                      Catch::StartsWith("lessons: step 1 (a): unknown key \"rows\""));
 }

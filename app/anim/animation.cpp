@@ -149,7 +149,8 @@ SetupLoop::SetupLoop(const Spec& spec, const Setup& s, bool with_curves, bool wi
     rx = steady.rx;
     // The map only where it is shown (A's lower panel; it takes a few seconds), as the app asks for it.
     if (with_curves)
-        curves = compute_ratio_curves({s.model, s.params, with_map, ratio_zeta_max(nullptr), s.start});
+        curves = compute_ratio_curves(
+            {s.model, s.params, with_map, ratio_zeta_max(spec.data ? &*spec.data : nullptr), s.start});
     // Start where the continuous-time solver's period ends (its fixed point), then let the animation's own
     // stepping settle on its fixed point, a whole number of periods at a time.
     Vec2 lag = Vec2::Zero();
@@ -297,7 +298,7 @@ void Frames::paint(gfx::Canvas& canvas, gfx::Vec2 page, int k) {
     PanelData force = force_panel_live(sim, a_.curves, 0, b);
     shift_panel_x(force, -sim.tau());
     force.x_title = "time τ − τ_{now}";
-    RatioOverlay overlay{nullptr, spec_.vv_m_s};
+    RatioOverlay overlay{spec_.data ? &*spec_.data : nullptr, spec_.vv_m_s};
     overlay.b = b;
     panels.top_view = std::move(top);
     panels.force = std::move(force);

@@ -45,6 +45,7 @@ anim::Spec lesson_spec(int lesson) {
     s.panel = u.panel;
     s.view = anim::View::dashboard;
     if (u.b) s.view = anim::View::compare, s.b = *u.b;
+    s.data = u.data;
     return s;
 }
 
@@ -100,6 +101,9 @@ void render_lesson(int lesson, const std::string& dir_arg, const PixelSize& size
     j["panel"] = panel_name(s.panel);                // the lower-right panel drawn, as the step sets it
     j["setup"] = share_link(s.model, s.params, s.steady.start, s.frame);
     if (step.setup.b) j["setup_b"] = share_link(s.b.model, s.b.params, s.b.start, s.frame); // compare mode
+    if (s.data) // the step's example points, on the r_x(zeta) panel
+        j["data"] = {
+            {"name", s.data->file}, {"points", s.data->points.size()}, {"synthetic", s.data->synthetic}};
     j["files"] = names;
     j["version"] = "frictionviz " FV_VERSION;
     files.emplace_back(id + ".json", j.dump(2) + "\n");

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "fv/lower_panel.hpp"
+#include "fv/measurements.hpp"
 #include "fv/params.hpp"
 #include "fv/setup.hpp"
 #include "fv/steady_state.hpp"
@@ -41,6 +42,7 @@ struct AnimationSpec {
     Setup b =
         compare_default(Setup{}); // the compare view's setup B (its solver options: steady's, B's start)
     std::string title;            // a line above the caption (a lesson step's title); none when empty
+    std::optional<MeasurementSet> data; // points on the r_x(zeta) panel (a lesson step's example points)
 };
 
 } // namespace fv

@@ -42,6 +42,10 @@ void set_up(UiEdits& e, const LessonSetup& u) {
         e.b_setup = *u.b;
     else
         e.b_setup.reset();
+    if (u.data)
+        e.example_data = *u.data, e.drop_example_data = false;
+    else
+        e.drop_example_data = true, e.example_data.reset();
 }
 
 // "" when the parameters may be shown: inside the range table and with a finite physical view (what the
@@ -73,7 +77,15 @@ std::string AppState::show_session(const Session& s, std::optional<MeasurementSe
     ui_.session = s;             // the session's state, without its data file (read by the caller)
     ui_.session.view.rewind = 0; // the simulation restarts: no history to look back into
     ui_.data.reset();
-    const std::string loaded = data ? show_measured(ui_, std::move(*data)) : "";
+    std::string loaded;
+    if (data) {
+        loaded = show_measured(ui_, std::move(*data));
+    } else if (s.lesson >= 1 && s.lesson <= static_cast<int>(lesson_steps().size())) {
+        // A session or link during a lesson step with example points: the step's points, as Next showed them
+        // (a session saves no file for them).
+        const LessonSetup& u = lesson_steps()[static_cast<std::size_t>(s.lesson - 1)].setup;
+        if (u.data) loaded = show_measured(ui_, *u.data), ui_.data_is_example = true;
+    }
     for (SetupRun* run : {&a_, &b_})
         run->set_history_periods(std::max(ui_.session.view.trail_periods, kHistoryPeriods));
     a_.apply(ui_.session.a());
@@ -193,6 +205,13 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
     }
     if (e.load_data) ui_.status = load_measured(ui_, *e.load_data), data_changed = true;
     if (e.clear_data && ui_.data) ui_.data.reset(), ui_.status = "data cleared", data_changed = true;
+    if (e.drop_example_data && ui_.data && ui_.data_is_example) ui_.data.reset(), data_changed = true;
+    // Data the user opened stay over a step's example points: a teacher who loaded the class's measurements
+    // and goes Back and Next again finds them still there.
+    if (e.example_data && (!ui_.data || ui_.data_is_example)) {
+        ui_.status = show_measured(ui_, *e.example_data);
+        ui_.data_is_example = true, data_changed = true;
+    }
     if (e.fit_data && ui_.data && ui_.session.model == Model::dahl) {
         fit_.start(ui_);
         ui_.status = "fitting r_disp and i to " + std::to_string(ui_.data->points.size()) + " points…";

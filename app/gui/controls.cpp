@@ -51,6 +51,8 @@ void UiEdits::merge(const UiEdits& o) {
     if (o.frequency_khz) frequency_khz = o.frequency_khz;
     if (o.load_data) load_data = o.load_data, clear_data = false;
     if (o.clear_data) clear_data = true, load_data.reset();
+    if (o.example_data) example_data = o.example_data, drop_example_data = false;
+    if (o.drop_example_data) drop_example_data = true, example_data.reset();
     if (o.open_session) open_session = o.open_session;
     if (o.save_session) save_session = o.save_session;
     fit_data |= o.fit_data;

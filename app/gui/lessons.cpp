@@ -78,7 +78,8 @@ class StepReader {
         if (s.title.empty() || s.text.empty()) fail("empty title or text; allowed: plain words");
         const auto setup = step_.find("setup");
         if (setup == step_.end() || !setup->is_object()) fail("missing \"setup\"; allowed: an object");
-        only(*setup, {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed", "frame", "b"});
+        only(*setup,
+             {"model", "zeta", "theta", "rdisp", "i", "start", "panel", "speed", "frame", "b", "data"});
         LessonSetup& u = s.setup;
         const std::string model = text(*setup, "model");
         if (const auto m = parse_model(model))
@@ -103,7 +104,32 @@ class StepReader {
         else
             fail("frame \"" + frame + "\"; allowed: body, ground");
         if (setup->contains("b")) u.b = read_b(setup->at("b"), {u.model, u.params, u.start});
+        if (setup->contains("data")) u.data = read_data(setup->at("data"));
         return s;
+    }
+
+    // "data": {"name": "...", "lines": ["zeta,r_x", "0.1,0.3", ...]}: a measurements file's lines (the
+    // format of measurements.hpp, zeta columns only: a vb column would need the app's A and f).
+    MeasurementSet read_data(const json& d) const {
+        const char* allowed = "{\"name\": \"...\", \"lines\": [\"zeta,r_x\", ...]} (a measurements file)";
+        if (!d.is_object()) fail(std::string("\"data\" is not an object; allowed: ") + allowed);
+        only(d, {"name", "lines"});
+        const std::string name = text(d, "name");
+        const auto lines = d.find("lines");
+        if (name.empty() || lines == d.end() || !lines->is_array())
+            fail(std::string("\"data\" needs a name and lines; allowed: ") + allowed);
+        std::string csv;
+        for (const json& line : *lines) {
+            if (!line.is_string()) fail("data: a line is not a string; allowed: the file's lines as strings");
+            csv += line.get<std::string>() + "\n";
+        }
+        try {
+            MeasurementSet m = parse_measurements(csv, name);
+            if (m.from_vb) fail("data: a vb column; allowed: zeta (the step cannot know A and f)");
+            return m;
+        } catch (const DataError& e) {
+            fail(std::string("data: ") + e.what());
+        }
     }
 
     // "b": compare mode's setup B, each key as the step's own; one left out is compare_default's of the

@@ -7,6 +7,7 @@
 
 #include "lower_panel.hpp"
 
+#include "fv/measurements.hpp"
 #include "fv/params.hpp"
 #include "fv/setup.hpp"
 #include "fv/steady_state.hpp"   // Start
@@ -28,6 +29,9 @@ struct LessonSetup {
     double speed = 0.25;                   // vibration periods per second (kSpeedRange)
     FrameChoice frame = FrameChoice::body; // what stands still in the top view
     std::optional<Setup> b;                // compare mode with this setup B beside the step's; none: off
+    // Example points shown on the ratio plot with the step (its "data"; the file's comment says whether they
+    // are synthetic). A step without them takes away example points an earlier step showed.
+    std::optional<MeasurementSet> data;
 };
 
 struct LessonStep {

@@ -32,6 +32,7 @@ std::string describe(const MeasurementSet& d, const UiState& ui) {
 std::string show_measured(UiState& ui, MeasurementSet data) {
     const std::string msg = describe(data, ui);
     ui.data = std::move(data);
+    ui.data_is_example = false;
     return msg;
 }
 

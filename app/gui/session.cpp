@@ -293,7 +293,7 @@ std::pair<std::string, ParamRange> number_key(const std::string& ptr) {
 Session session_of(const UiState& ui) {
     Session s;
     static_cast<SessionState&>(s) = ui.session;
-    if (ui.data) {
+    if (ui.data && !ui.data_is_example) { // a lesson's example points come with the lesson, not from a file
         std::error_code ec;
         const auto abs = std::filesystem::absolute(ui.data->file, ec);
         s.data_file = ec ? ui.data->file : abs.lexically_normal().string();

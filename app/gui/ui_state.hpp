@@ -52,7 +52,8 @@ struct UiState {
     // Measured r_x(zeta) shown on the ratio plot (menu, drag-and-drop, --data, script `load`). A file that
     // gives v_b keeps it per point (Measurement::vb): A or f changes convert again, never re-read the file.
     std::optional<MeasurementSet> data;
-    bool fitting = false; // a fit of r_disp and i to the data is running
+    bool data_is_example = false; // `data` are a lesson step's example points, from no file (none to save)
+    bool fitting = false;         // a fit of r_disp and i to the data is running
 };
 
 // Edits of one setup's model, start and parameters.
@@ -85,6 +86,10 @@ struct UiEdits {
     // (the state after this frame's edits).
     std::optional<std::string> open_session, save_session;
     bool clear_data = false, fit_data = false;
+    // A lesson step's example points (shown unless the user opened data); or, for a step without them, take
+    // away example points an earlier step showed (data the user opened stay).
+    std::optional<MeasurementSet> example_data;
+    bool drop_example_data = false;
     bool step = false, reset = false, screenshot = false, export_csv = false, quit = false;
     // Time: scrub to this far behind the live simulation (pauses), one frame back, onto the steady state.
     std::optional<double> rewind;

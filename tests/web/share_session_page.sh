@@ -4,7 +4,9 @@
 #   where the browser refuses (headless Chromium does), into the box the page shows with it selected;
 # - a session file dropped onto the page that does not read changes nothing (the address stays) and the
 #   status line says why, as the desktop app does; one that reads is opened: the address becomes its link
-#   (model, theta, panel and speed from the file).
+#   (model, theta, panel and speed from the file);
+# - File > Open session… opens the browser's file input for .json; the session chosen (saved during lesson
+#   step 8) opens with the step's card and its example points (the status line counts them).
 #   share_session_page.sh SITE_DIR OUTDIR LINK
 set -euo pipefail
 site=$1 out=$2 link=$3
@@ -14,7 +16,7 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cp "$site/frictionviz.js" "$site/frictionviz.wasm" "$here/page_input.js" "$tmp/"
 cp "$here/share_session.html" "$tmp/share.html"
-bash "$here/screenshot.sh" "$tmp" "share.html$link" "$out/share-session.html" 1280 800 7000 1 |
+bash "$here/screenshot.sh" "$tmp" "share.html$link" "$out/share-session.png" 1280 800 10000 1 |
   tee "$out/share-session-console.txt"
 log=$out/share-session-console.txt
 fail=0
@@ -40,4 +42,17 @@ for kv in theta=45 model=rigid panel=map speed=2; do
   esac
 done
 case $good in *"opened session"*"class.json"*) echo "$good" ;; *) echo "no 'opened session' in: $good" >&2; fail=1 ;; esac
+grep -aq 'fv-share: file input opened, accept .*\.json' "$log" ||
+  { echo "File > Open session… did not open the browser's file input for .json" >&2; fail=1; }
+input=$(grep -ao 'fv-share: after input: [^"]*' "$log" | tail -1)
+for kv in theta=60 rdisp=3 i=0 lesson=8; do
+  case "&$(printf '%s' "$input" | sed 's/^fv-share: after input: ?//; s/ status .*//')&" in
+    *"&$kv&"*) ;;
+    *) echo "the session chosen in the file input did not open ($kv missing): '$input'" >&2; fail=1 ;;
+  esac
+done
+case $input in
+  *"opened session"*"lesson8.json"*"16 points"*) echo "$input" ;;
+  *) echo "expected 'opened session lesson8.json' with the step's 16 example points in: $input" >&2; fail=1 ;;
+esac
 exit $fail
