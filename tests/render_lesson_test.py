@@ -31,7 +31,7 @@ def pdf_text(pdf):
 
 # What only each lower panel draws: its title or an axis title (fv/live_panels.cpp).
 PANEL_MARK = {"why": "mechanism now", "loop": "vibration displacement", "map": "vibration angle",
-              "curves": "friction ratio"}
+              "curves": "friction ratio", "setup": "the experiment"}
 
 for k, step in enumerate(steps, 1):
     setup = step["setup"]

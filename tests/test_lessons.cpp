@@ -116,7 +116,7 @@ TEST_CASE("lessons: a bad lessons file is refused with the step, what was wrong 
     CHECK_THROWS_WITH(
         parse_lessons(
             step_json(R"({"model": "rigid", "zeta": 0.3, "theta": 0, "rdisp": 2, "i": 1, "panel": "big"})")),
-        "lessons: step 1 (a): panel \"big\"; allowed: curves, map, loop, why");
+        "lessons: step 1 (a): panel \"big\"; allowed: curves, map, loop, why, setup");
     CHECK_THROWS_WITH(parse_lessons(step_json(ok, R"("colour": "red", )")),
                       Catch::StartsWith("lessons: step 1 (a): unknown key \"colour\""));
     CHECK_THROWS_WITH(parse_lessons(step_json(R"({"model": "rigid", "theta": 0, "rdisp": 2, "i": 1})")),

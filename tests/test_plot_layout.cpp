@@ -24,6 +24,7 @@
 #include "fv/format.hpp"
 #include "fv/live_panels.hpp"
 #include "fv/ode_solver.hpp"
+#include "fv/setup_picture.hpp"
 #include "tools/figure_examples.hpp"
 
 #include "layout_checks.hpp"
@@ -578,6 +579,53 @@ TEST_CASE("The why panel reads at every angle: no text on text, label on a shape
             }
     CHECK(labels > 1000);
     CHECK(arrows > 4 * 2 * 2 * 16 * 8); // the live two and the faded instants
+}
+
+TEST_CASE("The setup picture: the shake at theta from v_b, no axes, readable at every angle and size",
+          "[layout][labels][live][setup]") {
+    // The lower panel "setup" (the experiment) at 1280x800 and 1920x1080, and enlarged as in presentation
+    // mode: no text on text, no label on a shape, no arrow on another; a drawing, so no tick labels; the
+    // shake in the view from above along (cos theta, sin theta), v_b along x.
+    fv::app::RenderSession& s = session();
+    for (const Vec2 screen : {Vec2{1280, 800}, Vec2{1920, 1080}})
+        for (const float k : {1.0f, 1.5f})
+            for (const double theta_deg : {0.0, 30.0, 90.0, 150.0, 180.0}) {
+                const double theta = theta_deg * fv::kPi / 180;
+                const fv::PanelData setup = fv::setup_panel(theta);
+                CHECK_FALSE(setup.axes);
+                CHECK(setup.title.find(fv::format_number("%.0f", theta_deg) + "°") != std::string::npos);
+                // The view from above: the shake's arrows from the block's centre both ways along the angle.
+                int shakes = 0;
+                for (const fv::ArrowData& a : setup.arrows) {
+                    const fv::Vec2 d = a.to - a.from;
+                    if (a.ink != fv::Ink::tip || a.from.x() < 6) continue; // the side view's along x
+                    ++shakes;
+                    CHECK(std::abs(d.x() * std::sin(theta) - d.y() * std::cos(theta)) < 1e-12);
+                }
+                CHECK(shakes == 2);
+                const Rect lower =
+                    fv::app::layout_dashboard({346 * screen.x / 1280, 4, screen.x - 4, screen.y - 4}).ratio;
+                fv::gfx::Canvas& canvas = s.canvas();
+                canvas.begin(screen, 1, fv::gfx::colors::white);
+                fv::app::paint_panel(canvas, fv::app::enlarged(setup, k), lower);
+                canvas.end_recording();
+                const DisplayList& list = canvas.display_list();
+                INFO("theta " << theta_deg << " on " << screen.x << "x" << screen.y << ", text x" << k);
+                CHECK(overlapping_texts(list, s.fonts(), 1.0f) == "");
+                CHECK(label_on_shape(list, s.fonts()) == "");
+                CHECK(arrow_on_arrow(list) == "");
+                int words = 0;
+                for (const auto& c : list.commands)
+                    if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
+                        ++words;
+                        // No tick labels: no text is a number.
+                        CHECK(t->text.find_first_not_of("0123456789.−-") != std::string::npos);
+                    }
+                CHECK(words >= 10);
+                // The data area takes the room the axes would have (a few units from the panel's sides).
+                for (const fv::gfx::Region& r : list.regions)
+                    if (r.role == "data") CHECK(r.rect.x0 - lower.x0 < 10);
+            }
 }
 
 namespace {

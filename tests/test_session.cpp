@@ -303,7 +303,7 @@ TEST_CASE("session JSON: a bad file is refused with FILE:LINE:COL at the offendi
              Case{"{\"version\": 1,\n \"start\": true}",
                   "s.json:2:11: start: expected a string, got true/false"},
              Case{"{\"version\": 1,\n \"panel\": \"plot\"}",
-                  "s.json:2:11: panel = \"plot\"; allowed: curves, map, loop, why"},
+                  "s.json:2:11: panel = \"plot\"; allowed: curves, map, loop, why, setup"},
              Case{"{\"version\": 1,\n \"zetta\": 1}",
                   "s.json:2:2: unknown key \"zetta\"; allowed: version, model, zeta"},
              Case{"{\"version\": 1,\n \"view\": {\"zoom\": 2, \"tilt\": 1}}",

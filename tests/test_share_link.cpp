@@ -341,7 +341,7 @@ TEST_CASE(
     const std::string long_pins(kMaxPinsText + 1, '1');
     for (const Case& c : {
              Case{"?zeta=0.4&panel=graph",
-                  "column 17: panel = 'graph'; allowed: curves, map, loop, why; ignored"},
+                  "column 17: panel = 'graph'; allowed: curves, map, loop, why, setup; ignored"},
              Case{"?zeta=0.4&present=yes", "column 19: present = 'yes'; allowed: 1, 0; ignored"},
              Case{"?zeta=0.4&speed=100",
                   "column 17: speed = 100 is out of range; allowed: speed in [0.05, 10]; "

@@ -9,14 +9,24 @@
 
 #include "anim/animation.hpp"
 
+#include "fv/lower_panel.hpp"
 #include "fv/units.hpp"
 
 #include <cstdio>
 #include <memory>
+#include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace fv::cli {
 namespace {
+
+// The lower panels' names (fv/lower_panel.hpp), for --panel's check.
+std::vector<std::string> panel_name_list() {
+    std::vector<std::string> v;
+    for (LowerPanel p : kLowerPanels) v.push_back(panel_name(p));
+    return v;
+}
 
 // "animate  [##########..........]  60/120 frames" on one terminal line, redrawn in place.
 void draw_progress(int done, int total) {
@@ -103,8 +113,9 @@ Command add_animate_command(CLI::App& root) {
            "--panel", a->panel,
            "the dashboard's lower-right panel, as the app's: curves (r_x(zeta)), map (the (zeta, theta) "
            "map of r_x, Dahl model; a few seconds more), loop (the asperity's hysteresis) or why (the "
-           "mechanism, the paper's Fig. 4); not with --view scene")
-        ->check(CLI::IsMember({"curves", "map", "loop", "why"}))
+           "mechanism, the paper's Fig. 4) or setup (the experiment: a block pressed on a floor, pulled and "
+           "shaken at theta); not with --view scene")
+        ->check(CLI::IsMember(panel_name_list()))
         ->capture_default_str();
     return {
         cmd, [a, cmd] {

@@ -284,6 +284,7 @@ void set_axes(gfx::Plot& plot, const PanelData& panel) {
     plot.y_axis.min = panel.y_min;
     plot.y_axis.max = panel.y_max;
     plot.equal_aspect = panel.equal_aspect;
+    plot.axes = panel.axes;
     plot.font_size *= panel.text_scale;
     plot.top_scale = panel.top_scale;
     plot.top_title = panel.top_title;

@@ -278,7 +278,7 @@ AppState::Actions AppState::sync(const UiEdits& edits, bool wait) {
         spec.params = ui_.session.params;
         spec.steady.start = ui_.session.start;
         spec.frame = ui_.session.view.frame; // the top view as on screen
-        spec.panel = ui_.session.panel;      // and the lower panel (curves, map, loop, why)
+        spec.panel = ui_.session.panel;      // and the lower panel (curves, map, loop, why, setup)
         spec.vv_m_s = std::isfinite(ui_.vv_m_s) ? ui_.vv_m_s : 0;
         // In compare mode the dashboard shows both setups, as on screen.
         if (ui_.session.compare && spec.view == AnimationView::dashboard) {

@@ -447,6 +447,16 @@ UiEdits draw_panel_choice(const UiState& ui) {
         ImGui::SetTooltip(
             "the mechanism (the paper's Fig. 4): the body's velocity turns with the vibration, the "
             "friction turns with it, and its mean against v_b is less than F_c");
+    // On the same row where it fits (the panel is narrow on a phone and in presentation mode).
+    const ImGuiStyle& st = ImGui::GetStyle();
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (right - ImGui::GetItemRectMax().x - st.ItemSpacing.x >=
+        ImGui::GetFrameHeight() + st.ItemInnerSpacing.x + ImGui::CalcTextSize("setup").x)
+        ImGui::SameLine();
+    ImGui::RadioButton("setup", &panel, 4);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the experiment the model stands for: a block pressed on a rough floor, pulled at "
+                          "v_b and shaken at the angle θ; the contact magnified");
     if (panel != before) e.panel = kLowerPanels[panel];
     if (ImGui::Button("Pin curve")) e.pin = true;
     if (ImGui::IsItemHovered())

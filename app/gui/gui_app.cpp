@@ -243,7 +243,9 @@ class GuiLoop {
         app_.advance(real_time_ ? std::min(0.1, std::chrono::duration<double>(now - last_).count())
                                 : 1.0 / 60);
         last_ = now;
-        if (scripted_ && o_.bench_frames == 0) app_.worker().wait_idle(); // reproducible pictures
+        // Reproducible pictures: both setups' curves are done before the frame is drawn (waiting for A's
+        // alone, compare mode's snapshot showed B's curve or not as the machine's load had it).
+        if (scripted_ && o_.bench_frames == 0) app_.worker().wait_idle(), app_.worker_b().wait_idle();
         times_.sim = Clock::now();
     }
 

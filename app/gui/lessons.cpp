@@ -96,7 +96,7 @@ class StepReader {
         if (const auto p = panel_from_name(panel))
             u.panel = *p;
         else
-            fail("panel \"" + panel + "\"; allowed: curves, map, loop, why");
+            fail("panel \"" + panel + "\"; allowed: " + panel_names());
         u.speed = number(*setup, "speed", kSpeedRange, 0.25);
         const std::string frame = setup->contains("frame") ? text(*setup, "frame") : "body";
         if (const auto f = parse_frame(frame))

@@ -1,5 +1,5 @@
-// The dashboard's lower-right panel (curves, map, loop, why): defined in core (fv/lower_panel.hpp), where the
-// share link's parser checks its names; the app's code names it fv::app::LowerPanel as before.
+// The dashboard's lower-right panel (curves, map, loop, why, setup): defined in core (fv/lower_panel.hpp),
+// where the share link's parser checks its names; the app's code names it fv::app::LowerPanel as before.
 #pragma once
 
 #include "fv/lower_panel.hpp"

@@ -7,6 +7,7 @@
 #include "fv/fit_figure.hpp"
 #include "fv/format.hpp"
 #include "fv/paper_scheme.hpp"
+#include "fv/setup_picture.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -728,6 +729,9 @@ PanelData lower_panel_live(LowerPanel which, const LiveSim& sim, const std::opti
         break;
     case LowerPanel::why:
         p = mechanism_panel_live(sim, mechanism, rewind);
+        break;
+    case LowerPanel::setup:
+        p = setup_panel(sim.params().theta);
         break;
     case LowerPanel::curves:
         return ratio_panel_live(curves, busy, overlay);

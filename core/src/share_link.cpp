@@ -224,7 +224,7 @@ ShareLink parse_share_link(std::string_view text, int lesson_steps) {
             if (const auto panel = panel_from_name(value))
                 link.panel = *panel;
             else
-                notice(link, vat, "panel = " + quoted_text(value) + "; allowed: curves, map, loop, why");
+                notice(link, vat, "panel = " + quoted_text(value) + "; allowed: " + panel_names());
         } else if (key == "pan") {
             once(!seen_view.insert(key).second);
             std::array<double, 2> pan{};

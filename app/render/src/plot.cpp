@@ -278,11 +278,13 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
                       top_axis_band(plot) + band;
     const float bottom =
         bounds.y1 - reserve_below -
-        std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4));
+        (plot.axes
+             ? std::round(kTickLength + 4 + fs * 1.2f + (plot.x_axis.title.empty() ? 6 : title_fs * 1.5f + 4))
+             : 6.0f);
     // Room for the last x tick label's overhang, or for the colour bar.
     const float right = bounds.x1 - (reserve > 0 ? reserve : std::round(fs * 1.5f)) -
                         (hm && hm->color_bar ? kColorBarSpace : 0.0f);
-    float left_margin = 50;
+    float left_margin = plot.axes ? 50.0f : 6.0f;
     // Two passes: the y tick labels' width sets the left margin, which changes the area and,
     // with equal aspect, the ranges and ticks.
     for (int pass = 0; pass < 2; ++pass) {
@@ -302,6 +304,10 @@ static Layout compute_layout(const Plot& plot, const std::vector<Series>& series
         // Decade labels are short: log axes can carry about twice as many.
         L.x_ticks = tf.log_x ? log_ticks(tf.x0, tf.x1, 2 * nx) : linear_ticks(tf.x0, tf.x1, nx);
         L.y_ticks = tf.log_y ? log_ticks(tf.y0, tf.y1, 2 * ny) : linear_ticks(tf.y0, tf.y1, ny);
+        if (!plot.axes) {
+            L.x_ticks.clear(), L.y_ticks.clear();
+            break;
+        }
         left_margin =
             std::round(kTickLength + 5 + max_label_width(canvas, L.y_ticks, fs) +
                        (plot.y_axis.title.empty() ? 8 : y_title_band(y_title(plot, canvas, bottom - top))));
@@ -902,7 +908,7 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
 
     canvas.fill_rect(A, colors::white);
     canvas.push_clip(A);
-    draw_grid(canvas, *this, fr.layout);
+    if (axes) draw_grid(canvas, *this, fr.layout);
     if (heatmap_) draw_heatmap(canvas, *heatmap_, tf);
     for (const auto& fn : underlays_) fn(canvas, tf);
     fr.data_start = canvas.mark();
@@ -915,9 +921,9 @@ PlotTransform Plot::draw_with_legend(Canvas& canvas, LegendPlace place, LegendPl
     canvas.add_region("data", A, fr.data_start);
     fr.data_end = canvas.mark();
 
-    draw_frame_and_ticks(canvas, fr.layout, font_size);
-    if (!x_axis.title.empty()) draw_x_title(canvas, *this, fr);
-    if (!y_axis.title.empty()) draw_y_title(canvas, *this, fr);
+    if (axes) draw_frame_and_ticks(canvas, fr.layout, font_size);
+    if (axes && !x_axis.title.empty()) draw_x_title(canvas, *this, fr);
+    if (axes && !y_axis.title.empty()) draw_y_title(canvas, *this, fr);
     if (!title.empty()) draw_panel_title(canvas, *this, fr);
     if (top_scale > 0) draw_top_axis(canvas, *this, tf, bounds_);
     if (heatmap_ && heatmap_->color_bar) draw_colorbar(canvas, A, *heatmap_, font_size, font_size + 1);

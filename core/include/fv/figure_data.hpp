@@ -104,6 +104,7 @@ struct PanelData {
     std::string title, x_title, y_title; // markup: r_{x} subscript, Greek as UTF-8
     std::string x_title_short; // drawn where x_title does not fit the panel's width (empty: x_title, smaller)
     bool equal_aspect = false;
+    bool axes = true;   // false: a drawing (the experiment's picture): no frame, ticks, grid or axis titles
     bool log_x = false; // a logarithmic x axis (x_min > 0)
     std::optional<double> x_min, x_max, y_min, y_max;
     std::vector<SeriesData> series;

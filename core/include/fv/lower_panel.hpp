@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace fv {
@@ -13,12 +14,13 @@ enum class LowerPanel {
     map,    // the (zeta, theta) map of r_x with the best angle
     loop,   // the asperity's hysteresis loop over the last period
     why,    // the mechanism (the paper's Fig. 4) live: velocity and friction on the body now
+    setup,  // the experiment the model stands for: a block pressed on a floor, pulled, shaken at theta
 };
 
 inline constexpr LowerPanel kLowerPanels[] = {LowerPanel::curves, LowerPanel::map, LowerPanel::loop,
-                                              LowerPanel::why};
+                                              LowerPanel::why, LowerPanel::setup};
 
-// "curves", "map", "loop", "why".
+// "curves", "map", "loop", "why", "setup".
 constexpr const char* panel_name(LowerPanel p) {
     switch (p) {
     case LowerPanel::curves:
@@ -29,8 +31,17 @@ constexpr const char* panel_name(LowerPanel p) {
         return "loop";
     case LowerPanel::why:
         return "why";
+    case LowerPanel::setup:
+        return "setup";
     }
     return "curves";
+}
+
+// "curves, map, loop, why, setup": what a message allows.
+inline std::string panel_names() {
+    std::string s;
+    for (LowerPanel p : kLowerPanels) s += (s.empty() ? "" : ", ") + std::string(panel_name(p));
+    return s;
 }
 
 // The panel of that name, if any.

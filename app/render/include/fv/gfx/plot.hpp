@@ -92,6 +92,8 @@ class Plot {
     double top_scale = 0;
     std::string top_title;
     bool equal_aspect = false; ///< One data unit spans the same pixels in x and y (linear axes).
+    /// false: a drawing, not a plot: no grid, frame, ticks or axis titles; the data area takes their room.
+    bool axes = true;
     LegendPosition legend = LegendPosition::Best;
     /// Where the legend's place inside the axes covers data and it cannot go right of them (a third of the
     /// plot's width at most): below the axes, under the x axis title, the plot shorter, instead of the place
