@@ -583,13 +583,17 @@ TEST_CASE("The why panel reads at every angle: no text on text, label on a shape
 
 TEST_CASE("The setup picture: the shake at theta from v_b, no axes, readable at every angle and size",
           "[layout][labels][live][setup]") {
-    // The lower panel "setup" (the experiment) at 1280x800 and 1920x1080, and enlarged as in presentation
-    // mode: no text on text, no label on a shape, no arrow on another; a drawing, so no tick labels; the
-    // shake in the view from above along (cos theta, sin theta), v_b along x.
+    // The lower panel "setup" (the experiment) at 1280x800 and 1920x1080, enlarged as in presentation mode,
+    // and on a phone (390 x 844, the panels stacked: 390 x 170): no text on text, no label on a shape, no
+    // arrow on another; a drawing, so no tick labels; the shake in the view from above along (cos theta,
+    // sin theta), v_b along x. Words that find no room (on the phone; the long ones with presentation's
+    // larger text) are left out; at text size 1 on the screens all are there.
     fv::app::RenderSession& s = session();
-    for (const Vec2 screen : {Vec2{1280, 800}, Vec2{1920, 1080}})
+    for (const Vec2 screen : {Vec2{1280, 800}, Vec2{1920, 1080}, Vec2{390, 844}})
         for (const float k : {1.0f, 1.5f})
             for (const double theta_deg : {0.0, 30.0, 90.0, 150.0, 180.0}) {
+                const bool phone = screen.x < 400;
+                if (phone && k > 1) continue;
                 const double theta = theta_deg * fv::kPi / 180;
                 const fv::PanelData setup = fv::setup_panel(theta);
                 CHECK_FALSE(setup.axes);
@@ -604,7 +608,9 @@ TEST_CASE("The setup picture: the shake at theta from v_b, no axes, readable at 
                 }
                 CHECK(shakes == 2);
                 const Rect lower =
-                    fv::app::layout_dashboard({346 * screen.x / 1280, 4, screen.x - 4, screen.y - 4}).ratio;
+                    phone ? Rect{0, 600, 390, 770}
+                          : fv::app::layout_dashboard({346 * screen.x / 1280, 4, screen.x - 4, screen.y - 4})
+                                .ratio;
                 fv::gfx::Canvas& canvas = s.canvas();
                 canvas.begin(screen, 1, fv::gfx::colors::white);
                 fv::app::paint_panel(canvas, fv::app::enlarged(setup, k), lower);
@@ -615,13 +621,22 @@ TEST_CASE("The setup picture: the shake at theta from v_b, no axes, readable at 
                 CHECK(label_on_shape(list, s.fonts()) == "");
                 CHECK(arrow_on_arrow(list) == "");
                 int words = 0;
+                std::string all = "|";
                 for (const auto& c : list.commands)
                     if (const auto* t = std::get_if<fv::gfx::dl::Text>(&c)) {
                         ++words;
+                        all += t->text + "|";
                         // No tick labels: no text is a number.
                         CHECK(t->text.find_first_not_of("0123456789.−-") != std::string::npos);
                     }
-                CHECK(words >= 10);
+                INFO("texts " << all);
+                CHECK(words >= (phone ? 6 : 12));
+                for (const char* must : {"v_{b}", "±x_{v}", "P", "T"})
+                    CHECK(all.find(std::string("|") + must + "|") != std::string::npos);
+                if (!phone)
+                    for (const char* word : {"seen from above", "|floor|", "|block|"})
+                        CHECK(all.find(word) != std::string::npos);
+                if (!phone && k == 1) CHECK(all.find("magnified") != std::string::npos);
                 // The data area takes the room the axes would have (a few units from the panel's sides).
                 for (const fv::gfx::Region& r : list.regions)
                     if (r.role == "data") CHECK(r.rect.x0 - lower.x0 < 10);

@@ -101,10 +101,11 @@ class LabelPlacer {
     // `own`: the shape the label names (its marker, arrow or segment), which it may touch. `leader_to`: the
     // point it names; where every candidate lies on a solid shape (text, marker, arrow), the label goes to
     // the nearest free place in the data area instead, with a thin leader line to that point (matplotlib's
-    // annotate).
+    // annotate). `optional`: a label that is left out where every candidate lies on text, a marker or an
+    // arrow, or crosses two lines or more.
     void place(const std::string& text, const std::vector<LabelCandidate>& candidates,
                const std::function<bool(const gfx::dl::Command&)>& own,
-               std::optional<gfx::Vec2> leader_to = std::nullopt) {
+               std::optional<gfx::Vec2> leader_to = std::nullopt, bool optional = false) {
         if (text.empty() || candidates.empty()) return;
         refresh_boxes();
         double best_score = 1e300;
@@ -116,6 +117,7 @@ class LabelPlacer {
             if (score < best_score) best_score = score, best = t;
             if (score == 0) break;
         }
+        if (optional && best_score >= 2) return;
         if (best_score >= 100 && leader_to) {
             const gfx::Rect& A = tf_.area;
             gfx::TextStyle st = candidates.front().style;
@@ -455,7 +457,7 @@ void place_point_labels(LabelPlacer& placer, const gfx::PlotTransform& tf, const
                 const auto* m = std::get_if<gfx::dl::Marker>(&cmd);
                 return m && same(m->center, at);
             },
-            at);
+            at, p.optional);
     }
 }
 

@@ -24,11 +24,13 @@ SeriesData box(double x0, double y0, double x1, double y1, Ink ink, float width,
     return outline({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, ink, width, dash);
 }
 
-// A word or two at a place (no mark): the label is placed beside it, clear of the lines.
+// A word or two at a place (no mark): the label is placed beside it, clear of the lines, or left out where
+// it finds no room (a phone's small panel keeps the arrows' labels).
 PointData words(Vec2 at, std::string text, int dx = 0, int dy = 0) {
     PointData p;
     p.at = at, p.mark = Mark::none, p.label = std::move(text), p.ink = Ink::black;
     p.label_dx = dx, p.label_dy = dy;
+    p.optional = true;
     return p;
 }
 

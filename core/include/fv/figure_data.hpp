@@ -52,6 +52,9 @@ struct PointData {
     float size = 9;
     int label_dx = 0, label_dy = 0; // on this side (+1 right / below on screen, -1 left / above; 0: away from
                                     // the middle of all marked points)
+    // The label is left out where every place for it lies on text, a marker or an arrow, or crosses two
+    // lines (a small panel: the setup picture's words on a phone).
+    bool optional = false;
 };
 
 struct ArrowData {
