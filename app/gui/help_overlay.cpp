@@ -40,6 +40,8 @@ constexpr Entry kPlots[] = {
      "positive F_x resists v_b"},
     {Ink::slip, "shading", "times the tip slips"},
     {Ink::slip, "loop", "the hysteresis loop: green where the tip sticks or creeps, purple where it slips"},
+    {Ink::black, "setup",
+     "the experiment: a block pressed on a rough floor, pulled at v_b, shaken ±x_v at θ"},
     {Ink::black, "period mean F_x",
      "F_x averaged over the period before each instant (Eq. 30): it settles on "
      "r_x once the start-up transient is over"},
