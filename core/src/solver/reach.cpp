@@ -661,6 +661,12 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             if (k == 1 && candidate && (xs[n] - xs[n - 1]).dot(candidate->last_l0 - xs[n]) > 0) {
                 // Heading for the state found before: the evidence again from here, without a new search.
                 if (take_period1(*candidate, xs[n], true)) return out;
+            } else if (k == 1 && have_unstable && d > kNearRepeat) {
+                // Beside an unstable period-1 state, Newton's method from a motion whose sections are still
+                // far from repeating lands where the first search went and retraces it (traced at zeta
+                // 0.146142, theta 136 deg, rdisp 15.13, i 10: every search from the motion reached the same
+                // point of the circle and gave up after 14 periods). Tried once the motion repeats more
+                // closely, where it may be heading for another, stable period-1 state.
             } else if (k == 1) {
                 const int budget = std::max(s.max_search_periods - search_periods, 100);
                 const Search sr = search(xs[n], budget);

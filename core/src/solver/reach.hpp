@@ -61,6 +61,10 @@ inline constexpr int kWindowBatches = 20;
 // A motion whose sections still range over more than this many tolerances within the window's last batch
 // (and over at least half as far as in its first) keeps moving: not a slow transient (reach.cpp).
 inline constexpr double kMovingSections = 100;
+// Beside an unstable period-1 state, the motion's sections within this of repeating before Newton's method
+// for period 1 is tried from them (reach.cpp: further off it retraces the search that found the unstable
+// state).
+inline constexpr double kNearRepeat = 1e-3;
 // Slow creeps skipped per start (each followed again from where its skip ends).
 inline constexpr int kMaxCreepSkips = 2;
 // A skip is tried after this many creep periods in a row, and taken when it projects at least kMinCreepSkip.
