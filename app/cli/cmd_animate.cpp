@@ -14,19 +14,10 @@
 
 #include <cstdio>
 #include <memory>
-#include <string>
 #include <unistd.h>
-#include <vector>
 
 namespace fv::cli {
 namespace {
-
-// The lower panels' names (fv/lower_panel.hpp), for --panel's check.
-std::vector<std::string> panel_name_list() {
-    std::vector<std::string> v;
-    for (LowerPanel p : kLowerPanels) v.push_back(panel_name(p));
-    return v;
-}
 
 // "animate  [##########..........]  60/120 frames" on one terminal line, redrawn in place.
 void draw_progress(int done, int total) {

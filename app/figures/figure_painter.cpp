@@ -178,11 +178,12 @@ class LabelPlacer {
     std::vector<std::pair<gfx::Vec2, gfx::Vec2>> leaders_;
     std::vector<gfx::Rect> boxes_; ///< command_bounds of each data command, for a quick test in cost()
 
-    // The data commands' boxes as the display list stands now (it grows between labels).
+    // The data commands' boxes as the display list stands now: those drawn since the last label added (the
+    // list only grows while the labels are placed, in one overlay's call; all again should it have shrunk).
     void refresh_boxes() {
         const auto& cmds = canvas_.display_list().commands;
-        boxes_.clear();
-        for (std::size_t k = tf_.first_data_command; k < cmds.size(); ++k)
+        if (cmds.size() < tf_.first_data_command + boxes_.size()) boxes_.clear();
+        for (std::size_t k = tf_.first_data_command + boxes_.size(); k < cmds.size(); ++k)
             boxes_.push_back(gfx::command_bounds(cmds[k], canvas_.fonts()));
     }
 

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <utility>
 #include <vector>
@@ -251,18 +252,23 @@ UiEdits draw_parameter_controls(const UiState& ui, const LiveSim& sim,
     return e;
 }
 
+// The next item, `width` wide, beside the last one where it fits within the panel's width, else on a new
+// line.
+void same_line_if_fits(float width) {
+    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+    if (ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width <= right) ImGui::SameLine();
+}
+
 // A row of buttons that wraps to the panel's width (large type in presentation mode, narrow windows):
 // each button beside the one before while it fits, else on a new line. Returns the label clicked, or null.
 // Labels and tips point into the lessons and the registry, which outlive the frame.
 using LabelAndTip = std::pair<const std::string*, const std::string*>;
 const std::string* button_row(const std::vector<LabelAndTip>& labels_and_tips) {
     const std::string* clicked = nullptr;
-    const ImGuiStyle& style = ImGui::GetStyle();
-    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
     for (std::size_t k = 0; k < labels_and_tips.size(); ++k) {
         const auto [label, tip] = labels_and_tips[k];
-        const float w = ImGui::CalcTextSize(label->c_str()).x + 2 * style.FramePadding.x;
-        if (k > 0 && ImGui::GetItemRectMax().x + style.ItemSpacing.x + w <= right) ImGui::SameLine();
+        if (k > 0)
+            same_line_if_fits(ImGui::CalcTextSize(label->c_str()).x + 2 * ImGui::GetStyle().FramePadding.x);
         if (ImGui::Button(label->c_str())) clicked = label;
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip->c_str());
     }
@@ -425,38 +431,30 @@ void draw_readouts(const UiState& ui, const LiveSim& sim, const std::optional<Ra
 UiEdits draw_panel_choice(const UiState& ui) {
     UiEdits e;
     ImGui::Separator();
-    int panel = static_cast<int>(ui.session.panel); // the radio buttons in LowerPanel's order
+    // The radio buttons in LowerPanel's order, each beside the one before while it fits (the panel is narrow
+    // on a phone and in presentation mode).
+    static constexpr std::pair<const char*, const char*> kRadios[] = {
+        {"r_x(ζ)", "r_x over the velocity ratio for this θ, r_disp, i, and the rigid model"},
+        {"map", "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)"},
+        {"loop", "the asperity's force along the vibration against the vibration displacement over the last "
+                 "period: its area is the energy the vibration loses to friction"},
+        {"why",
+         "the mechanism (the paper's Fig. 4): the body's velocity turns with the vibration, the friction "
+         "turns with it, and its mean against v_b is less than F_c"},
+        {"setup", "the experiment the model stands for: a block pressed on a rough floor, pulled at v_b and "
+                  "shaken at the angle θ; the contact magnified"},
+    };
+    static_assert(std::size(kRadios) == std::size(kLowerPanels));
+    int panel = static_cast<int>(ui.session.panel);
     const int before = panel;
-    ImGui::RadioButton("r_x(ζ)", &panel, 0);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("r_x over the velocity ratio for this θ, r_disp, i, and the rigid model");
-    ImGui::SameLine();
-    ImGui::RadioButton("map", &panel, 1);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "r_x over velocity ratio and angle for this r_disp and i, with the best angle θ*(ζ)");
-    ImGui::SameLine();
-    ImGui::RadioButton("loop", &panel, 2);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "the asperity's force along the vibration against the vibration displacement over the "
-            "last period: its area is the energy the vibration loses to friction");
-    ImGui::SameLine();
-    ImGui::RadioButton("why", &panel, 3);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip(
-            "the mechanism (the paper's Fig. 4): the body's velocity turns with the vibration, the "
-            "friction turns with it, and its mean against v_b is less than F_c");
-    // On the same row where it fits (the panel is narrow on a phone and in presentation mode).
-    const ImGuiStyle& st = ImGui::GetStyle();
-    const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
-    if (right - ImGui::GetItemRectMax().x - st.ItemSpacing.x >=
-        ImGui::GetFrameHeight() + st.ItemInnerSpacing.x + ImGui::CalcTextSize("setup").x)
-        ImGui::SameLine();
-    ImGui::RadioButton("setup", &panel, 4);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("the experiment the model stands for: a block pressed on a rough floor, pulled at "
-                          "v_b and shaken at the angle θ; the contact magnified");
+    for (int k = 0; k < static_cast<int>(std::size(kRadios)); ++k) {
+        const auto [label, tip] = kRadios[k];
+        if (k > 0)
+            same_line_if_fits(ImGui::GetFrameHeight() + ImGui::GetStyle().ItemInnerSpacing.x +
+                              ImGui::CalcTextSize(label).x);
+        ImGui::RadioButton(label, &panel, k);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+    }
     if (panel != before) e.panel = kLowerPanels[panel];
     if (ImGui::Button("Pin curve")) e.pin = true;
     if (ImGui::IsItemHovered())

@@ -531,9 +531,7 @@ Session parse_session(const std::string& text, const std::string& file) {
     }
     r.get(j, "", "speed", s.speed, kSpeedRange);
     r.get(j, "", "playing", s.playing, nullptr);
-    std::vector<std::string> panels;
-    for (LowerPanel p : kLowerPanels) panels.push_back(panel_name(p));
-    r.get(j, "", "panel", panel, one_of("panel", panels));
+    r.get(j, "", "panel", panel, one_of("panel", panel_name_list()));
     s.panel = *panel_from_name(panel);
     // The lesson step on screen (0: none), a whole number up to the app's steps.
     if (j.contains("lesson")) {

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <type_traits>
-#include <vector>
 
 namespace fv::gfx {
 
@@ -60,18 +60,22 @@ bool ring_meets(Vec2 c, float radius, float half_width, const Rect& r) {
 
 constexpr Rect kNoBox{1, 1, 0, 0}; // empty: overlaps nothing
 
-// The box around the finite points, grown by d; non-finite points are skipped, as segment_meets skips
-// their segments.
-Rect points_box(const std::vector<Vec2>& ps, float d) {
+// The box around the finite points [first, last), grown by d; non-finite points are skipped, as segment_meets
+// skips their segments.
+Rect points_box(const Vec2* first, const Vec2* last, float d) {
     Rect r = kNoBox;
     bool any = false;
-    for (const Vec2& p : ps) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-        r = any ? Rect{std::min(r.x0, p.x), std::min(r.y0, p.y), std::max(r.x1, p.x), std::max(r.y1, p.y)}
-                : Rect{p.x, p.y, p.x, p.y};
+    for (const Vec2* p = first; p != last; ++p) {
+        if (!std::isfinite(p->x) || !std::isfinite(p->y)) continue;
+        r = any ? Rect{std::min(r.x0, p->x), std::min(r.y0, p->y), std::max(r.x1, p->x), std::max(r.y1, p->y)}
+                : Rect{p->x, p->y, p->x, p->y};
         any = true;
     }
     return any ? grow(r, d) : kNoBox;
+}
+// A shape's few points without a vector (the label placer asks for every command's box each frame).
+Rect points_box(std::initializer_list<Vec2> ps, float d) {
+    return points_box(ps.begin(), ps.end(), d);
 }
 
 } // namespace
@@ -122,7 +126,7 @@ Rect command_bounds(const dl::Command& cmd, const FontSet& fonts) {
         [&](const auto& c) -> Rect {
             using T = std::decay_t<decltype(c)>;
             if constexpr (std::is_same_v<T, dl::Polyline>) {
-                return points_box(c.points, 0.5f * c.stroke.width);
+                return points_box(c.points.data(), c.points.data() + c.points.size(), 0.5f * c.stroke.width);
             } else if constexpr (std::is_same_v<T, dl::Marker>) {
                 return points_box({c.center}, 0.5f * c.style.size + c.style.edge_width);
             } else if constexpr (std::is_same_v<T, dl::Circle>) {

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace fv {
 
@@ -37,10 +38,17 @@ constexpr const char* panel_name(LowerPanel p) {
     return "curves";
 }
 
+// Every panel's name, in kLowerPanels' order (a command-line or session check's allowed values).
+inline std::vector<std::string> panel_name_list() {
+    std::vector<std::string> v;
+    for (LowerPanel p : kLowerPanels) v.push_back(panel_name(p));
+    return v;
+}
+
 // "curves, map, loop, why, setup": what a message allows.
 inline std::string panel_names() {
     std::string s;
-    for (LowerPanel p : kLowerPanels) s += (s.empty() ? "" : ", ") + std::string(panel_name(p));
+    for (const std::string& name : panel_name_list()) s += (s.empty() ? "" : ", ") + name;
     return s;
 }
 
