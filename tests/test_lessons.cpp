@@ -296,6 +296,8 @@ TEST_CASE("lessons: a step's bad example data are refused with the step and the 
                       Catch::StartsWith("lessons: step 1 (a): data: x:2:1: no data rows"));
     CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "lines": []}})")),
                       Catch::StartsWith("lessons: step 1 (a): data: x:"));
+    CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "lines": ["vb,r_x", "0.1,0.3"]}})")),
+                      Catch::Contains("column 'vb' (m/s) needs the vibration amplitude"));
     CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"("x.csv"})")),
                       Catch::StartsWith("lessons: step 1 (a): \"data\" is not an object"));
     CHECK_THROWS_WITH(parse_lessons(step_json(setup + R"({"name": "x", "rows": []}})")),

@@ -109,7 +109,8 @@ class StepReader {
     }
 
     // "data": {"name": "...", "lines": ["zeta,r_x", "0.1,0.3", ...]}: a measurements file's lines (the
-    // format of measurements.hpp, zeta columns only: a vb column would need the app's A and f).
+    // format of measurements.hpp, zeta columns only: read without A and f, a vb column is the reader's
+    // error).
     MeasurementSet read_data(const json& d) const {
         const char* allowed = "{\"name\": \"...\", \"lines\": [\"zeta,r_x\", ...]} (a measurements file)";
         if (!d.is_object()) fail(std::string("\"data\" is not an object; allowed: ") + allowed);
@@ -124,9 +125,7 @@ class StepReader {
             csv += line.get<std::string>() + "\n";
         }
         try {
-            MeasurementSet m = parse_measurements(csv, name);
-            if (m.from_vb) fail("data: a vb column; allowed: zeta (the step cannot know A and f)");
-            return m;
+            return parse_measurements(csv, name);
         } catch (const DataError& e) {
             fail(std::string("data: ") + e.what());
         }
