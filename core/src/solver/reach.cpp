@@ -503,6 +503,8 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
 
     // The last stable state found that the motion was not (yet) shown to reach.
     std::optional<Search> candidate;
+    // Stable states the evidence from the start itself did not show reached.
+    std::vector<Vec2> failed_from_start;
     // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
     // motion) reaches it, its verification. True when it is the state reached. `retry`: the candidate again,
     // from a later point of the motion (verified and listed the first time).
@@ -513,7 +515,15 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
         }
         // The state the caller found and tested from the start already (the same fixed point, to well within
         // the searches' convergence): only remembered, to try the evidence again from further on.
-        if (rejected && from == start && (sr.last_l0 - rejected->l0).norm() <= std::max(1e3 * s.aim, 1e-9)) {
+        const double same_state = std::max(1e3 * s.aim, 1e-9);
+        if (rejected && from == start && (sr.last_l0 - rejected->l0).norm() <= same_state) {
+            candidate = sr;
+            return false;
+        }
+        // A state this call found before and did not show the start reaches, found again by another search
+        // (every search from the starts may end in it: ζ = 0.2253, θ = 85.2°, r_disp = 4.13, i = 6.3 from
+        // sliding tried the same evidence three times): the test would repeat itself.
+        if (from == start && near_any(failed_from_start, sr.last_l0, same_state)) {
             candidate = sr;
             return false;
         }
@@ -542,6 +552,7 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
                      reached ? "reached" : "not shown", out.periods);
 #endif
         if (retry && !reached) return false; // verified and listed the first time
+        if (!reached && from == start) failed_from_start.push_back(sr.last_l0);
         const Verified v = verify_fixed_point(p, m, sr, s.rq, s.aim, s.tol, s.record && reached,
                                               s.record_samples, s.max_search_periods);
         out.periods += v.periods;
