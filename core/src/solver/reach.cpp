@@ -104,17 +104,40 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
     // rdisp 0.01, i = 0.5 it was 6e-6 |w||d|: both failed every point of the motion from rest, which was then
     // followed for hundreds to 1900 periods.
     const bool across = std::abs(wd) <= 1e-3 * w.norm() * d.norm();
+    // Only the push's sign is asked for, so a sample is first integrated at kLoose times the tolerances, and
+    // that answer is kept where both pushes clear the loose period's error by kMargin (bounded by its steps
+    // times their local tolerance, in force units: l = r L). Where the map is nearly the identity (tiny
+    // r_disp) the pushes are large in the integrated units and every sample clears it, at a third of the
+    // steps; where one does not, it and the rest are integrated at the tolerances themselves.
+    constexpr double kLoose = 100, kMargin = 100;
+    PeriodRequest loose = rq;
+    loose.atol *= kLoose;
+    loose.atol_force *= kLoose;
+    bool try_loose = k == 1;
     auto towards = [&](const Vec2& z) {
-        Vec2 z1 = z;
-        PeriodResult pr;
-        const bool ok = k == 1 ? advance(s, z1, rq, &pr) : advance_k(s, z1, k, rq);
-        periods += k;
-        if (ok && circle_state && k == 1 && creep_period(*s.m, z, pr)) return true;
+        for (;;) {
+            const bool is_loose = try_loose;
+            Vec2 z1 = z;
+            PeriodResult pr;
+            const bool ok = k == 1 ? advance(s, z1, is_loose ? loose : rq, &pr) : advance_k(s, z1, k, rq);
+            periods += k;
+            const Vec2 push = z1 - z;
+            if (is_loose) {
+                const double err = kMargin * s.m->r * loose.atol * static_cast<double>(pr.steps + 1);
+                const bool clear = ok && (across || std::abs(w.dot(push)) > err * w.norm()) &&
+                                   std::abs(d.dot(push)) > err * d.norm() + floor * (1 + z.norm()) * d.norm();
+                if (!clear) {
+                    try_loose = false;
+                    continue;
+                }
+            }
+            if (ok && circle_state && k == 1 && creep_period(*s.m, z, pr)) return true;
 #ifdef FV_SOLVER_TRACE
-        std::fprintf(stderr, "push at (%.6g,%.6g): along w %.3g (wd %.3g), along d %.3g\n", z.x(), z.y(),
-                     w.dot(z1 - z), wd, d.dot(z1 - z));
+            std::fprintf(stderr, "push at (%.6g,%.6g)%s: along w %.3g (wd %.3g), along d %.3g\n", z.x(),
+                         z.y(), is_loose ? " loose" : "", w.dot(push), wd, d.dot(push));
 #endif
-        return ok && (across || wd * w.dot(z1 - z) > 0) && d.dot(z1 - z) > floor * (1 + z.norm()) * d.norm();
+            return ok && (across || wd * w.dot(push) > 0) && d.dot(push) > floor * (1 + z.norm()) * d.norm();
+        }
     };
     // x and the sample next to it first, then from y outwards: where the test fails it mostly fails next to
     // x (another state close to the start: zeta 0.001, theta 90 deg, rdisp 1e-3, i 5 from rest, the circle's
