@@ -122,10 +122,11 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
             const bool ok = k == 1 ? advance(s, z1, is_loose ? loose : rq, &pr) : advance_k(s, z1, k, rq);
             periods += k;
             const Vec2 push = z1 - z;
+            const double d_floor = floor * (1 + z.norm()) * d.norm(); // the push along d must exceed it
             if (is_loose) {
                 const double err = kMargin * s.m->r * loose.atol * static_cast<double>(pr.steps + 1);
                 const bool clear = ok && (across || std::abs(w.dot(push)) > err * w.norm()) &&
-                                   std::abs(d.dot(push)) > err * d.norm() + floor * (1 + z.norm()) * d.norm();
+                                   std::abs(d.dot(push)) > err * d.norm() + d_floor;
                 if (!clear) {
                     try_loose = false;
                     continue;
@@ -136,7 +137,7 @@ bool pushes_towards(const ReachSetup& s, const Vec2& x, const Vec2& y, int k, co
             std::fprintf(stderr, "push at (%.6g,%.6g)%s: along w %.3g (wd %.3g), along d %.3g\n", z.x(),
                          z.y(), is_loose ? " loose" : "", w.dot(push), wd, d.dot(push));
 #endif
-            return ok && (across || wd * w.dot(push) > 0) && d.dot(push) > floor * (1 + z.norm()) * d.norm();
+            return ok && (across || wd * w.dot(push) > 0) && d.dot(push) > d_floor;
         }
     };
     // x and the sample next to it first, then from y outwards: where the test fails it mostly fails next to
@@ -514,7 +515,6 @@ void period1_multipliers(const ReachSetup& s, const PeriodResult& pr, Vec2 l0, c
 Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guesses, const Prior& prior) {
     const Params& p = *s.p;
     const LagModel& m = *s.m;
-    const Orbit* rejected = prior.rejected;
     Reach out;
     Orbit& st = out.state;
     int search_periods = 0;
@@ -526,8 +526,13 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
 
     // The last stable state found that the motion was not (yet) shown to reach.
     std::optional<Search> candidate;
-    // Stable states, verified, that the evidence from the start itself did not show reached.
+    // Stable states that the evidence from the start itself did not show reached: the one the caller found
+    // and tested from the start already, and those this call verified. Found again by another search (every
+    // search from the starts may end in one: zeta 0.2253, theta 85.2 deg, rdisp 4.13, i 6.3 from sliding
+    // tried the same evidence three times), such a state is only remembered, to try the evidence again from
+    // further on: the test from the start would repeat itself.
     std::vector<Vec2> failed_from_start;
+    if (prior.rejected) failed_from_start.push_back(prior.rejected->l0);
     // A converged period-1 search: its multipliers, the evidence that `from` (a point of the start's
     // motion) reaches it, its verification. True when it is the state reached. `retry`: the candidate again,
     // from a later point of the motion (verified and listed the first time).
@@ -536,16 +541,8 @@ Reach reach_from(const ReachSetup& s, Vec2 start, const std::vector<Vec2>& guess
             if (!closest.have_last || (sr.have_last && sr.dist < closest.dist)) closest = sr;
             return false;
         }
-        // The state the caller found and tested from the start already (the same fixed point, to well within
-        // the searches' convergence): only remembered, to try the evidence again from further on.
+        // The same fixed point, to well within the searches' convergence.
         const double same_state = std::max(1e3 * s.aim, 1e-9);
-        if (rejected && from == start && (sr.last_l0 - rejected->l0).norm() <= same_state) {
-            candidate = sr;
-            return false;
-        }
-        // A state this call verified before and did not show the start reaches, found again by another
-        // search (every search from the starts may end in it: zeta 0.2253, theta 85.2 deg, rdisp 4.13, i 6.3
-        // from sliding tried the same evidence three times): the test would repeat itself.
         if (from == start && near_any(failed_from_start, sr.last_l0, same_state)) {
             candidate = sr;
             return false;
